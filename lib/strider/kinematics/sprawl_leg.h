@@ -3,15 +3,25 @@
 //! Frame: DH frame 0 of seed 000, origin on the hip yaw axis, z up. Joint t1
 //! yaws the leg about z (eq 7), joint t2 pitches the shank (eq 8); the thigh
 //! a1 stays horizontal. t1 = t2 = 0 puts the foot at (a1 + a2, 0, 0).
-//! The foot can only reach the torus (rho - a1)^2 + z^2 = a2^2 (rho = sqrt(x^2
-//! + y^2)): eqs 7-8 give the angles of the nearest point of that surface, so
-//! any target off the surface is clamped onto it.
+//! The foot can only reach the torus swept by the knee circle of radius a1
+//! and the shank a2. Eqs 7-8 face the target (t1 = atan2(y, x)) and give the
+//! nearest point of the near half, |sqrt((rho - a1)^2 + z^2) - a2| away (rho =
+//! sqrt(x^2 + y^2)); a target inside that circle can be nearer the far half
+//! (t1 + pi, knee folded back past the yaw axis: a2 > a1 reaches under the
+//! hip), so both are tried and the nearer wins. Any target off the surface is
+//! clamped onto it. On the yaw axis (rho = 0) t1 is free and set to 0; on the
+//! knee circle (rho = a1, z = 0) the shank direction is undefined and the
+//! target is unreachable.
+//!
+//! Lengths come from leg_ik::hypot (overflow-free in Fixed), so the plain
+//! aggregate {a1_mm, a2_mm, limits} needs no cached constants.
 #ifndef STRIDER_KINEMATICS_SPRAWL_LEG_H
 #define STRIDER_KINEMATICS_SPRAWL_LEG_H
 
 #include "../math/vec3.h"
 #include "ik_status.h"
 #include "joints.h"
+#include "leg_ik_common.h"
 
 namespace strider {
 
@@ -24,6 +34,11 @@ struct SprawlLeg {
   S a2_mm;  //!< leg (shank), knee axis to foot [mm]
   JointLimits<S, kDof> limits;
 
+  //! Same as the aggregate {a1, a2, limits}; for symmetry with the other legs.
+  static constexpr SprawlLeg make(S a1, S a2, const JointLimits<S, kDof>& limits) {
+    return SprawlLeg{a1, a2, limits};
+  }
+
   //! Seed 000 eqs 4-6.
   Vec3<S> fk(const Joints& q) const {
     const S reach = a1_mm + a2_mm * cos(q[1]);
@@ -34,21 +49,38 @@ struct SprawlLeg {
   //! reached unless the status is kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
-    const S rho = sqrt(target.x * target.x + target.y * target.y);
-    const S dr = rho - a1_mm;
-    // On the knee circle the shank direction is undefined.
-    if (abs(dr) + abs(target.z) <= ScalarTraits<S>::ik_tolerance_mm()) return IkStatus::kUnreachable;
+    const S bound_xy = a1_mm + a2_mm + opt.max_clamp_mm;
+    if (!leg_ik::within(target.x, bound_xy) || !leg_ik::within(target.y, bound_xy) ||
+        !leg_ik::within(target.z, a2_mm + opt.max_clamp_mm))
+      return IkStatus::kUnreachable;  // farther than max_clamp from the torus
     Joints sol;
-    // On the yaw axis any t1 is a nearest point; keep the leg straight out.
-    sol[0] = rho > S(0) ? atan2(target.y, target.x) : S(0);  // eq 7
-    sol[1] = atan2(target.z, dr);                              // eq 8
-    IkStatus status = IkStatus::kOk;
-    const S miss = abs(sqrt(dr * dr + target.z * target.z) - a2_mm);
-    if (miss > opt.max_clamp_mm) return IkStatus::kUnreachable;
-    if (miss > opt.tolerance_mm) status = IkStatus::kClamped;
-    if (limits.clamp_into(sol)) status = worst(status, IkStatus::kJointLimit);
+    S rho = S(0);
+    if (target.x == S(0) && target.y == S(0)) {
+      sol[0] = leg_ik::free_angle(limits, 0, S(0));  // on the yaw axis
+    } else {
+      sol[0] = atan2(target.y, target.x);  // eq 7
+      rho = leg_ik::hypot(target.x, target.y);
+    }
+    S dr = rho - a1_mm;
+    if (dr == S(0) && target.z == S(0)) return IkStatus::kUnreachable;  // on the knee circle
+    const S knee_dist = leg_ik::hypot(dr, target.z);
+    S miss = abs(knee_dist - a2_mm);
+    if (knee_dist < a2_mm && rho > S(0)) {
+      const S dr_far = -rho - a1_mm;  // facing away: the target is behind the yaw axis
+      const S miss_far = abs(leg_ik::hypot(dr_far, target.z) - a2_mm);
+      if (miss_far < miss) {
+        dr = dr_far;
+        miss = miss_far;
+        sol[0] = wrap_pi(sol[0] + pi<S>());
+      }
+    }
+    sol[1] = atan2(target.z, dr);  // eq 8
+    IkStatus status = leg_ik::miss_status(miss, opt);
+    if (status == IkStatus::kUnreachable) return status;
+    Vec3<S> at = fk(sol);
+    status = leg_ik::apply_limits(*this, target, sol, at, status, opt);
     q = sol;
-    reached = fk(sol);
+    reached = at;
     return status;
   }
 };

@@ -1,20 +1,23 @@
-//! Elementary functions for Fixed (interim: through float; replaced by table
-//! and integer versions).
+//! Elementary functions for Fixed (Q16.16), named like <cmath> so that
+//! scalar-generic code calls abs / sqrt / hypot / sin / cos / atan2 / asin /
+//! acos unqualified for float and Fixed alike.
+//!
+//! Integer-only with flash lookup tables: no float, no 64-bit type, no 32-bit
+//! division, bounded time, bit-identical on the host and the AVR. All are
+//! total (sqrt of a negative = 0, atan2(0, 0) = 0, asin/acos clamp to
+//! [-1, 1]). Methods, sources and measured error bounds: docs/fixed-point.md.
 #ifndef STRIDER_MATH_FIXED_MATH_H
 #define STRIDER_MATH_FIXED_MATH_H
 
 #include "fixed.h"
-#include "float_math.h"
+#include "fixed_atan.h"
+#include "fixed_sqrt.h"
+#include "fixed_trig.h"
 
 namespace strider {
 
+//! |v|, saturating: abs(min()) = max().
 inline Fixed abs(Fixed v) { return v < Fixed() ? -v : v; }
-inline Fixed sqrt(Fixed v) { return Fixed(sqrt(v.to_float())); }
-inline Fixed sin(Fixed a) { return Fixed(sin(a.to_float())); }
-inline Fixed cos(Fixed a) { return Fixed(cos(a.to_float())); }
-inline Fixed atan2(Fixed y, Fixed x) { return Fixed(atan2(y.to_float(), x.to_float())); }
-inline Fixed asin(Fixed v) { return Fixed(asin(v.to_float())); }
-inline Fixed acos(Fixed v) { return Fixed(acos(v.to_float())); }
 
 }  // namespace strider
 

@@ -1,0 +1,101 @@
+//! The named gaits (ARCHITECTURE.md "Gaits"): quadrupeds walk, trot, pace,
+//! crawl; hexapods tripod, ripple, wave; and which gaits a model supports.
+//!
+//! Quadruped legs: 0 front left (LF), 1 rear left (LH), 2 rear right (RH),
+//! 3 front right (RF). Hexapod legs: 0 front left, 1 middle left, 2 rear
+//! left, 3 rear right, 4 middle right, 5 front right.
+#ifndef STRIDER_GAIT_GAIT_LIBRARY_H
+#define STRIDER_GAIT_GAIT_LIBRARY_H
+
+#include <string.h>
+
+#include "gait_table.h"
+
+namespace strider {
+
+//! 4-beat walk, seed 003 section 5 (fig. 7b): "right hind leg, left front
+//! leg, right front leg, and left hind leg", one leg at a time. Duty 0.85:
+//! each swing takes 0.15 of the cycle and four-foot windows of 0.10 between
+//! swings give the body time to carry its CoM into the next support
+//! triangle (seed 003 section 3; duty >= 0.75 is the least for one leg at a
+//! time, McGhee and Frank's creeping gait).
+constexpr GaitTable kGaitWalk = {"walk", 4, 0.85f, {0.25f, 0.75f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
+
+//! Trot, seed 003 section 4 C: diagonal pairs (LF + RH, LH + RF) alternate.
+constexpr GaitTable kGaitTrot = {"trot", 4, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, false, false};
+
+//! Pace, seed 003 section 4 B: lateral pairs (LF + LH, RH + RF) alternate.
+constexpr GaitTable kGaitPace = {"pace", 4, 0.5f, {0.0f, 0.0f, 0.5f, 0.5f, 0.0f, 0.0f}, false, false};
+
+//! Seed 000 section 3.3's six-step crawl (A stand, B lift one diagonal
+//! pair, C move the body on the other pair, D swap the pairs, E move the
+//! body, F all down). The seed's "lift leg 1 and 3" is the pair LF + RH
+//! (its limbs 1-4 are legs 0-3), which lifts first; the other pair follows
+//! half a cycle later. Duty 2/3: each pair is in the air for a third of the
+//! cycle (B + C, then E and the lift half of D), and the two four-foot
+//! windows of 1/6 (A + F, and the touch-down half of D) let the body move
+//! its CoM from one support diagonal to the other. With two point feet the
+//! support "polygon" is a line: the wide feet (foot_radius_mm in
+//! gait_params.h) make it a strip the CoM can stay in.
+constexpr GaitTable kGaitCrawl = {"crawl", 4, 2.0f / 3.0f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
+
+//! Tripod: alternating tripods {front left, rear left, middle right} and
+//! {middle left, rear right, front right}.
+constexpr GaitTable kGaitTripod = {"tripod", 6, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.5f}, false, false};
+
+//! Ripple: a back-to-front wave on each side, the sides half a cycle
+//! apart; two legs in the air at a time, each for a third of the cycle.
+constexpr GaitTable kGaitRipple = {
+    "ripple", 6, 2.0f / 3.0f, {2.0f / 3.0f, 1.0f / 3.0f, 0.0f, 0.5f, 5.0f / 6.0f, 1.0f / 6.0f}, false, false};
+
+//! Wave: one leg at a time, rear to front on the left, then rear to front
+//! on the right; five feet always down.
+constexpr GaitTable kGaitWave = {
+    "wave", 6, 5.0f / 6.0f, {2.0f / 6.0f, 1.0f / 6.0f, 0.0f, 3.0f / 6.0f, 4.0f / 6.0f, 5.0f / 6.0f}, false, false};
+
+static_assert(gait_table::valid(kGaitWalk) && gait_table::valid(kGaitTrot) && gait_table::valid(kGaitPace) &&
+                  gait_table::valid(kGaitCrawl) && gait_table::valid(kGaitTripod) &&
+                  gait_table::valid(kGaitRipple) && gait_table::valid(kGaitWave),
+              "gait tables: offsets in [0, 1), duty in (0, 1)");
+static_assert(gait_table::keeps_support(kGaitWalk, 3) && gait_table::keeps_support(kGaitCrawl, 2) &&
+                  gait_table::keeps_support(kGaitTrot, 2) && gait_table::keeps_support(kGaitPace, 2),
+              "quadruped gaits keep enough feet down");
+static_assert(gait_table::keeps_support(kGaitTripod, 3) && gait_table::keeps_support(kGaitRipple, 4) &&
+                  gait_table::keeps_support(kGaitWave, 5),
+              "hexapod gaits keep enough feet down");
+static_assert(gait_table::swings_separated(kGaitWalk) && gait_table::swings_separated(kGaitCrawl),
+              "body-shifting gaits need separated swings");
+
+//! The gaits of one leg count.
+struct GaitList {
+  const GaitTable* const* items;
+  uint8_t count;
+};
+
+namespace gait_library_detail {
+constexpr const GaitTable* kQuadruped[] = {&kGaitWalk, &kGaitTrot, &kGaitPace, &kGaitCrawl};
+constexpr const GaitTable* kHexapod[] = {&kGaitTripod, &kGaitRipple, &kGaitWave};
+}  // namespace gait_library_detail
+
+//! The gaits for a body with `leg_count` legs (none for other counts).
+constexpr GaitList gaits_for_legs(uint8_t leg_count) {
+  return leg_count == 4   ? GaitList{gait_library_detail::kQuadruped, 4}
+         : leg_count == 6 ? GaitList{gait_library_detail::kHexapod, 3}
+                          : GaitList{nullptr, 0};
+}
+
+//! The gaits a model supports: every gait of its leg count.
+constexpr GaitList gaits_for(const RobotModel& model) { return gaits_for_legs(model.leg_count); }
+
+//! The gait called `name` that `model` supports, or nullptr.
+inline const GaitTable* find_gait(const RobotModel& model, const char* name) {
+  if (name == nullptr) return nullptr;
+  const GaitList list = gaits_for(model);
+  for (uint8_t i = 0; i < list.count; ++i)
+    if (strcmp(list.items[i]->name, name) == 0) return list.items[i];
+  return nullptr;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_GAIT_LIBRARY_H

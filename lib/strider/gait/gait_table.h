@@ -1,0 +1,112 @@
+//! GaitTable: a gait as data. Each leg lifts off once per cycle at its
+//! phase offset and stays in the air for (1 - duty) of the cycle; the rest
+//! of the cycle it supports the body (stance).
+//!
+//! Phase convention: the cycle phase runs over [0, 1); leg i's own phase is
+//! psi_i = frac(phase - offset_i), so the leg is in swing for
+//! psi_i in [0, 1 - duty) and in stance for psi_i in [1 - duty, 1). A
+//! footfall diagram is therefore read off directly: leg i's bar is blank
+//! from offset_i to offset_i + 1 - duty.
+//!
+//! Legs are numbered as in robots/robot_model.h: counter-clockwise seen from
+//! above, starting at the front left leg (quadrupeds 0 front left, 1 rear
+//! left, 2 rear right, 3 front right; hexapods 0 front left, 1 middle left,
+//! 2 rear left, 3 rear right, 4 middle right, 5 front right).
+#ifndef STRIDER_GAIT_GAIT_TABLE_H
+#define STRIDER_GAIT_GAIT_TABLE_H
+
+#include <stdint.h>
+
+#include "../robots/robot_model.h"
+
+namespace strider {
+
+struct GaitTable {
+  const char* name;          //!< CLI name, e.g. "walk"
+  uint8_t leg_count;         //!< 4 or 6
+  float duty;                //!< fraction of the cycle each foot is on the ground, (0, 1)
+  float offset[kMaxLegs];    //!< lift-off phase of each leg, [0, 1); unused slots 0
+  //! Statically stable gait: the engine shifts the body so that the CoM stays
+  //! inside the support polygon (seed 003 section 3). Needs swing groups that
+  //! never overlap and a four-foot window between them.
+  bool shift_body;
+  //! The leg sequence is meant relative to the direction of travel (seed 000
+  //! section 3.3): for sideways or backward walking the engine relabels legs.
+  bool relabel_by_direction;
+};
+
+namespace gait_table {
+
+//! Leg i's own phase psi = frac(phase - offset_i), for phases in [0, 1).
+constexpr float leg_phase(const GaitTable& t, uint8_t leg, float phase) {
+  return phase - t.offset[leg] < 0.0f ? phase - t.offset[leg] + 1.0f : phase - t.offset[leg];
+}
+
+//! True when leg `leg` is in the air at cycle phase `phase` in [0, 1).
+constexpr bool in_swing(const GaitTable& t, uint8_t leg, float phase) {
+  return leg_phase(t, leg, phase) < 1.0f - t.duty;
+}
+
+//! Offsets in [0, 1), duty in (0, 1), a known leg count, unused slots zero.
+constexpr bool valid(const GaitTable& t) {
+  if (!(t.leg_count == 4 || t.leg_count == 6)) return false;
+  if (!(t.duty > 0.0f && t.duty < 1.0f)) return false;
+  for (uint8_t i = 0; i < kMaxLegs; ++i) {
+    if (i < t.leg_count && !(t.offset[i] >= 0.0f && t.offset[i] < 1.0f)) return false;
+    if (i >= t.leg_count && t.offset[i] != 0.0f) return false;
+  }
+  return true;
+}
+
+//! Samples the cycle at `samples` points: at every sample at least
+//! `min_support` feet are on the ground.
+constexpr bool keeps_support(const GaitTable& t, uint8_t min_support, uint16_t samples = 960) {
+  for (uint16_t k = 0; k < samples; ++k) {
+    const float phase = (float(k) + 0.5f) / float(samples);
+    uint8_t down = 0;
+    for (uint8_t i = 0; i < t.leg_count; ++i)
+      if (!in_swing(t, i, phase)) ++down;
+    if (down < min_support) return false;
+  }
+  return true;
+}
+
+//! True when legs with different offsets are never in the air together and
+//! every two consecutive swings are separated by a moment with every foot
+//! down: what shift_body needs.
+constexpr bool swings_separated(const GaitTable& t, uint16_t samples = 960) {
+  bool seen_all_down = false;
+  for (uint16_t k = 0; k < samples; ++k) {
+    const float phase = (float(k) + 0.5f) / float(samples);
+    bool any = false;
+    float first = -1.0f;
+    for (uint8_t i = 0; i < t.leg_count; ++i) {
+      if (!in_swing(t, i, phase)) continue;
+      if (any && t.offset[i] != first) return false;
+      any = true;
+      first = t.offset[i];
+    }
+    if (!any) seen_all_down = true;
+  }
+  return seen_all_down;
+}
+
+//! The table with the leg roles turned by `quarter_turns` x 90 deg
+//! counter-clockwise (4 legs only; 6-leg tables come back unchanged): the
+//! sequence meant for walking forward, used for walking in the direction
+//! quarter_turns x 90 deg to the left of forward. Leg i takes the offset of
+//! leg (i - quarter_turns) mod 4. Walking right (quarter_turns = -1) gives
+//! seed 000 section 3.3's "limb 4 will be 1, 3 will be 4, 2 will be 3 and 1
+//! will be 2" (its limbs 1-4 are legs 0-3).
+constexpr GaitTable relabeled(const GaitTable& t, int8_t quarter_turns) {
+  if (t.leg_count != 4) return t;
+  GaitTable r = t;
+  const uint8_t k = uint8_t(((quarter_turns % 4) + 4) % 4);
+  for (uint8_t i = 0; i < 4; ++i) r.offset[i] = t.offset[(i + 4 - k) % 4];
+  return r;
+}
+
+}  // namespace gait_table
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_GAIT_TABLE_H

@@ -1,0 +1,144 @@
+//! Swing trajectories: where a foot is while it is in the air, as a function
+//! of its swing phase s in [0, 1] (0 lift-off, 1 touch-down).
+//!
+//! Every shape is a pair (u(s), w(s)): u is the fraction of the way from the
+//! lift-off point to the touch-down point (along the straight line between
+//! them, seen from above), w the height above the ground as a fraction of the
+//! apex height. Every shape has u(0) = w(0) = 0, u(1) = 1, w(1) = 0, so the
+//! foot path is continuous at lift-off and touch-down, and max w = 1.
+//!
+//! | shape | u(s) | w(s) | apex |
+//! |---|---|---|---|
+//! | rectangle (seed 001 s. 3.2) | 0, 3s - 1, 1 on thirds | 3s, 1, 3 - 3s | h |
+//! | semicircle | (1 - cos pi s) / 2 | sin pi s | clamp(L/2, h/2, h) |
+//! | ellipse | (1 - cos pi s) / 2 | sin pi s | h |
+//! | cycloid | s - sin(2 pi s) / (2 pi) | (1 - cos 2 pi s) / 2 | h |
+//! | parabola | s | 4 s (1 - s) | h |
+//! | bezier (CHAMP, 12 points) | table | table | h |
+//!
+//! (h = step height, L = step length.) The semicircle is the foot turning at a
+//! constant rate on a circle of diameter L: exact when h/2 <= L/2 <= h; the
+//! apex is kept within [h/2, h] so a short step still clears the ground and a
+//! long one does not lift higher than asked (an ellipse then). The cycloid
+//! starts and ends with zero velocity. The 12-point Bezier swings back before
+//! it moves forward and overshoots the touch-down point (u from -0.18 to
+//! 1.15), like CHAMP's; it is tabulated at 65 phases and interpolated
+//! linearly (bezier_table.h, error below 0.004 of the step).
+#ifndef STRIDER_GAIT_SWING_TRAJECTORY_H
+#define STRIDER_GAIT_SWING_TRAJECTORY_H
+
+#include <stdint.h>
+#include <string.h>
+
+#include "../math/scalar.h"
+#include "bezier_table.h"
+
+namespace strider {
+
+enum class SwingShape : uint8_t {
+  kRectangle = 0,   //!< lift, carry, lower (seed 001 section 3.2)
+  kSemicircle = 1,  //!< circle of diameter L (seed 001 future work)
+  kEllipse = 2,     //!< semi-axes L/2 and h (seed 001 future work)
+  kCycloid = 3,     //!< zero speed at both ends (seed 001 future work)
+  kParabola = 4,    //!< seed 001 future work
+  kBezier = 5       //!< 12-point Bezier, CHAMP's control points
+};
+
+constexpr uint8_t kSwingShapeCount = 6;
+
+inline const char* to_string(SwingShape shape) {
+  switch (shape) {
+    case SwingShape::kRectangle: return "rectangle";
+    case SwingShape::kSemicircle: return "semicircle";
+    case SwingShape::kEllipse: return "ellipse";
+    case SwingShape::kCycloid: return "cycloid";
+    case SwingShape::kParabola: return "parabola";
+    case SwingShape::kBezier: return "bezier";
+  }
+  return "ellipse";
+}
+
+//! Parses a shape name; returns false and leaves `shape` alone otherwise.
+inline bool parse_swing_shape(const char* text, SwingShape& shape) {
+  if (text == nullptr) return false;
+  for (uint8_t i = 0; i < kSwingShapeCount; ++i) {
+    if (strcmp(text, to_string(SwingShape(i))) == 0) {
+      shape = SwingShape(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+//! A point of a swing: horizontal fraction u and height fraction w.
+template <typename S>
+struct SwingPoint {
+  S u;  //!< 0 at the lift-off point, 1 at the touch-down point
+  S w;  //!< height / apex height, in [0, 1]
+};
+
+//! The smallest and largest u a shape reaches (the Bezier overshoots).
+constexpr double swing_u_min(SwingShape shape) { return shape == SwingShape::kBezier ? -0.1837 : 0.0; }
+constexpr double swing_u_max(SwingShape shape) { return shape == SwingShape::kBezier ? 1.1504 : 1.0; }
+
+namespace swing_detail {
+
+inline float table_value(uint16_t v, float) { return float(v) * (1.0f / 16384.0f) - 0.5f; }
+inline Fixed table_value(uint16_t v, Fixed) { return Fixed::from_raw(int32_t(uint32_t(v) << 2) - 32768); }
+//! floor(x) for x in [0, 64].
+inline int16_t floor_index(float x) { return int16_t(x); }
+inline int16_t floor_index(Fixed x) { return int16_t(x.raw() >> Fixed::kFracBits); }
+
+//! The tabulated Bezier at s in [0, 1], linear between the 65 nodes.
+template <typename S>
+SwingPoint<S> bezier(S s) {
+  const S x = s * S(detail::kBezierNodes - 1);
+  int16_t k = floor_index(x);
+  if (k > detail::kBezierNodes - 2) k = detail::kBezierNodes - 2;
+  if (k < 0) k = 0;
+  const S f = clamp(x - S(k), S(0), S(1));
+  const uint16_t* tu = detail::BezierTables<>::kU;
+  const uint16_t* tw = detail::BezierTables<>::kW;
+  const S u0 = table_value(flash_u16(tu, uint16_t(k)), S()), u1 = table_value(flash_u16(tu, uint16_t(k + 1)), S());
+  const S w0 = table_value(flash_u16(tw, uint16_t(k)), S()), w1 = table_value(flash_u16(tw, uint16_t(k + 1)), S());
+  return SwingPoint<S>{u0 + (u1 - u0) * f, w0 + (w1 - w0) * f};
+}
+
+}  // namespace swing_detail
+
+//! The swing point of `shape` at swing phase s (clamped into [0, 1]).
+template <typename S>
+SwingPoint<S> swing_point(SwingShape shape, S s) {
+  s = clamp(s, S(0), S(1));
+  const S one = S(1), half = scalar<S>(0.5);
+  switch (shape) {
+    case SwingShape::kRectangle: {
+      const S three_s = s * S(3);
+      if (three_s < one) return SwingPoint<S>{S(0), three_s};
+      if (three_s < S(2)) return SwingPoint<S>{three_s - one, one};
+      return SwingPoint<S>{one, S(3) - three_s};
+    }
+    case SwingShape::kCycloid: {
+      const S a = two_pi<S>() * s;
+      return SwingPoint<S>{s - sin(a) * scalar<S>(0.15915494309189535), (one - cos(a)) * half};
+    }
+    case SwingShape::kParabola: return SwingPoint<S>{s, S(4) * s * (one - s)};
+    case SwingShape::kBezier: return swing_detail::bezier(s);
+    case SwingShape::kSemicircle:
+    case SwingShape::kEllipse: break;
+  }
+  const S a = pi<S>() * s;
+  return SwingPoint<S>{(one - cos(a)) * half, sin(a)};
+}
+
+//! The apex height of a swing [mm] for a step of length stride_mm and the
+//! robot's step height step_mm: step_mm, except for the semicircle.
+template <typename S>
+S swing_apex_mm(SwingShape shape, S stride_mm, S step_mm) {
+  if (shape != SwingShape::kSemicircle) return step_mm;
+  return clamp(stride_mm * scalar<S>(0.5), step_mm * scalar<S>(0.5), step_mm);
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_SWING_TRAJECTORY_H

@@ -1,0 +1,135 @@
+//! AbductionLeg: the 3-DOF dog leg of seed 001 (Shahriar): abduction t1,
+//! hip t2, knee t3; abduction link La at 90 deg to the femur Lb, tibia Lc.
+//!
+//! Frame: origin on the abduction axis, which is x (forward); y left, z up.
+//! - t1: angle of La measured counterclockwise about +x from +y, in [0, 2 pi)
+//!   (table 3, algorithm 1's angle_range_limiter). La points along
+//!   u = (0, cos t1, sin t1); the leg plane is perpendicular to u and contains
+//!   x. Its "down" direction is w = (0, sin t1, -cos t1) on a left leg and
+//!   w = (0, -sin t1, cos t1) on a right leg: standing, a left leg has t1 = 0
+//!   (La points +y), a right leg t1 = pi (La points -y), both hang down.
+//! - t2: femur angle in the leg plane measured from the backward direction
+//!   (-x) toward w: backward 0, down pi/2, forward pi. t3 = pi - R3 >= 0: knee
+//!   flexion, 0 when straight; t3 > 0 turns the tibia forward of the femur,
+//!   so the knee points backward (behind the hip-foot line).
+//! FK: xp = -Lb cos t2 - Lc cos(t2 + t3), d = Lb sin t2 + Lc sin(t2 + t3),
+//!     foot = La u + xp (1, 0, 0) + d w.
+//! A right leg is the mirror image (y -> -y) of a left leg at t1' = pi - t1.
+//!
+//! IK (section 2.2): A = sqrt(y^2 + z^2) (eq 4.1); alpha1 = atan2(z, y) in
+//! [0, 2 pi) (eqs 4.2-4.5 are its quadrant cases); alpha2 = asin(La / A) (4.6),
+//! alpha3 = pi/2 - alpha2 (4.7); left t1 = alpha1 + alpha3, right
+//! t1 = alpha1 - alpha3 (algorithm 1), wrapped to [0, 2 pi). Strider turns
+//! (y, z) by alpha3 (cos = La / A, sin = p / A, p = sqrt(A^2 - La^2)) and takes
+//! one atan2. In the leg plane the foot is at xp = x and d = p: the seed's eqs
+//! 4.12-4.21 use z for -d, which is only right when t1 = 0 (or pi). Then
+//! R = sqrt(x^2 + p^2) (4.12), R1 = angle of the hip-foot line from backward
+//! (4.13 for x > 0), R2 = acos((Lb^2 + R^2 - Lc^2) / (2 Lb R)) (4.15; the seed
+//! prints "- L_c" for "- L_c^2"), R3 = acos((Lb^2 + Lc^2 - R^2) / (2 Lb Lc))
+//! (4.16), t2 = R1 - R2 in (-pi, pi] (4.17), t3 = pi - R3 (4.21): the two-link
+//! problem of leg_ik_common.h on the positive branch, without acos.
+//!
+//! Seed 001's math_error_handler: a foot inside the abduction cylinder
+//! (A < La) is moved out to A = La, then the two-link clamp applies; on the
+//! abduction axis (A = 0) t1 takes the side's standing value. Either way the
+//! miss distance decides kClamped or kUnreachable. No asin/acos is evaluated.
+//! t1 is reported in [0, 2 pi) unless the joint limits ask for another
+//! representative (e.g. a left leg limited to [-30, 30] deg gets -10 deg, not
+//! 350 deg).
+//!
+//! Seed 001's DH product (eqs 3.2-3.6) puts La in line with the femur, which
+//! contradicts the 90 deg of its IK and figure 2; Strider follows the IK.
+#ifndef STRIDER_KINEMATICS_ABDUCTION_LEG_H
+#define STRIDER_KINEMATICS_ABDUCTION_LEG_H
+
+#include "../math/vec3.h"
+#include "ik_status.h"
+#include "joints.h"
+#include "leg_ik_common.h"
+
+namespace strider {
+
+//! Which side of the body an abduction leg hangs on (mirrors the leg plane).
+enum class LegSide : uint8_t { kLeft = 0, kRight = 1 };
+
+template <typename S>
+struct AbductionLeg {
+  static constexpr uint8_t kDof = 3;
+  using Joints = JointVector<S, kDof>;
+
+  S la_mm;  //!< La, abduction axis to the hip axis, perpendicular to both [mm]
+  S lb_mm;  //!< Lb, femur: hip axis to knee axis [mm]
+  S lc_mm;  //!< Lc, tibia: knee axis to foot [mm]
+  LegSide side;
+  JointLimits<S, kDof> limits;
+  // Filled by make(); do not set by hand.
+  int8_t unit_shift;        //!< working units, see leg_ik_common.h
+  S la_fine;                //!< La in fine units (working units * 8)
+  S la_fine_sq;             //!< La^2 in fine units
+  leg_ik::TwoLink<S> link;  //!< femur and tibia in working units
+
+  //! Fine units (reach in [32, 64)) for A^2 - La^2, which cancels when the
+  //! foot is level with the hip (A near La): 8x finer than working units.
+  static constexpr int8_t kFineBits = 3;
+
+  //! The leg with its cached working-unit constants. Always build legs here.
+  static constexpr AbductionLeg make(S la, S lb, S lc, const JointLimits<S, kDof>& limits,
+                                     LegSide side = LegSide::kLeft) {
+    const int8_t n = leg_ik::unit_shift(lb + lc);
+    const S la_f = leg_ik::to_unit(la, int8_t(n - kFineBits));
+    return AbductionLeg{la, lb, lc, side, limits, n, la_f, la_f * la_f,
+                        leg_ik::TwoLink<S>::make(leg_ik::to_unit(lb, n), leg_ik::to_unit(lc, n))};
+  }
+
+  //! t1 of the standing leg: La horizontal and pointing outward [rad].
+  constexpr S standing_t1() const { return side == LegSide::kLeft ? S(0) : pi<S>(); }
+
+  //! Foot = La u + xp x + d w (see the header comment).
+  Vec3<S> fk(const Joints& q) const {
+    const S c1 = cos(q[0]), s1 = sin(q[0]);
+    const S t23 = q[1] + q[2];
+    const S xp = -(lb_mm * cos(q[1]) + lc_mm * cos(t23));
+    S d = lb_mm * sin(q[1]) + lc_mm * sin(t23);
+    if (side == LegSide::kRight) d = -d;  // w_right = -w_left
+    return Vec3<S>(xp, la_mm * c1 + d * s1, la_mm * s1 - d * c1);
+  }
+
+  //! Seed 001 eqs 4.1-4.21 and algorithm 1 (see the header comment), then
+  //! reachability and joint limits. Writes q and reached unless kUnreachable.
+  IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+              const IkOptions<S>& opt = IkOptions<S>()) const {
+    const S bound_x = lb_mm + lc_mm + opt.max_clamp_mm;
+    const S bound_yz = la_mm + bound_x;
+    if (!leg_ik::within(target.x, bound_x) || !leg_ik::within(target.y, bound_yz) ||
+        !leg_ik::within(target.z, bound_yz))
+      return IkStatus::kUnreachable;
+    const int8_t fine = int8_t(unit_shift - kFineBits);
+    const S y = leg_ik::to_unit(target.y, fine);
+    const S z = leg_ik::to_unit(target.z, fine);
+    const S a_sq = y * y + z * z;     // A^2, eq 4.1
+    const S p_sq = a_sq - la_fine_sq;  // d^2 = A^2 - La^2 (triangle OCD, phi = 90 deg)
+    Joints sol;
+    S p = S(0);  // [fine unit]
+    bool clamped = false;
+    if (p_sq > S(0)) {
+      p = sqrt(p_sq);
+      // (y, z) turned by +alpha3 (left) or -alpha3 (right), times A^2.
+      const S lz = la_fine * z, py = p * y;
+      const S ly = la_fine * y, pz = p * z;
+      sol[0] = side == LegSide::kLeft ? atan2(lz + py, ly - pz) : atan2(lz - py, ly + pz);
+    } else {
+      clamped = p_sq < S(0);  // inside the abduction cylinder: La points at the foot
+      sol[0] = a_sq > S(0) ? atan2(z, y) : leg_ik::free_angle(limits, 0, standing_t1());
+    }
+    sol[0] = wrap_two_pi(sol[0]);  // algorithm 1
+    if (!(sol[0] < two_pi<S>())) sol[0] = S(0);  // -tiny + 2 pi rounds to 2 pi
+    // In the leg plane: backward = -x, down = d = p (the seed's -z).
+    const S back = leg_ik::to_unit(-target.x, unit_shift);
+    if (link.solve(back, leg_ik::to_unit(p, kFineBits), KneeBranch::kPositive, sol[1], sol[2])) clamped = true;
+    return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);
+  }
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_KINEMATICS_ABDUCTION_LEG_H

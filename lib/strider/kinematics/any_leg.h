@@ -1,0 +1,168 @@
+//! AnyLeg: one leg of a robot model, of whichever kind the model says,
+//! behind one FK/IK interface with three joint slots. No heap, no virtual
+//! calls: a tagged union of the four leg types and a switch on the kind.
+//!
+//! Joints: JointVector<S, 3> in the leg type's seed convention [rad]; 2-DOF
+//! kinds use slots 0 and 1, read nothing from slot 2 and write 0 there.
+//! Frames: fk/ik work in the leg frame, fk_body/ik_body in the body frame
+//! through the leg's mount (seed 000 eqs 9-11 plus the mount yaw).
+#ifndef STRIDER_KINEMATICS_ANY_LEG_H
+#define STRIDER_KINEMATICS_ANY_LEG_H
+
+#include "../robots/robot_model.h"
+#include "abduction_leg.h"
+#include "coxa_femur_tibia_leg.h"
+#include "leg_mount.h"
+#include "planar_leg.h"
+#include "sprawl_leg.h"
+
+namespace strider {
+
+template <typename S>
+class AnyLeg {
+ public:
+  static constexpr uint8_t kMaxDof = kMaxLegDof;
+  using Joints = JointVector<S, kMaxDof>;
+
+  //! A zero-length sprawl leg at the body centre; assign from from_model().
+  AnyLeg() : kind_(LegKind::kSprawl), side_(BodySide::kLeft), mount_(LegMount<S>::make(Vec3<S>(), S(0))) {}
+
+  //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S).
+  //! Returns false and leaves `out` alone when index >= model.leg_count.
+  static bool from_model(const RobotModel& model, uint8_t index, AnyLeg& out) {
+    if (index >= model.leg_count || index >= kMaxLegs) return false;
+    const LegModel& lm = model.legs[index];
+    AnyLeg leg;
+    leg.kind_ = model.kind;
+    leg.side_ = lm.side;
+    leg.mount_ = LegMount<S>::make(Vec3<S>::from(lm.mount_mm), deg_to_rad<S>(lm.mount_yaw_deg));
+    const S l1 = scalar<S>(model.links.l1_mm), l2 = scalar<S>(model.links.l2_mm);
+    const S l3 = scalar<S>(model.links.l3_mm), d1 = scalar<S>(model.links.d1_mm);
+    switch (model.kind) {
+      case LegKind::kSprawl: leg.legs_.sprawl = SprawlLeg<S>::make(l1, l2, limits_of<2>(lm)); break;
+      case LegKind::kPlanar: leg.legs_.planar = PlanarLeg<S>::make(l1, l2, limits_of<2>(lm)); break;
+      case LegKind::kCoxaFemurTibia:
+        leg.legs_.cft = CoxaFemurTibiaLeg<S>::make(d1, l1, l2, l3, limits_of<3>(lm));
+        break;
+      case LegKind::kAbduction:
+        leg.legs_.abduction = AbductionLeg<S>::make(
+            l1, l2, l3, limits_of<3>(lm), lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight);
+        break;
+    }
+    out = leg;
+    return true;
+  }
+
+  LegKind kind() const { return kind_; }
+  uint8_t dof() const { return dof_of(kind_); }
+  BodySide side() const { return side_; }
+  const LegMount<S>& mount() const { return mount_; }
+
+  //! The joint limits [rad]; slot 2 of a 2-DOF leg is [0, 0].
+  JointLimits<S, kMaxDof> limits() const {
+    JointLimits<S, kMaxDof> l;
+    for (uint8_t j = 0; j < kMaxDof; ++j) l.lo[j] = l.hi[j] = S(0);
+    switch (kind_) {
+      case LegKind::kSprawl: copy_limits(legs_.sprawl.limits, l); break;
+      case LegKind::kPlanar: copy_limits(legs_.planar.limits, l); break;
+      case LegKind::kCoxaFemurTibia: copy_limits(legs_.cft.limits, l); break;
+      case LegKind::kAbduction: copy_limits(legs_.abduction.limits, l); break;
+    }
+    return l;
+  }
+
+  //! True when every used joint lies inside its limits.
+  bool within_limits(const Joints& q) const {
+    const JointLimits<S, kMaxDof> l = limits();
+    for (uint8_t j = 0; j < dof(); ++j)
+      if (q[j] < l.lo[j] || l.hi[j] < q[j]) return false;
+    return true;
+  }
+
+  //! Foot in the leg frame [mm].
+  Vec3<S> fk(const Joints& q) const {
+    switch (kind_) {
+      case LegKind::kSprawl: return legs_.sprawl.fk(narrow<2>(q));
+      case LegKind::kPlanar: return legs_.planar.fk(narrow<2>(q));
+      case LegKind::kCoxaFemurTibia: return legs_.cft.fk(narrow<3>(q));
+      case LegKind::kAbduction: return legs_.abduction.fk(narrow<3>(q));
+    }
+    return Vec3<S>();
+  }
+
+  //! IK in the leg frame: the leg type's solver. Writes q and reached [mm]
+  //! unless the status is kUnreachable.
+  IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+              const IkOptions<S>& opt = IkOptions<S>()) const {
+    switch (kind_) {
+      case LegKind::kSprawl: return solve(legs_.sprawl, target, q, reached, opt);
+      case LegKind::kPlanar: return solve(legs_.planar, target, q, reached, opt);
+      case LegKind::kCoxaFemurTibia: return solve(legs_.cft, target, q, reached, opt);
+      case LegKind::kAbduction: return solve(legs_.abduction, target, q, reached, opt);
+    }
+    return IkStatus::kUnreachable;
+  }
+
+  //! Foot in the body frame [mm].
+  Vec3<S> fk_body(const Joints& q) const { return mount_.leg_to_body(fk(q)); }
+
+  //! IK for a body-frame target; reached is in the body frame too [mm].
+  IkStatus ik_body(const Vec3<S>& target_body, Joints& q, Vec3<S>& reached_body,
+                   const IkOptions<S>& opt = IkOptions<S>()) const {
+    Vec3<S> reached_leg;
+    const IkStatus s = ik(mount_.body_to_leg(target_body), q, reached_leg, opt);
+    if (s != IkStatus::kUnreachable) reached_body = mount_.leg_to_body(reached_leg);
+    return s;
+  }
+
+ private:
+  template <uint8_t N>
+  static JointLimits<S, N> limits_of(const LegModel& lm) {
+    JointLimits<S, N> l;
+    for (uint8_t j = 0; j < N; ++j) {
+      l.lo[j] = deg_to_rad<S>(lm.joint[j].min_deg);
+      l.hi[j] = deg_to_rad<S>(lm.joint[j].max_deg);
+    }
+    return l;
+  }
+  template <uint8_t N>
+  static void copy_limits(const JointLimits<S, N>& from, JointLimits<S, kMaxDof>& to) {
+    for (uint8_t j = 0; j < N; ++j) to.lo[j] = from.lo[j], to.hi[j] = from.hi[j];
+  }
+  template <uint8_t N>
+  static JointVector<S, N> narrow(const Joints& q) {
+    JointVector<S, N> r;
+    for (uint8_t j = 0; j < N; ++j) r[j] = q[j];
+    return r;
+  }
+  template <typename Leg>
+  static IkStatus solve(const Leg& leg, const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+                        const IkOptions<S>& opt) {
+    typename Leg::Joints sol;
+    Vec3<S> at;
+    const IkStatus s = leg.ik(target, sol, at, opt);
+    if (s == IkStatus::kUnreachable) return s;
+    for (uint8_t j = 0; j < kMaxDof; ++j) q[j] = j < Leg::kDof ? sol[j] : S(0);
+    reached = at;
+    return s;
+  }
+
+  // One leg of the four kinds; kind_ says which member is live. The
+  // constructor is needed because Fixed has a non-trivial default constructor.
+  union Legs {
+    Legs() : sprawl() {}
+    SprawlLeg<S> sprawl;
+    PlanarLeg<S> planar;
+    CoxaFemurTibiaLeg<S> cft;
+    AbductionLeg<S> abduction;
+  };
+
+  LegKind kind_;
+  BodySide side_;
+  LegMount<S> mount_;
+  Legs legs_;
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_KINEMATICS_ANY_LEG_H

@@ -1,0 +1,109 @@
+//! CoxaFemurTibiaLeg: the 3-DOF hexapod leg of seed 002 (Qingsheng and
+//! Andika 2018), also seed 004's hip yaw / hip elevation / knee leg.
+//!
+//! Frame: DH frame 0 of seed 002 (table 2): origin on the coxa (yaw) axis, z
+//! up along it, x along the coxa at t1 = 0, y left. d1 is the height of the
+//! femur axis above the origin, l1 (coxa) the horizontal distance from the yaw
+//! axis to the femur axis, l2 the femur, l3 the tibia. t1 yaws the leg about
+//! z; t2 and t3 pitch femur and tibia in the vertical leg plane, positive
+//! upward. All zero: leg stretched out horizontally, foot at (l1 + l2 + l3, 0, d1).
+//!
+//! IK: t1 = atan2(py, px) (eq 12); eq 11's first two rows leave the planar
+//! two-link problem h = px c1 + py s1 - l1 = rho - l1, v = pz - d1 for the femur
+//! and tibia. Default branch t3 <= 0 (knee above the hip-foot line: "t3 is
+//! negative due to reach value z < 0"). Singular cases: on the yaw axis
+//! (rho = 0) t1 is free and set to 0; a target inside the femur-tibia annulus'
+//! hole is tried facing away (t1 + pi), which reaches feet tucked behind the
+//! yaw axis.
+//!
+//! Seed 004 (theta1 hip yaw, theta2 knee, theta3 hip elevation, offset cx) is
+//! this leg with coxa = 0. Its triangle (phi1 = atan(r / (z + cx))) needs
+//! z + cx > 0 for a foot below the hip, so its z is measured downward:
+//! z_seed004 = -z and d1 = cx. Then t1 = theta1, t2 = pi/2 - theta3 (theta3 is
+//! the femur angle from straight up), t3 = theta2 - pi (theta2 is the interior
+//! knee angle), on the branch t3 <= 0.
+#ifndef STRIDER_KINEMATICS_COXA_FEMUR_TIBIA_LEG_H
+#define STRIDER_KINEMATICS_COXA_FEMUR_TIBIA_LEG_H
+
+#include "../math/vec3.h"
+#include "ik_status.h"
+#include "joints.h"
+#include "leg_ik_common.h"
+
+namespace strider {
+
+template <typename S>
+struct CoxaFemurTibiaLeg {
+  static constexpr uint8_t kDof = 3;
+  using Joints = JointVector<S, kDof>;
+
+  S d1_mm;     //!< height of the femur axis above the leg origin [mm]
+  S coxa_mm;   //!< l1, yaw axis to femur axis [mm]
+  S femur_mm;  //!< l2, femur axis to tibia axis [mm]
+  S tibia_mm;  //!< l3, tibia axis to foot [mm]
+  KneeBranch branch;  //!< sign of the t3 that ik() returns
+  JointLimits<S, kDof> limits;
+  // Filled by make(); do not set by hand.
+  int8_t unit_shift;        //!< working units, see leg_ik_common.h
+  leg_ik::TwoLink<S> link;  //!< femur and tibia in working units
+
+  //! The leg with its cached working-unit constants. Always build legs here.
+  static constexpr CoxaFemurTibiaLeg make(S d1, S coxa, S femur, S tibia, const JointLimits<S, kDof>& limits,
+                                          KneeBranch branch = KneeBranch::kNegative) {
+    const int8_t n = leg_ik::unit_shift(femur + tibia);
+    return CoxaFemurTibiaLeg{d1, coxa, femur, tibia, branch, limits, n,
+                             leg_ik::TwoLink<S>::make(leg_ik::to_unit(femur, n), leg_ik::to_unit(tibia, n))};
+  }
+
+  //! Seed 002 eqs 5-7.
+  Vec3<S> fk(const Joints& q) const {
+    const S t23 = q[1] + q[2];
+    const S reach = tibia_mm * cos(t23) + femur_mm * cos(q[1]) + coxa_mm;
+    return Vec3<S>(cos(q[0]) * reach, sin(q[0]) * reach, tibia_mm * sin(t23) + femur_mm * sin(q[1]) + d1_mm);
+  }
+
+  //! Seed 002 eqs 11-12 and the two-link solution, then reachability and
+  //! joint limits. Writes q and reached unless kUnreachable.
+  IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+              const IkOptions<S>& opt = IkOptions<S>()) const {
+    const S bound_xy = coxa_mm + femur_mm + tibia_mm + opt.max_clamp_mm;
+    const S bound_z = femur_mm + tibia_mm + opt.max_clamp_mm;
+    if (!leg_ik::within(target.x, bound_xy) || !leg_ik::within(target.y, bound_xy) ||
+        !leg_ik::within(target.z - d1_mm, bound_z))
+      return IkStatus::kUnreachable;
+    Joints sol;
+    S rho = S(0);  // [mm]
+    if (target.x == S(0) && target.y == S(0)) {
+      sol[0] = leg_ik::free_angle(limits, 0, S(0));  // on the yaw axis
+    } else {
+      sol[0] = atan2(target.y, target.x);  // eq 12
+      rho = leg_ik::hypot(target.x, target.y);
+    }
+    S h = leg_ik::to_unit(rho - coxa_mm, unit_shift);  // eq 11, row 1
+    const S v = leg_ik::to_unit(target.z - d1_mm, unit_shift);  // eq 11, row 2
+    if (coxa_mm > S(0) && rho > S(0) && h * h + v * v < link.inner2) {
+      const S h_far = leg_ik::to_unit(-rho - coxa_mm, unit_shift);
+      if (far_side_is_nearer(h, h_far, v)) {
+        h = h_far;
+        sol[0] = wrap_pi(sol[0] + pi<S>());
+      }
+    }
+    const bool clamped = link.solve(h, v, branch, sol[1], sol[2]);
+    return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);
+  }
+
+ private:
+  // The target is inside the hole of the femur-tibia annulus on the near side
+  // (h = rho - l1). Facing away (h = -rho - l1), is it nearer the annulus?
+  bool far_side_is_nearer(S h_near, S h_far, S v) const {
+    const S d2_far = h_far * h_far + v * v;
+    if (!(d2_far > link.outer2)) return true;
+    const S miss_near = abs(link.a1 - link.a2) - leg_ik::hypot(h_near, v);
+    const S miss_far = leg_ik::hypot(h_far, v) - (link.a1 + link.a2);
+    return miss_far < miss_near;
+  }
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_KINEMATICS_COXA_FEMUR_TIBIA_LEG_H

@@ -1,0 +1,236 @@
+//! Building blocks shared by the analytic leg solvers (sprawl, planar,
+//! coxa/femur/tibia, abduction): the knee branch, working units that keep
+//! Fixed from overflowing, the planar two-link problem, revolute joint limits
+//! and the status of a missed target.
+//!
+//! Working units: Fixed (Q16.16) overflows above 32767, so a 280 mm link
+//! cannot be squared in millimetres. Each leg picks a power of two 2^n (its
+//! "unit shift") that brings its two main links into [4, 8) units, where the
+//! two-link solver's largest product, (2 a1 a2 sin)^2, stays below 4096 and
+//! one unit keeps 16 fraction bits (2^(n-16) mm: 0.002 mm for a 557 mm leg).
+//! Shifts are exact for lengths with few fraction bits and cost no multiply.
+//! Lengths of small vectors (a foot near an axis, a miss distance) use
+//! hypot/norm3, which shift each call's operands into [32, 64) instead.
+//! Float needs no scaling: its shift is 0 and the conversions are no-ops.
+#ifndef STRIDER_KINEMATICS_LEG_IK_COMMON_H
+#define STRIDER_KINEMATICS_LEG_IK_COMMON_H
+
+#include "../math/vec3.h"
+#include "ik_status.h"
+#include "joints.h"
+
+namespace strider {
+
+//! Which of the two elbow-up/elbow-down solutions a two-link IK returns: the
+//! sign of the knee joint angle.
+enum class KneeBranch : uint8_t {
+  kPositive = 0,  //!< knee angle in [0, pi]
+  kNegative = 1   //!< knee angle in [-pi, 0]
+};
+
+namespace leg_ik {
+
+//! Working-unit shift n of a leg whose main links add up to length [mm]:
+//! length * 2^-n lies in [4, 8). Float works in millimetres (n = 0).
+constexpr int8_t unit_shift(float) { return 0; }
+constexpr int8_t unit_shift(Fixed length) {
+  uint32_t r = Fixed::abs_raw(length.raw());
+  int8_t n = 0;
+  if (r == 0) return 0;
+  while (r >= (uint32_t(8) << Fixed::kFracBits)) { r >>= 1; ++n; }
+  while (r < (uint32_t(4) << Fixed::kFracBits)) { r <<= 1; --n; }
+  return n;
+}
+
+//! Millimetres to working units, and back (saturating for Fixed).
+constexpr float to_unit(float v_mm, int8_t) { return v_mm; }
+constexpr Fixed to_unit(Fixed v_mm, int8_t shift) { return v_mm.scaled_pow2(-shift); }
+constexpr float from_unit(float v, int8_t) { return v; }
+constexpr Fixed from_unit(Fixed v, int8_t shift) { return v.scaled_pow2(shift); }
+
+//! True when |v| <= bound; false for NaN and infinities, so every solver's
+//! first test also rejects non-finite float targets.
+template <typename S>
+bool within(S v, S bound) { return abs(v) <= bound; }
+
+//! sqrt(x^2 + y^2) and |v| without overflow or loss of precision for any
+//! magnitude. Fixed: the operands are shifted so the larger lies in [32, 64)
+//! (squares then keep ~28 significant bits and sum below 12288), and the
+//! root is shifted back; a plain sqrt of small squares would lose up to
+//! sqrt(2^-17) of absolute precision.
+inline float hypot(float x, float y) { return sqrt(x * x + y * y); }
+inline float norm3(float x, float y, float z) { return sqrt(x * x + y * y + z * z); }
+inline int fit_shift(uint32_t max_raw) {
+  int k = 0;
+  while (max_raw >= (uint32_t(1) << 22)) { max_raw >>= 1; --k; }
+  while (max_raw < (uint32_t(1) << 21)) { max_raw <<= 1; ++k; }
+  return k;
+}
+inline Fixed norm3(Fixed x, Fixed y, Fixed z) {
+  uint32_t m = Fixed::abs_raw(x.raw());
+  if (Fixed::abs_raw(y.raw()) > m) m = Fixed::abs_raw(y.raw());
+  if (Fixed::abs_raw(z.raw()) > m) m = Fixed::abs_raw(z.raw());
+  if (m == 0) return Fixed();
+  const int k = fit_shift(m);
+  const Fixed xs = x.scaled_pow2(k), ys = y.scaled_pow2(k), zs = z.scaled_pow2(k);
+  return sqrt(xs * xs + ys * ys + zs * zs).scaled_pow2(-k);
+}
+inline Fixed hypot(Fixed x, Fixed y) { return leg_ik::norm3(x, y, Fixed()); }
+
+//! Scales a pair by one power of two so that its larger magnitude is at
+//! least 1 (Fixed; float is left alone). The angle of the pair is unchanged,
+//! and products of lifted pairs keep ~16 significant bits however small the
+//! pair was (near the folded leg both sides of the two-link atan2 shrink).
+inline void lift_pair(float&, float&) {}
+inline void lift_pair(Fixed& a, Fixed& b) {
+  uint32_t m = Fixed::abs_raw(a.raw());
+  if (Fixed::abs_raw(b.raw()) > m) m = Fixed::abs_raw(b.raw());
+  if (m == 0 || m >= uint32_t(Fixed::kOneRaw)) return;
+  int k = 0;
+  while (m < uint32_t(Fixed::kOneRaw)) { m <<= 1; ++k; }
+  a = a.scaled_pow2(k);
+  b = b.scaled_pow2(k);
+}
+
+//! |a - b| [mm].
+template <typename S>
+S gap_mm(const Vec3<S>& a, const Vec3<S>& b) { return leg_ik::norm3(a.x - b.x, a.y - b.y, a.z - b.z); }
+
+//! The status of a target missed by miss_mm (its distance to the point solved
+//! for): within tolerance kOk, within max_clamp kClamped, else kUnreachable.
+template <typename S>
+IkStatus miss_status(S miss_mm, const IkOptions<S>& opt) {
+  if (!(miss_mm <= opt.max_clamp_mm)) return IkStatus::kUnreachable;
+  return miss_mm > opt.tolerance_mm ? IkStatus::kClamped : IkStatus::kOk;
+}
+
+//! The planar two-link problem in working units:
+//!   (h, v) = a1 (cos ta, sin ta) + a2 (cos(ta + tb), sin(ta + tb)).
+//! Law of cosines with every quantity multiplied by 2 a1 a2 so that no
+//! reciprocal is needed (seed 003 eqs 4-5, seed 002 eqs 8-11):
+//!   2 a1 a2 cos tb = D^2 - a1^2 - a2^2,
+//!   2 a1 a2 |sin tb| = sqrt(((a1 + a2)^2 - D^2) (D^2 - (a1 - a2)^2)),
+//! which stays accurate near the stretched and folded boundaries, and
+//!   ta = atan2(v, h) - atan2(a2 sin tb, a1 + a2 cos tb)
+//! as a single atan2 by the angle-difference identity.
+template <typename S>
+struct TwoLink {
+  S a1;        //!< first link [unit]
+  S a2;        //!< second link [unit]
+  S outer2;    //!< (a1 + a2)^2 [unit^2]
+  S inner2;    //!< (a1 - a2)^2 [unit^2]
+  S sum_sq;    //!< a1^2 + a2^2 [unit^2]
+  S diff_sq;   //!< a1^2 - a2^2 [unit^2]
+
+  static constexpr TwoLink make(S a1_unit, S a2_unit) {
+    return TwoLink{a1_unit,
+                   a2_unit,
+                   (a1_unit + a2_unit) * (a1_unit + a2_unit),
+                   (a1_unit - a2_unit) * (a1_unit - a2_unit),
+                   a1_unit * a1_unit + a2_unit * a2_unit,
+                   a1_unit * a1_unit - a2_unit * a2_unit};
+  }
+
+  //! Solves for (h, v) [unit] on the given branch. A target outside the
+  //! annulus (a1 - a2)^2 <= D^2 <= (a1 + a2)^2 is replaced by the nearest
+  //! annulus point on the same ray (stretched or folded leg); returns true
+  //! then. ta in (-pi, pi], tb in [-pi, pi]; never NaN.
+  bool solve(S h, S v, KneeBranch branch, S& ta, S& tb) const {
+    const S d2 = h * h + v * v;
+    if (!(d2 < outer2)) {  // stretched; also catches a saturated d2
+      ta = atan2(v, h);
+      tb = S(0);
+      return d2 > outer2;
+    }
+    if (!(d2 > inner2)) {  // folded: the foot sits at (a1 - a2)(cos ta, sin ta)
+      tb = branch == KneeBranch::kNegative ? -pi<S>() : pi<S>();
+      if (h == S(0) && v == S(0)) {
+        ta = S(0);  // any direction is as near
+      } else {
+        ta = a2 > a1 ? atan2(-v, -h) : atan2(v, h);
+      }
+      return d2 < inner2;
+    }
+    const S c = d2 - sum_sq;                          // 2 a1 a2 cos tb
+    S s = sqrt((outer2 - d2) * (d2 - inner2));        // 2 a1 a2 |sin tb|
+    if (branch == KneeBranch::kNegative) s = -s;
+    tb = atan2(s, c);
+    S k1 = d2 + diff_sq;                              // 2 a1 (a1 + a2 cos tb)
+    S k2 = s;                                         // 2 a1 (a2 sin tb)
+    lift_pair(k1, k2);
+    lift_pair(h, v);
+    ta = atan2(v * k1 - h * k2, h * k1 + v * k2);
+    return false;
+  }
+};
+
+//! Picks, for each revolute joint, the representative of its angle (+-2 pi)
+//! that lies inside the limits; if none does, clamps it to the limit that is
+//! nearer around the circle. Returns true when any joint was clamped.
+template <typename S, uint8_t N>
+bool fit_into_limits(const JointLimits<S, N>& lim, JointVector<S, N>& q) {
+  bool moved = false;
+  for (uint8_t i = 0; i < N; ++i) {
+    S a = q[i];
+    if (a < lim.lo[i] && !(lim.hi[i] < a + two_pi<S>())) a += two_pi<S>();
+    if (lim.hi[i] < a && !(a - two_pi<S>() < lim.lo[i])) a -= two_pi<S>();
+    if (a < lim.lo[i] || lim.hi[i] < a) {
+      const S past_hi = wrap_two_pi(a - lim.hi[i]);
+      const S below_lo = wrap_two_pi(lim.lo[i] - a);
+      a = past_hi < below_lo ? lim.hi[i] : lim.lo[i];
+      moved = true;
+    }
+    q[i] = a;
+  }
+  return moved;
+}
+
+//! An angle that is free (e.g. yaw with the foot on the yaw axis): the
+//! preferred value, or the nearest limit when that is outside them. Choosing
+//! it is not a joint-limit hit.
+template <typename S, uint8_t N>
+S free_angle(const JointLimits<S, N>& lim, uint8_t i, S preferred) {
+  return clamp(preferred, lim.lo[i], lim.hi[i]);
+}
+
+//! Joint limits after a solve: clamps sol into them and, when that moved a
+//! joint, recomputes `at` = fk(sol). The status becomes kJointLimit only when
+//! the clamp moved the foot by more than the tolerance (a joint a hair past its
+//! limit, e.g. from rounding at a pose on the limit, is not a limit hit), and
+//! a kOk stays kOk only while the target is still within the tolerance.
+template <typename Leg, typename S>
+IkStatus apply_limits(const Leg& leg, const Vec3<S>& target, typename Leg::Joints& sol, Vec3<S>& at,
+                      IkStatus status, const IkOptions<S>& opt) {
+  if (!leg_ik::fit_into_limits(leg.limits, sol)) return status;
+  const Vec3<S> before = at;
+  at = leg.fk(sol);
+  const bool moved = leg_ik::gap_mm(at, before) > opt.tolerance_mm ||
+                     (status == IkStatus::kOk && leg_ik::gap_mm(at, target) > opt.tolerance_mm);
+  return moved ? worst(status, IkStatus::kJointLimit) : status;
+}
+
+//! The common end of every analytic ik(): status from the miss distance,
+//! joint limits, outputs. sol is the solution for the nearest reachable point;
+//! clamped says whether that point may differ from the target (then its
+//! distance is measured through fk; otherwise the target itself was solved for
+//! exactly and is reported as reached). Outputs are untouched on kUnreachable.
+template <typename Leg, typename S>
+IkStatus finish(const Leg& leg, const Vec3<S>& target, typename Leg::Joints sol, bool clamped,
+                const IkOptions<S>& opt, typename Leg::Joints& q, Vec3<S>& reached) {
+  IkStatus status = IkStatus::kOk;
+  Vec3<S> at = target;
+  if (clamped) {
+    at = leg.fk(sol);
+    status = leg_ik::miss_status(leg_ik::gap_mm(at, target), opt);
+    if (status == IkStatus::kUnreachable) return status;
+  }
+  status = leg_ik::apply_limits(leg, target, sol, at, status, opt);
+  q = sol;
+  reached = at;
+  return status;
+}
+
+}  // namespace leg_ik
+}  // namespace strider
+
+#endif  // STRIDER_KINEMATICS_LEG_IK_COMMON_H

@@ -1,0 +1,77 @@
+//! PlanarLeg: the 2-DOF planar (mammal) leg of seed 003 (Srinivas et al.
+//! 2021): hip pitch t1, knee t2, links a1 and a2 in one vertical plane.
+//!
+//! Frame: seed 003's DH frame 0 (table 2) with Strider's axis names: origin on
+//! the hip axis, x forward, z up, y left. The DH x-y plane is the leg's x-z
+//! plane (DH x = x, DH y = z, DH z = -y; the seed calls the second coordinate
+//! z2), so both joints turn about -y and a positive angle turns a link from +x
+//! toward +z. t1 = t2 = 0: leg straight forward; t1 = -pi/2, t2 = 0: hanging
+//! straight down. FK is eq 3; the foot always has y = 0.
+//!
+//! IK: eq 5 gives |t2| = acos((x^2 + z^2 - a1^2 - a2^2) / (2 a1 a2)); the member
+//! `branch` picks its sign. Eq 4 as printed,
+//!   t1 = atan(z / x) + atan(a2 sin t2 / (a1 + a2 cos t2)),
+//! fed eq 5's t2 = +acos(...), gives the hip angle of the other solution,
+//! t2 = -acos(...) (KneeBranch::kNegative). Check: with a1 = a2 = 1, t1 = 0,
+//! t2 = 90 deg the foot is (1, 1); eq 5 gives 90 deg and eq 4 then 90 deg, and
+//! (90, -90) deg also reaches (1, 1) while (90, 90) deg does not. The consistent
+//! pairs are t1 = atan2(z, x) -+ atan2(a2 sin|t2|, a1 + a2 cos t2) for t2 = +-|t2|.
+//! Default: KneeBranch::kPositive (eq 5's acos, and seed 003's 0 <= t2 limits).
+//! A target off the leg plane (y != 0) is projected onto it, so |y| counts
+//! in the miss distance (kClamped beyond the tolerance).
+#ifndef STRIDER_KINEMATICS_PLANAR_LEG_H
+#define STRIDER_KINEMATICS_PLANAR_LEG_H
+
+#include "../math/vec3.h"
+#include "ik_status.h"
+#include "joints.h"
+#include "leg_ik_common.h"
+
+namespace strider {
+
+template <typename S>
+struct PlanarLeg {
+  static constexpr uint8_t kDof = 2;
+  using Joints = JointVector<S, kDof>;
+
+  S a1_mm;            //!< thigh, hip axis to knee axis [mm]
+  S a2_mm;            //!< shank, knee axis to foot [mm]
+  KneeBranch branch;  //!< sign of the t2 that ik() returns
+  JointLimits<S, kDof> limits;
+  // Filled by make(); do not set by hand.
+  int8_t unit_shift;         //!< working units, see leg_ik_common.h
+  leg_ik::TwoLink<S> link;   //!< a1, a2 in working units
+
+  //! The leg with its cached working-unit constants. Always build legs here.
+  static constexpr PlanarLeg make(S a1, S a2, const JointLimits<S, kDof>& limits,
+                                  KneeBranch branch = KneeBranch::kPositive) {
+    const int8_t n = leg_ik::unit_shift(a1 + a2);
+    return PlanarLeg{a1, a2, branch, limits, n,
+                     leg_ik::TwoLink<S>::make(leg_ik::to_unit(a1, n), leg_ik::to_unit(a2, n))};
+  }
+
+  //! Seed 003 eq 3 (the position column of eq 2's A1 A2).
+  Vec3<S> fk(const Joints& q) const {
+    const S t12 = q[0] + q[1];
+    return Vec3<S>(a1_mm * cos(q[0]) + a2_mm * cos(t12), S(0), a1_mm * sin(q[0]) + a2_mm * sin(t12));
+  }
+
+  //! Seed 003 eqs 4-5 (as one atan2 each, see leg_ik_common.h), then
+  //! reachability and joint limits. Writes q and reached unless kUnreachable.
+  IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+              const IkOptions<S>& opt = IkOptions<S>()) const {
+    const S bound = a1_mm + a2_mm + opt.max_clamp_mm;
+    if (!leg_ik::within(target.x, bound) || !leg_ik::within(target.z, bound) ||
+        !leg_ik::within(target.y, opt.max_clamp_mm))
+      return IkStatus::kUnreachable;
+    Joints sol;
+    bool clamped = link.solve(leg_ik::to_unit(target.x, unit_shift), leg_ik::to_unit(target.z, unit_shift),
+                              branch, sol[0], sol[1]);
+    if (!(target.y == S(0))) clamped = true;  // projected onto the leg plane
+    return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);
+  }
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_KINEMATICS_PLANAR_LEG_H

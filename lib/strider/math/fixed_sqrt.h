@@ -1,0 +1,123 @@
+//! Square root and hypot for Fixed (Q16.16), integer-only and division-free.
+//!
+//! Method (docs/fixed-point.md): normalise the radicand by an even shift into
+//! m in [2^30, 2^32); a 193-node table of sqrt with linear interpolation gives
+//! q within 1 of floor(sqrt(m)); an exact residual m - q^2 (computed modulo
+//! 2^32) fixes q = floor(sqrt(m)); one Newton step with a table reciprocal
+//! adds 11 fraction bits (within 1 of the floor of sqrt(m 2^22)), and hypot
+//! alone pays for a second exact residual. The root is then shifted back
+//! and rounded.
+#ifndef STRIDER_MATH_FIXED_SQRT_H
+#define STRIDER_MATH_FIXED_SQRT_H
+
+#include <stdint.h>
+
+#include "fixed.h"
+#include "fixed_ops.h"
+
+namespace strider {
+namespace detail {
+
+//! sqrt(m) for m in [2^30, 2^32) by linear interpolation in the 193-node
+//! table: within +-1 of floor(sqrt(m)) (test_fixed_sqrt checks both ends of
+//! every 256-wide step of m, which bound it). In [2^15, 2^16].
+STRIDER_ALWAYS_INLINE uint32_t isqrt_table_estimate(uint32_t m) {
+  const uint16_t k = uint16_t((hi16(m) >> 8) - 64U);
+  const uint16_t t0 = flash_u16(FixedTables<>::kSqrt, k);
+  const uint16_t t1 = flash_u16(FixedTables<>::kSqrt, uint16_t(k + 1U));
+  return uint32_t(32768) + t0 + hi16(mul_u16(uint16_t(t1 - t0), uint16_t(m >> 8)));
+}
+
+//! sqrt(m 2^22) for m in [2^30, 2^32), a 27-bit result: the Newton
+//! estimate, within +-1 of the floor; with exact = true the floor itself
+//! (one more residual, ~85 cycles on the AVR).
+inline uint32_t isqrt_q22(uint32_t m, bool exact) {
+  // q = 2^16 squares to 0 modulo 2^32, as uint16_t(q) does: rem stays right.
+  uint32_t q = isqrt_table_estimate(m);
+  int32_t rem = to_signed(m - mul_u16(uint16_t(q), uint16_t(q)));
+  // q is within +-1 of floor(sqrt(m)): one conditional step fixes it.
+  if (rem < 0) {
+    --q;
+    rem += int32_t(2 * q + 1);
+  } else if (rem > int32_t(2 * q)) {
+    rem -= int32_t(2 * q + 1);
+    ++q;
+  }
+  // Now q = floor(sqrt(m)) < 2^16 and 0 <= rem <= 2q. One Newton step:
+  // sqrt(m) - q ~ rem / (2q), in units of 2^-11: rem 2^10 / q.
+  const uint16_t q16 = uint16_t(q);
+  const uint16_t rq = recip_q30(q16, 0);  // 2^30 / q
+  uint16_t frac = uint16_t(hi16(mul_u16(uint16_t(uint32_t(rem) >> 1), rq)) >> 3);
+  if (frac > 2047) frac = 2047;
+  uint32_t root = mul_u16(q16, 2048) + frac;  // q 2^11 + frac
+  if (exact) {
+    // Residual m 2^22 - root^2 = rem 2^22 - q frac 2^12 - frac^2, computed
+    // modulo 2^32 (its true value is below 2^28 in magnitude).
+    const uint32_t rem22 = uint32_t(uint16_t(uint16_t(rem) << 6)) << 16;
+    const int32_t res = to_signed(rem22 - (mul_u16(q16, uint16_t(frac << 4)) << 8) - mul_u16(frac, frac));
+    if (res < 0) {
+      --root;
+    } else if (res > int32_t(2 * root)) {
+      ++root;
+    }
+  }
+  return root;
+}
+
+}  // namespace detail
+
+//! Square root, within 0.63 LSB (correctly rounded for all but ~0.5% of
+//! inputs); 0 for v <= 0.
+inline Fixed sqrt(Fixed v) {
+  if (v.raw() <= 0) return Fixed();
+  uint32_t m = uint32_t(v.raw());
+  const uint8_t s = detail::normalize_even(m);
+  // root ~ sqrt(u 2^(22 + s)); sqrt(u 2^16) = root / 2^(3 + s/2), rounded.
+  // The root's +-1 moves the result by at most 1/8 LSB.
+  const uint32_t root = detail::isqrt_q22(m, false);
+  return Fixed::from_raw(int32_t(detail::shr_round(root, uint8_t(3 + s / 2))));
+}
+
+//! sqrt(a^2 + b^2) without overflow of the squares; saturates at max().
+//! Within 1 LSB while max(|a|, |b|) < 1024; above that within 2^-26
+//! relative (docs/fixed-point.md gives the measured bounds).
+inline Fixed hypot(Fixed a, Fixed b) {
+  uint32_t hi = detail::abs_u32(a.raw());
+  uint32_t lo = detail::abs_u32(b.raw());
+  if (lo > hi) {
+    const uint32_t t = hi;
+    hi = lo;
+    lo = t;
+  }
+  if (hi == 0) return Fixed();
+  if (hi >= 0x80000000UL) return Fixed::max();  // |a| = 32768 already overflows
+  // Scale by 2^s so that hi lies in [2^30, 2^31); then (H^2 + L^2) / 2^32
+  // from 16-bit halves: Hh^2 + Lh^2 + (Hh Hl + Lh Ll) / 2^15 + (Hl^2 + Ll^2) / 2^32.
+  uint8_t s = 0;
+  if (hi < 0x8000UL) { hi <<= 16; lo <<= 16; s = 16; }
+  if (hi < 0x800000UL) { hi <<= 8; lo <<= 8; s = uint8_t(s + 8); }
+  if (hi < 0x8000000UL) { hi <<= 4; lo <<= 4; s = uint8_t(s + 4); }
+  if (hi < 0x20000000UL) { hi <<= 2; lo <<= 2; s = uint8_t(s + 2); }
+  if (hi < 0x40000000UL) { hi <<= 1; lo <<= 1; s = uint8_t(s + 1); }
+  const uint16_t hh = detail::hi16(hi), hl = uint16_t(hi);
+  const uint16_t lh = detail::hi16(lo), ll = uint16_t(lo);
+  // mid + 2^14 < 2^32 since hh < 2^15; its / 2^15 is built from bytes.
+  const uint32_t mid = detail::mul_u16(hh, hl) + detail::mul_u16(lh, ll) + uint32_t(0x4000);
+  const uint32_t mid_q15 = (uint32_t(detail::hi16(mid)) << 1) | (uint16_t(mid) >> 15);
+  const uint8_t hl8 = uint8_t(hl >> 8), ll8 = uint8_t(ll >> 8);
+  const uint16_t low = detail::hi16(detail::mul_u16(hl8, hl8) + detail::mul_u16(ll8, ll8));  // 0 or 1
+  uint32_t t = detail::mul_u16(hh, hh) + detail::mul_u16(lh, lh) + mid_q15 + low;
+  // t in [2^28, 2^31]: the result is sqrt(t) 2^16 / 2^s.
+  const uint8_t e = detail::normalize_even(t);
+  const uint8_t k = uint8_t(s + e / 2);  // result = root 2^(5 - k)
+  // Below k = 5 the root has fewer fraction bits than the result: centre it.
+  const uint32_t root = detail::isqrt_q22(t, k <= 5);  // exact where it is the result
+  const uint32_t h = k >= 6 ? detail::shr_round(root, uint8_t(k - 5))
+                     : k == 5 ? root
+                              : ((2 * root + 1) << (4 - k));
+  return h >= 0x80000000UL ? Fixed::max() : Fixed::from_raw(int32_t(h));
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_MATH_FIXED_SQRT_H

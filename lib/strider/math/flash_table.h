@@ -1,0 +1,43 @@
+//! Constant tables that live in flash on the AVR and in ordinary read-only
+//! memory on the host.
+//!
+//! The ATmega2560 has 8 KB of RAM and 256 KB of flash: a table declared
+//! `const` alone is copied into RAM at start-up, so tables carry
+//! STRIDER_PROGMEM and are read through flash_u16(), which is pgm_read_word
+//! on the AVR and a plain load on the host. PROGMEM data is placed in the
+//! first 64 KB of flash by avr-libc's linker script, which is what the 16-bit
+//! pgm_read_word can address.
+#ifndef STRIDER_MATH_FLASH_TABLE_H
+#define STRIDER_MATH_FLASH_TABLE_H
+
+#include <stdint.h>
+
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+#define STRIDER_PROGMEM PROGMEM
+#else
+#define STRIDER_PROGMEM
+#endif
+
+// Small helpers that must be inlined even at -Os, where avr-gcc would
+// otherwise call them (a call costs more than their body on the AVR).
+#if defined(__GNUC__)
+#define STRIDER_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define STRIDER_ALWAYS_INLINE inline
+#endif
+
+namespace strider {
+
+//! table[i] of a uint16_t table declared with STRIDER_PROGMEM.
+STRIDER_ALWAYS_INLINE uint16_t flash_u16(const uint16_t* table, uint16_t i) {
+#if defined(__AVR__)
+  return pgm_read_word(table + i);
+#else
+  return table[i];
+#endif
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_MATH_FLASH_TABLE_H

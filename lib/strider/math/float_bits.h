@@ -1,0 +1,44 @@
+//! IEEE-754 bit access for float: sign, magnitude, NaN and ordering tests as
+//! integer operations.
+//!
+//! On the AVR every float comparison is a library call (~50 cycles) while a
+//! 32-bit integer comparison takes 4; the float functions of Strider make
+//! their branch decisions on the bits. For non-negative floats (and +inf)
+//! the order of the bit patterns is the order of the values; NaN patterns
+//! lie above +inf.
+#ifndef STRIDER_MATH_FLOAT_BITS_H
+#define STRIDER_MATH_FLOAT_BITS_H
+
+#include <stdint.h>
+#include <string.h>
+
+namespace strider {
+namespace detail {
+
+constexpr uint32_t kFloatSignBit = 0x80000000UL;
+constexpr uint32_t kFloatMagMask = 0x7FFFFFFFUL;
+constexpr uint32_t kFloatInfBits = 0x7F800000UL;  //!< +inf; larger magnitudes are NaN
+constexpr uint32_t kFloatOneBits = 0x3F800000UL;  //!< 1.0f
+constexpr uint32_t kFloatHalfBits = 0x3F000000UL; //!< 0.5f
+
+inline uint32_t float_bits(float f) {
+  uint32_t u;
+  memcpy(&u, &f, sizeof u);
+  return u;
+}
+
+inline float bits_float(uint32_t u) {
+  float f;
+  memcpy(&f, &u, sizeof f);
+  return f;
+}
+
+//! The bits of |f| (sign cleared).
+inline uint32_t magnitude_bits(float f) { return float_bits(f) & kFloatMagMask; }
+
+inline bool is_nan_bits(uint32_t mag) { return mag > kFloatInfBits; }
+
+}  // namespace detail
+}  // namespace strider
+
+#endif  // STRIDER_MATH_FLOAT_BITS_H

@@ -1,0 +1,53 @@
+//! ServoPart: the hobby servos the built-in robots use, with the datasheet
+//! figures a model, a gait planner or the simulator needs.
+//!
+//! Values are the makers' published figures (Tower Pro SG90, MG90S, MG995,
+//! MG996R; Hitec HS-311). Where a sheet quotes two supply voltages, the 6 V
+//! figure is taken: every Strider robot runs its servos from a 5-6 V BEC.
+//! Travel: all five turn about 180 deg with a 500-2500 us pulse; the makers'
+//! "operating angle" (often quoted as 90 or 120 deg) is for 1000-2000 us only.
+//! Pulses are nominal: per-servo calibration (trim, direction) corrects them.
+#ifndef STRIDER_ROBOTS_SERVO_PARTS_H
+#define STRIDER_ROBOTS_SERVO_PARTS_H
+
+#include <stdint.h>
+
+namespace strider {
+
+enum class ServoPart : uint8_t {
+  kSg90 = 0,    //!< Tower Pro SG90, 9 g micro servo, plastic gears
+  kMg90s = 1,   //!< Tower Pro MG90S, 13.4 g micro servo, metal gears
+  kMg995 = 2,   //!< Tower Pro MG995, 55 g standard servo, metal gears
+  kMg996r = 3,  //!< Tower Pro MG996R, 55 g standard servo, metal gears
+  kHs311 = 4    //!< Hitec HS-311, 43 g standard servo, nylon gears
+};
+
+constexpr uint8_t kServoPartCount = 5;
+
+//! Datasheet figures of one servo part.
+struct ServoSpec {
+  const char* name;         //!< part name as sold
+  float travel_deg;         //!< full mechanical travel for the pulse range [deg]
+  uint16_t min_pulse_us;    //!< pulse at one end of the travel [us]
+  uint16_t max_pulse_us;    //!< pulse at the other end [us]
+  float stall_torque_kg_cm; //!< stall torque at 6 V [kg cm]
+  float speed_s_per_60deg;  //!< no-load speed at 6 V [s / 60 deg]
+  float mass_g;             //!< [g]
+};
+
+//! The figures of a part (6 V values, see the file comment).
+constexpr ServoSpec servo_spec(ServoPart part) {
+  // SG90: 1.8 kg cm and 0.1 s/60 deg are its 4.8 V figures (no 6 V rating).
+  return part == ServoPart::kSg90     ? ServoSpec{"SG90", 180.0f, 500, 2500, 1.8f, 0.10f, 9.0f}
+         : part == ServoPart::kMg90s  ? ServoSpec{"MG90S", 180.0f, 500, 2500, 2.2f, 0.08f, 13.4f}
+         : part == ServoPart::kMg995  ? ServoSpec{"MG995", 180.0f, 500, 2500, 10.0f, 0.16f, 55.0f}
+         : part == ServoPart::kMg996r ? ServoSpec{"MG996R", 180.0f, 500, 2500, 11.0f, 0.14f, 55.0f}
+                                      : ServoSpec{"HS-311", 180.0f, 500, 2500, 3.7f, 0.15f, 43.0f};
+}
+
+//! Top speed of a part [deg/s] (60 deg over its no-load time).
+constexpr float servo_speed_deg_s(ServoPart part) { return 60.0f / servo_spec(part).speed_s_per_60deg; }
+
+}  // namespace strider
+
+#endif  // STRIDER_ROBOTS_SERVO_PARTS_H
