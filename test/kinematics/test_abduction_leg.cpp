@@ -74,8 +74,9 @@ RefIk ref_ik(LegSide side, const Eigen::Vector3d& p) {
   const double big_r = std::hypot(p.x(), zp);                                        // 4.12
   const double r_c = std::min(kLb + kLc, std::max(kLb - kLc, big_r));
   const double r1 = big_r > 0 ? wrap_2pi(std::atan2(-zp, -p.x())) : kPi / 2;
-  const double r2 = std::acos(std::max(-1.0, std::min(1.0, (kLb * kLb + r_c * r_c - kLc * kLc) / (2 * kLb * r_c))));  // 4.15
-  const double r3 = std::acos(std::max(-1.0, std::min(1.0, (kLb * kLb + kLc * kLc - r_c * r_c) / (2 * kLb * kLc))));  // 4.16
+  auto acos_clamped = [](double c) { return std::acos(std::max(-1.0, std::min(1.0, c))); };
+  const double r2 = acos_clamped((kLb * kLb + r_c * r_c - kLc * kLc) / (2 * kLb * r_c));  // 4.15
+  const double r3 = acos_clamped((kLb * kLb + kLc * kLc - r_c * r_c) / (2 * kLb * kLc));  // 4.16
   r.q[1] = r1 - r2;  // 4.17
   r.q[2] = kPi - r3;  // 4.21
   r.nearest = ref_fk(side, r.q);

@@ -16,9 +16,14 @@ using strider_test::Xorshift;
 
 namespace {
 
-constexpr double kAtan2AbsError = 3e-5;     // [rad] the brief's bound
-constexpr double kAsinAcosAbsError = 6e-5;  // [rad] the brief's bound
-constexpr int32_t kPiRaw = 205887, kHalfPiRaw = 102944, kQuarterPiRaw = 51472;
+// Required: atan2 3e-5, asin/acos 6e-5 [rad]. The design gives 0.5 LSB final
+// rounding + 0.13 LSB table + 0.08 LSB chord + the ratio (< 0.01 LSB); the
+// tests hold it to that, so a regression inside the requirement still fails.
+constexpr double kAtan2AbsError = 0.75 * strider_test::kLsb;
+constexpr double kAsinAcosAbsError = 0.75 * strider_test::kLsb;
+static_assert(kAtan2AbsError <= 3e-5 && kAsinAcosAbsError <= 6e-5, "design bounds within the requirement");
+// round(pi 2^16), round(pi/2 2^16), round(pi/4 2^16), round(3 pi/4 2^16).
+constexpr int32_t kPiRaw = 205887, kHalfPiRaw = 102944, kQuarterPiRaw = 51472, kThreeQuarterPiRaw = 154416;
 
 double atan2_error(int32_t y, int32_t x) {
   const long double exact = std::atan2(static_cast<long double>(y), static_cast<long double>(x));
@@ -46,9 +51,10 @@ TEST(FixedAtan2, EdgeTable) {
   EXPECT_EQ(at(-one, 0), -kHalfPiRaw);
   EXPECT_EQ(at(0, -one), kPiRaw);
   EXPECT_EQ(at(one, one), kQuarterPiRaw);
-  EXPECT_EQ(at(-one, -one), -(kPiRaw - kQuarterPiRaw) - 0);
+  EXPECT_EQ(at(-one, -one), -kThreeQuarterPiRaw);
   EXPECT_EQ(at(Fixed::kMaxRaw, Fixed::kMaxRaw), kQuarterPiRaw);
-  EXPECT_EQ(at(Fixed::kMinRaw, Fixed::kMinRaw), -(kPiRaw - kQuarterPiRaw));
+  EXPECT_EQ(at(Fixed::kMinRaw, Fixed::kMinRaw), -kThreeQuarterPiRaw);
+  EXPECT_EQ(at(one, -one), kThreeQuarterPiRaw);
   EXPECT_EQ(at(Fixed::kMinRaw, 0), -kHalfPiRaw);
   EXPECT_EQ(at(0, Fixed::kMinRaw), kPiRaw);
   EXPECT_EQ(at(1, Fixed::kMaxRaw), 0);         // tiny over huge

@@ -2,6 +2,7 @@
 // roots, dense sweeps against long double, edge tables, symmetry.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -18,9 +19,11 @@ namespace {
 // and the result drops at least 3 of those bits, so 0.5 + 1/8 LSB.
 constexpr double kSqrtErrorLsb = 0.625;
 constexpr double kSqrtMaxNotRoundedShare = 0.01;  // results 1 LSB from correct rounding
-// hypot: within 1 LSB while max(|a|, |b|) < 1024, relative 2^-26 above.
-constexpr double kHypotErrorLsb = 1.0;
+// hypot: within 1 LSB while max(|a|, |b|) < 1024 (design: 0.5 rounding +
+// 0.25 Newton root + the dropped low products), relative 2^-26 above.
+constexpr double kHypotErrorLsb = 0.8;
 constexpr double kHypotRelError = 1.5e-8;
+constexpr double kHypotSmallLimit = 1024.0 * 65536.0;  // [raw]
 
 uint64_t isqrt_u64(uint64_t n) {
   uint64_t r = static_cast<uint64_t>(std::sqrt(static_cast<long double>(n)));
@@ -57,16 +60,32 @@ TEST(FixedSqrtTables, RecipTableMatchesItsFormula) {
   }
 }
 
+// The interpolated reciprocal over every 16-bit head and a spread of tails.
+TEST(FixedSqrtTables, InterpolatedReciprocalWithinTwoToMinus13) {
+  MaxError err("recip_q30 relative error", false);
+  for (uint32_t h16 = 0x8000; h16 <= 0xFFFF; ++h16) {
+    for (uint32_t f8 : {0u, 1u, 77u, 128u, 200u, 255u}) {
+      const double h = static_cast<double>((h16 << 16) | (f8 << 8));
+      const double exact = std::ldexp(1.0, 46) / h;
+      const double got = strider::detail::recip_q30(static_cast<uint16_t>(h16), static_cast<uint8_t>(f8));
+      err.add((got - exact) / exact, static_cast<double>(h16), static_cast<double>(f8));
+    }
+  }
+  err.expect_below(std::ldexp(1.0, -13));
+}
+
 // The interpolated estimate is constant over each 256-wide step of m while
 // floor(sqrt(m)) is monotone, so the two ends of every step bound the error:
 // this covers all 3 * 2^30 normalised radicands.
 TEST(FixedSqrtCore, TableEstimateWithinOneOfFloorForEveryRadicand) {
   int worst_low = 0, worst_high = 0;
+  uint64_t floor_root = 1u << 15;  // floor(sqrt(m)), advanced as m grows
   for (uint32_t step = 1u << 22; step < (1u << 24); ++step) {
     for (uint32_t low : {0u, 255u}) {
       const uint32_t m = (step << 8) | low;
+      while ((floor_root + 1) * (floor_root + 1) <= m) ++floor_root;
       const int64_t q = strider::detail::isqrt_table_estimate(m);
-      const int64_t diff = q - static_cast<int64_t>(isqrt_u64(m));
+      const int64_t diff = q - static_cast<int64_t>(floor_root);
       worst_low = std::min<int>(worst_low, static_cast<int>(diff));
       worst_high = std::max<int>(worst_high, static_cast<int>(diff));
     }
@@ -76,26 +95,28 @@ TEST(FixedSqrtCore, TableEstimateWithinOneOfFloorForEveryRadicand) {
   EXPECT_LE(worst_high, 1);
 }
 
-// floor(sqrt(m 2^22)) with exact = true; the Newton estimate within 1.
+// The Newton root is within 1 of floor(sqrt(m 2^22)); the exact variant is
+// floor(sqrt(m 2^24)).
 TEST(FixedSqrtCore, NewtonRootWithinOneAndExactRootIsTheFloor) {
   Xorshift rng(2024);
   int worst = 0;
   auto check = [&](uint32_t m) {
-    const uint64_t floor_root = isqrt_u64(static_cast<uint64_t>(m) << 22);
-    ASSERT_EQ(strider::detail::isqrt_q22(m, true), floor_root) << m;
-    const int diff = static_cast<int>(static_cast<int64_t>(strider::detail::isqrt_q22(m, false)) -
-                                      static_cast<int64_t>(floor_root));
+    const uint64_t floor22 = isqrt_u64(static_cast<uint64_t>(m) << 22);
+    const uint64_t floor24 = isqrt_u64(static_cast<uint64_t>(m) << 24);
+    ASSERT_EQ(strider::detail::isqrt_q24_floor(m), floor24) << m;
+    const int diff = static_cast<int>(static_cast<int64_t>(strider::detail::isqrt_q22(m)) - static_cast<int64_t>(floor22));
     worst = std::max(worst, std::abs(diff));
   };
   for (int i = 0; i < STRIDER_RANDOM_CASES * 500; ++i) check(rng.next() | 0x40000000u);
-  // Radicands next to perfect squares of the 27-bit root, where the floor
-  // is hardest to get right.
+  // Radicands next to perfect squares of the root, where the floor is
+  // hardest to get right.
   for (int i = 0; i < STRIDER_RANDOM_CASES * 50; ++i) {
-    const uint64_t r = (1u << 26) + rng.next() % ((1u << 27) - (1u << 26));
-    const uint64_t sq = r * r;
-    for (int64_t d : {-1, 0, 1}) {
-      const uint64_t m = ((sq >> 22) + static_cast<uint64_t>(d));
-      if (m >= (1u << 30) && m <= 0xFFFFFFFFu) check(static_cast<uint32_t>(m));
+    const uint64_t r = (1u << 27) + rng.next() % ((1u << 28) - (1u << 27));
+    for (uint64_t sq : {r * r, r * r + r}) {  // on a root and half-way to the next one
+      for (int64_t d : {-1, 0, 1}) {
+        const uint64_t m = (sq >> 24) + static_cast<uint64_t>(d);
+        if (m >= (1u << 30) && m <= 0xFFFFFFFFu) check(static_cast<uint32_t>(m));
+      }
     }
   }
   check(0x40000000u);
@@ -193,7 +214,7 @@ TEST(FixedHypot, DenseSweepWithinBound) {
     }
     const double e = static_cast<double>(got - exact);
     const double m = std::max(std::fabs(static_cast<double>(a)), std::fabs(static_cast<double>(b)));
-    if (m < 1024.0 * 65536.0) {
+    if (m < kHypotSmallLimit) {
       small.add(e * strider_test::kLsb, a, b);
     } else {
       large.add(e / static_cast<double>(exact), a, b);

@@ -16,7 +16,11 @@ using strider_test::Xorshift;
 
 namespace {
 
-constexpr double kFloatInvTrigError = 2e-6;  // [rad] the brief's bound
+// Required: 2e-6 rad. The minimax errors are 1.1e-7 (atan), 2e-8 (asin),
+// 4e-8 (acos) plus float rounding of a result near pi (ulp 2.4e-7); the tests
+// hold the functions to 5e-7.
+constexpr double kFloatInvTrigError = 5e-7;
+static_assert(kFloatInvTrigError <= 2e-6, "design bound within the requirement");
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
 constexpr double kPi = 3.14159265358979323846;

@@ -2,6 +2,7 @@
 #include <ostream>
 
 #include "args.h"
+#include "cmd_gait.h"
 #include "commands.h"
 
 namespace strider_cli {
@@ -17,7 +18,8 @@ std::string usage_text() {
          "  fk --robot R --leg I --joints a,b[,c] [--frame leg|body]\n"
          "      foot position [mm] for joint angles [deg]\n"
          "  ik --robot R --leg I (--foot x,y,z | --stdin) [--frame leg|body] [--scalar float|fixed]\n"
-         "      joint angles [deg] for a foot position [mm]; --stdin answers one 'x y z' per line\n"
+         "      joint angles [deg] for a foot position [mm]; --stdin answers one 'x y z' per line\n" +
+         gait_usage_text() +
          "  help\n"
          "      this text\n"
          "\n"
@@ -47,6 +49,8 @@ int run(const Args& args, std::istream& in, std::ostream& out, std::ostream& err
     if (command == "legs") return cmd_legs(rest, out);
     if (command == "fk") return cmd_fk(rest, out);
     if (command == "ik") return cmd_ik(rest, in, out);
+    if (command == "gait") return cmd_gait(rest, out, err);
+    if (command == "gaits") return cmd_gaits(rest, out);
     throw UsageError("unknown command '" + command + "'");
   } catch (const UsageError& e) {
     out.flush();

@@ -16,13 +16,14 @@
 //! foot indices in counter-clockwise order plus each edge's length: feet on
 //! the ground move rigidly with respect to the body, so neither changes until
 //! the next lift-off or touch-down. Per tick, margin() and constrain() cost a
-//! few products per edge and no division (except constrain() along x only).
+//! few products per edge and no division (except constrain() along x only,
+//! one per edge).
 //! Fixed works in units of 2^shift mm so squares of body-sized distances fit.
 #ifndef STRIDER_GAIT_STABILITY_H
 #define STRIDER_GAIT_STABILITY_H
 
-#include "../kinematics/leg_ik_common.h"
 #include "../robots/robot_model.h"
+#include "gait_units.h"
 
 namespace strider {
 
@@ -69,6 +70,16 @@ class SupportPolygon {
       const S len = sqrt(e.x * e.x + e.y * e.y);
       inv_len_[k] = len > S(0) ? S(1) / len : S(0);
     }
+    // Shrinking by d moves vertex k (edges k-1 in, k out) to a_k + d n_k + s u_k
+    // on both shrunk lines: n_{k-1} . (d n_k + s u_k) = d gives
+    // s = d (1 - n_{k-1} . n_k) / (n_{k-1} . u_k), a constant of the shape.
+    for (uint8_t k = 0; count_ >= 3 && k < count_; ++k) {
+      const uint8_t j = uint8_t((k + count_ - 1) % count_);
+      const Vec3<S> uk = edge(feet, k) * inv_len_[k], uj = edge(feet, j) * inv_len_[j];
+      const S nn = uj.x * uk.x + uj.y * uk.y;  // n_j . n_k = u_j . u_k
+      const S nu = uj.x * uk.y - uj.y * uk.x;  // n_j . u_k = cross(u_j, u_k) > 0
+      corner_[k] = nu > S(0) ? (S(1) - nn) / nu : S(0);
+    }
   }
 
   uint8_t size() const { return count_; }        //!< hull vertices
@@ -86,63 +97,54 @@ class SupportPolygon {
       if (d < S(0)) is_inside = false;
       if (k == 0 || d < inside) inside = d;
     }
-    if (is_inside) return radius_ + leg_ik::from_unit(inside, shift_);
+    if (is_inside) return radius_ + gait_units::from_unit(inside, shift_);
     S best = S(0);
     for (uint8_t k = 0; k < count_; ++k) {
       const S d = segment_distance(feet, k, p);
       if (k == 0 || d < best) best = d;
       if (count_ <= 2) break;  // one segment (or one point)
     }
-    return radius_ - leg_ik::from_unit(best, shift_);
+    return radius_ - gait_units::from_unit(best, shift_);
   }
 
-  //! Moves the point (x, y) [mm] to where its margin is at least want_mm,
-  //! close to where it was: alternating projections onto the half-planes of
-  //! the shrunken region, 4 sweeps (continuous in the feet and the point).
-  //! With x_only the point moves along x only (legs that cannot step
-  //! sideways), to the nearest x the half-planes allow. The region used: the
-  //! foot-centre polygon shrunk by max(want - r, 0) for 3 or more feet; for
-  //! two feet the part of their strip of half-width r - want between them.
+  //! Moves the point (x, y) [mm] to the nearest point whose margin is at
+  //! least want_mm (continuous in the feet and the point). The region: the
+  //! foot-centre polygon shrunk by max(want - r, 0) for 3 or more feet (its
+  //! corners come from corner_ factors cached by build(): no division per
+  //! tick); for two feet, the rectangle between them of half-width r - want
+  //! (inside the strip of their pads); one foot: the foot. With x_only the
+  //! point moves along x only (legs that cannot step sideways), to the
+  //! nearest x the region allows on its line y (the middle if none does).
   void constrain(const Vec3<S>* feet, S& x_mm, S& y_mm, S want_mm, bool x_only) const {
     if (count_ == 0) return;
-    Plane planes[kMaxLegs];
-    const uint8_t n = half_planes(feet, unit(want_mm), planes);
-    S x = unit(x_mm), y = unit(y_mm);
-    if (!x_only) {
-      for (uint8_t sweep = 0; sweep < 4; ++sweep)
-        for (uint8_t k = 0; k < n; ++k) {
-          const S gap = planes[k].c - (planes[k].nx * x + planes[k].ny * y);
-          if (gap > S(0)) {
-            x += gap * planes[k].nx;
-            y += gap * planes[k].ny;
-          }
-        }
-    } else {
-      S lo = S(0), hi = S(0);
-      bool has_lo = false, has_hi = false;
+    Vec3<S> v[kMaxLegs], u[kMaxLegs];
+    S len[kMaxLegs];
+    const uint8_t n = region(feet, unit(want_mm), v, u, len);
+    const Vec3<S> p(unit(x_mm), unit(y_mm), S(0));
+    Vec3<S> q = p;
+    if (n == 1) {
+      q = x_only ? Vec3<S>(v[0].x, p.y, S(0)) : v[0];
+    } else if (x_only) {
+      q.x = p.x + along_x(v, u, n, p);
+    } else if (!inside(v, u, n, p)) {
+      S best = S(0);
       for (uint8_t k = 0; k < n; ++k) {
-        const S nx = planes[k].nx;
-        if (abs(nx) < scalar<S>(0.05)) continue;  // an edge along x: no x fixes it
-        const S t = (planes[k].c - (nx * x + planes[k].ny * y)) / nx;
-        if (nx > S(0)) { if (!has_lo || t > lo) lo = t; has_lo = true; }
-        else { if (!has_hi || t < hi) hi = t; has_hi = true; }
+        const Vec3<S> r = p - v[k];
+        const S t = clamp(r.x * u[k].x + r.y * u[k].y, S(0), max_of(len[k], S(0)));
+        const Vec3<S> c(v[k].x + u[k].x * t, v[k].y + u[k].y * t, S(0));
+        const S d2 = (p.x - c.x) * (p.x - c.x) + (p.y - c.y) * (p.y - c.y);
+        if (k == 0 || d2 < best) {
+          best = d2;
+          q = c;
+        }
       }
-      S t = S(0);
-      if (has_lo && has_hi && hi < lo) t = (lo + hi) * scalar<S>(0.5);  // empty: the middle
-      else if (has_lo && lo > S(0)) t = lo;
-      else if (has_hi && hi < S(0)) t = hi;
-      x += t;
     }
-    x_mm = leg_ik::from_unit(x, shift_);
-    y_mm = leg_ik::from_unit(y, shift_);
+    x_mm = gait_units::from_unit(q.x, shift_);
+    y_mm = gait_units::from_unit(q.y, shift_);
   }
 
  private:
-  struct Plane {
-    S nx, ny, c;  //!< n . p >= c, |n| = 1 [unit]
-  };
-
-  S unit(S mm) const { return leg_ik::to_unit(mm, shift_); }
+  S unit(S mm) const { return gait_units::to_unit(mm, shift_); }
   Vec3<S> at(const Vec3<S>* feet, uint8_t i) const { return Vec3<S>(unit(feet[i].x), unit(feet[i].y), S(0)); }
   Vec3<S> edge(const Vec3<S>* feet, uint8_t k) const {
     return at(feet, idx_[(k + 1) % count_]) - at(feet, idx_[k]);
@@ -170,41 +172,82 @@ class SupportPolygon {
     const S t = clamp((r.x * e.x + r.y * e.y) * inv_len_[k] * inv_len_[k], S(0), S(1));
     return hypot(r.x - e.x * t, r.y - e.y * t);
   }
-  //! The half-planes of the region with margin >= want [unit].
-  uint8_t half_planes(const Vec3<S>* feet, S want, Plane* out) const {
+  //! The region with margin >= want [unit] as a convex polygon, counter-
+  //! clockwise: vertices v, unit edge directions u, edge lengths len (a
+  //! negative length: the region is empty there). Returns the vertex count.
+  uint8_t region(const Vec3<S>* feet, S want, Vec3<S>* v, Vec3<S>* u, S* len) const {
     const S r = unit(radius_);
-    if (count_ == 1) {  // a square around the foot, inside its disc
-      const Vec3<S> a = at(feet, idx_[0]);
-      const S w = max_of(r - want, S(0)) * scalar<S>(0.7071);
-      out[0] = Plane{S(1), S(0), a.x - w};
-      out[1] = Plane{-S(1), S(0), -a.x - w};
-      out[2] = Plane{S(0), S(1), a.y - w};
-      out[3] = Plane{S(0), -S(1), -a.y - w};
-      return 4;
+    if (count_ == 1) {
+      v[0] = at(feet, idx_[0]);
+      return 1;
     }
-    if (count_ == 2) {  // the strip between the two feet
+    if (count_ == 2) {  // the rectangle between the two feet
       const Vec3<S> a = at(feet, idx_[0]), b = at(feet, idx_[1]);
       const Vec3<S> e = (b - a) * inv_len_[0];
       const S w = max_of(r - want, S(0));
-      const S na = -e.y * a.x + e.x * a.y;  // n = (-e.y, e.x)
-      out[0] = Plane{-e.y, e.x, na - w};
-      out[1] = Plane{e.y, -e.x, -na - w};
-      out[2] = Plane{e.x, e.y, e.x * a.x + e.y * a.y};
-      out[3] = Plane{-e.x, -e.y, -(e.x * b.x + e.y * b.y)};
+      const Vec3<S> nw(-e.y * w, e.x * w, S(0));  // left normal, half-width long
+      const Vec3<S> n(-e.y, e.x, S(0));
+      v[0] = a - nw;
+      v[1] = b - nw;
+      v[2] = b + nw;
+      v[3] = a + nw;
+      u[0] = e;
+      u[1] = n;
+      u[2] = -e;
+      u[3] = -n;
+      len[0] = len[2] = S(1) / inv_len_[0];
+      len[1] = len[3] = w + w;
       return 4;
     }
     const S shrink = max_of(want - r, S(0));
     for (uint8_t k = 0; k < count_; ++k) {
-      const Vec3<S> a = at(feet, idx_[k]);
-      const Vec3<S> e = edge(feet, k) * inv_len_[k];
-      out[k] = Plane{-e.y, e.x, -e.y * a.x + e.x * a.y + shrink};
+      u[k] = edge(feet, k) * inv_len_[k];
+      const Vec3<S> nk(-u[k].y, u[k].x, S(0));
+      v[k] = at(feet, idx_[k]) + (nk + u[k] * corner_[k]) * shrink;
+    }
+    for (uint8_t k = 0; k < count_; ++k) {
+      const Vec3<S> d = v[(k + 1) % count_] - v[k];
+      len[k] = d.x * u[k].x + d.y * u[k].y;
     }
     return count_;
+  }
+
+  static bool inside(const Vec3<S>* v, const Vec3<S>* u, uint8_t n, const Vec3<S>& p) {
+    for (uint8_t k = 0; k < n; ++k) {
+      const Vec3<S> r = p - v[k];
+      if (u[k].x * r.y - u[k].y * r.x < S(0)) return false;
+    }
+    return true;
+  }
+
+  //! The x move that brings p into the region along its line y: the nearest
+  //! end of the allowed interval (0 inside; the interval's middle if empty).
+  static S along_x(const Vec3<S>* v, const Vec3<S>* u, uint8_t n, const Vec3<S>& p) {
+    S lo = S(0), hi = S(0);
+    bool has_lo = false, has_hi = false;
+    for (uint8_t k = 0; k < n; ++k) {
+      // Inside edge k: u.x (y - v.y) - u.y (x + t - v.x) = c - u.y t >= 0.
+      const S c = u[k].x * (p.y - v[k].y) - u[k].y * (p.x - v[k].x);
+      if (abs(u[k].y) < scalar<S>(0.05)) continue;  // an edge along x: no x move helps
+      const S t = c / u[k].y;
+      if (u[k].y < S(0)) {  // t >= c / u.y
+        if (!has_lo || t > lo) lo = t;
+        has_lo = true;
+      } else {  // t <= c / u.y
+        if (!has_hi || t < hi) hi = t;
+        has_hi = true;
+      }
+    }
+    if (has_lo && has_hi && hi < lo) return (lo + hi) * scalar<S>(0.5);
+    if (has_lo && lo > S(0)) return lo;
+    if (has_hi && hi < S(0)) return hi;
+    return S(0);
   }
 
   uint8_t count_ = 0;
   uint8_t idx_[kMaxLegs] = {};
   S inv_len_[kMaxLegs] = {};
+  S corner_[kMaxLegs] = {};  //!< vertex k of the shrunk polygon: a_k + d (n_k + corner_k u_k)
   S radius_ = S(0);
   int8_t shift_ = 0;
 };

@@ -3,12 +3,13 @@
 //! motion; plus the optional stance depth (the foot pressed a little into
 //! the ground mid-stance, as CHAMP does).
 //!
-//! Per tick the body moves by d = v dt [mm] (in the body frame at the start
-//! of the tick) and turns by theta = w_z dt [rad]. A ground point p of the
-//! old body frame is then at p' = Rz(-theta) (p - d) in the new one. theta
-//! is small (below 0.2 rad per tick for every command the limits allow), so
-//! cos and sin come from their Taylor series to the 5th power (error below
-//! 1e-7): no trig call per tick.
+//! Per tick the body moves at a constant body-frame velocity v [mm/s] while
+//! turning at w_z [rad/s] for dt: it turns by theta = w_z dt and moves by the
+//! arc d = dt (A v + B J v) of its old frame (J: a quarter turn, A =
+//! sin(theta)/theta, B = (1 - cos theta)/theta). A ground point p of the old
+//! body frame is then at p' = Rz(-theta) (p - d) in the new one. theta is
+//! small, so every trigonometric factor comes from its Taylor series (no trig
+//! call per tick): the step is exact to below 1e-7 of its length.
 #ifndef STRIDER_GAIT_STANCE_H
 #define STRIDER_GAIT_STANCE_H
 
@@ -25,6 +26,14 @@ void small_angle_cos_sin(S a, S& c, S& s) {
   s = a * (S(1) - a2 * (scalar<S>(1.0 / 6.0) - a2 * scalar<S>(1.0 / 120.0)));
 }
 
+//! sin(a)/a and (1 - cos a)/a of a small angle [rad] (series as above).
+template <typename S>
+void small_angle_arc(S a, S& sinc, S& cosc) {
+  const S a2 = a * a;
+  sinc = S(1) - a2 * (scalar<S>(1.0 / 6.0) - a2 * scalar<S>(1.0 / 120.0));
+  cosc = a * (scalar<S>(0.5) - a2 * (scalar<S>(1.0 / 24.0) - a2 * scalar<S>(1.0 / 720.0)));
+}
+
 //! The body's motion over one tick, seen from the body.
 template <typename S>
 struct BodyStep {
@@ -36,12 +45,15 @@ struct BodyStep {
 
   static BodyStep none() { return BodyStep{S(0), S(0), S(0), S(1), S(0)}; }
 
-  //! The step of a body moving at (vx, vy) [mm/s] and turning at wz [rad/s]
-  //! for dt [s].
+  //! The step of a body moving at (vx, vy) [mm/s] (its own frame) and
+  //! turning at wz [rad/s] for dt [s]: the arc d = dt (A v + B J v).
   static BodyStep make(S vx, S vy, S wz, S dt) {
-    BodyStep b{vx * dt, vy * dt, wz * dt, S(1), S(0)};
-    small_angle_cos_sin(b.dyaw, b.cos_yaw, b.sin_yaw);
-    return b;
+    const S th = wz * dt;
+    S a, b;
+    small_angle_arc(th, a, b);
+    BodyStep st{(a * vx - b * vy) * dt, (a * vy + b * vx) * dt, th, S(1), S(0)};
+    small_angle_cos_sin(th, st.cos_yaw, st.sin_yaw);
+    return st;
   }
 
   //! A ground-fixed point [mm] of the old body frame in the new one:
@@ -64,15 +76,20 @@ S stance_sink_mm(S depth_mm, S sigma) {
 }
 
 //! Where a foot touches down so that its stance is centred on `home` [mm]:
-//! home moved forward by half the stride the body makes during a stance of
-//! stance_s [s], i.e. Rz(w stance/2) home + v stance/2 (the rotation by its
-//! series; exact for a pure translation).
+//! a stance of stance_s [s] at (vx, vy, wz) is a turn by theta = wz stance_s
+//! about the instantaneous centre c = (-vy, vx) / wz, so the foot lands at
+//! home turned about c by theta / 2: Rz(theta/2) home + (I - Rz(theta/2)) c,
+//! and (I - R) c = stance/2 (A v + B J v) with A, B of theta/2 as in
+//! BodyStep (exact for a pure translation, no division by wz).
 template <typename S>
 Vec3<S> touchdown_point(const Vec3<S>& home, S vx, S vy, S wz, S stance_s) {
   const S half = stance_s * scalar<S>(0.5);
-  S c, s;
-  small_angle_cos_sin(wz * half, c, s);
-  return Vec3<S>(c * home.x - s * home.y + vx * half, s * home.x + c * home.y + vy * half, home.z);
+  const S alpha = wz * half;
+  S c, s, a, b;
+  small_angle_cos_sin(alpha, c, s);
+  small_angle_arc(alpha, a, b);
+  return Vec3<S>(c * home.x - s * home.y + (a * vx - b * vy) * half,
+                 s * home.x + c * home.y + (a * vy + b * vx) * half, home.z);
 }
 
 }  // namespace strider

@@ -24,18 +24,22 @@
 //! one atan2. In the leg plane the foot is at xp = x and d = p: the seed's eqs
 //! 4.12-4.21 use z for -d, which is only right when t1 = 0 (or pi). Then
 //! R = sqrt(x^2 + p^2) (4.12), R1 = angle of the hip-foot line from backward
-//! (4.13 for x > 0), R2 = acos((Lb^2 + R^2 - Lc^2) / (2 Lb R)) (4.15; the seed
+//! (4.13 for x > 0, on both sides: w mirrors a right leg's plane, so eq 4.14's
+//! right-leg variant is not needed), R2 = acos((Lb^2 + R^2 - Lc^2) / (2 Lb R)) (4.15; the seed
 //! prints "- L_c" for "- L_c^2"), R3 = acos((Lb^2 + Lc^2 - R^2) / (2 Lb Lc))
 //! (4.16), t2 = R1 - R2 in (-pi, pi] (4.17), t3 = pi - R3 (4.21): the two-link
-//! problem of leg_ik_common.h on the positive branch, without acos.
+//! problem of two_link.h on the positive branch, without acos.
 //!
 //! Seed 001's math_error_handler: a foot inside the abduction cylinder
-//! (A < La) is moved out to A = La, then the two-link clamp applies; on the
-//! abduction axis (A = 0) t1 takes the side's standing value. Either way the
-//! miss distance decides kClamped or kUnreachable. No asin/acos is evaluated.
+//! (A < La) is moved out to A = La, then the two-link clamp applies in the
+//! leg plane of that t1 (the nearest reachable point, except within |Lb - Lc|
+//! of the hip where turning t1 could come nearer); on the abduction axis
+//! (A = 0) t1 takes the side's standing value. The miss distance decides
+//! kClamped or kUnreachable. No asin/acos is evaluated.
 //! t1 is reported in [0, 2 pi) unless the joint limits ask for another
 //! representative (e.g. a left leg limited to [-30, 30] deg gets -10 deg, not
-//! 350 deg).
+//! 350 deg). Fixed: keep max_clamp_mm below Lb + Lc - La (the working units of
+//! A^2 would saturate beyond; never NaN, but the clamped point is then rough).
 //!
 //! Seed 001's DH product (eqs 3.2-3.6) puts La in line with the femur, which
 //! contradicts the 90 deg of its IK and figure 2; Strider follows the IK.
@@ -46,6 +50,7 @@
 #include "ik_status.h"
 #include "joints.h"
 #include "leg_ik_common.h"
+#include "two_link.h"
 
 namespace strider {
 
@@ -119,13 +124,18 @@ struct AbductionLeg {
       sol[0] = side == LegSide::kLeft ? atan2(lz + py, ly - pz) : atan2(lz - py, ly + pz);
     } else {
       clamped = p_sq < S(0);  // inside the abduction cylinder: La points at the foot
-      sol[0] = a_sq > S(0) ? atan2(z, y) : leg_ik::free_angle(limits, 0, standing_t1());
+      const bool on_axis = target.y == S(0) && target.z == S(0);
+      sol[0] = on_axis ? leg_ik::free_angle(limits, 0, standing_t1()) : atan2(target.z, target.y);
     }
-    sol[0] = wrap_two_pi(sol[0]);  // algorithm 1
-    if (!(sol[0] < two_pi<S>())) sol[0] = S(0);  // -tiny + 2 pi rounds to 2 pi
-    // In the leg plane: backward = -x, down = d = p (the seed's -z).
+    if (sol[0] < S(0)) {  // algorithm 1's range [0, 2 pi); atan2 gave (-pi, pi]
+      sol[0] += two_pi<S>();
+      if (!(sol[0] < two_pi<S>())) sol[0] = S(0);  // -tiny + 2 pi rounds to 2 pi
+    }
+    // In the leg plane: backward = -x, down = d = p (the seed's -z), and
+    // D^2 = x^2 + p^2 with p^2 already at hand (fine units^2 -> units^2).
     const S back = leg_ik::to_unit(-target.x, unit_shift);
-    if (link.solve(back, leg_ik::to_unit(p, kFineBits), KneeBranch::kPositive, sol[1], sol[2])) clamped = true;
+    const S d2 = back * back + leg_ik::to_unit(p_sq > S(0) ? p_sq : S(0), int8_t(2 * kFineBits));
+    if (link.solve(back, leg_ik::to_unit(p, kFineBits), d2, KneeBranch::kPositive, sol[1], sol[2])) clamped = true;
     return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);
   }
 };

@@ -29,6 +29,7 @@
 #include "ik_status.h"
 #include "joints.h"
 #include "leg_ik_common.h"
+#include "two_link.h"
 
 namespace strider {
 
@@ -45,13 +46,15 @@ struct CoxaFemurTibiaLeg {
   JointLimits<S, kDof> limits;
   // Filled by make(); do not set by hand.
   int8_t unit_shift;        //!< working units, see leg_ik_common.h
+  S coxa_unit;              //!< l1 in working units
+  S reach_mm;               //!< l2 + l3 [mm]
   leg_ik::TwoLink<S> link;  //!< femur and tibia in working units
 
   //! The leg with its cached working-unit constants. Always build legs here.
   static constexpr CoxaFemurTibiaLeg make(S d1, S coxa, S femur, S tibia, const JointLimits<S, kDof>& limits,
                                           KneeBranch branch = KneeBranch::kNegative) {
     const int8_t n = leg_ik::unit_shift(femur + tibia);
-    return CoxaFemurTibiaLeg{d1, coxa, femur, tibia, branch, limits, n,
+    return CoxaFemurTibiaLeg{d1, coxa, femur, tibia, branch, limits, n, leg_ik::to_unit(coxa, n), femur + tibia,
                              leg_ik::TwoLink<S>::make(leg_ik::to_unit(femur, n), leg_ik::to_unit(tibia, n))};
   }
 
@@ -66,40 +69,47 @@ struct CoxaFemurTibiaLeg {
   //! joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
-    const S bound_xy = coxa_mm + femur_mm + tibia_mm + opt.max_clamp_mm;
-    const S bound_z = femur_mm + tibia_mm + opt.max_clamp_mm;
+    const S bound_z = reach_mm + opt.max_clamp_mm;
+    const S bound_xy = coxa_mm + bound_z;
     if (!leg_ik::within(target.x, bound_xy) || !leg_ik::within(target.y, bound_xy) ||
         !leg_ik::within(target.z - d1_mm, bound_z))
       return IkStatus::kUnreachable;
+    const S x = leg_ik::to_unit(target.x, unit_shift);
+    const S y = leg_ik::to_unit(target.y, unit_shift);
+    const S v = leg_ik::to_unit(target.z - d1_mm, unit_shift);  // eq 11, row 2
     Joints sol;
-    S rho = S(0);  // [mm]
+    S rho = S(0);  // [unit]
     if (target.x == S(0) && target.y == S(0)) {
       sol[0] = leg_ik::free_angle(limits, 0, S(0));  // on the yaw axis
     } else {
       sol[0] = atan2(target.y, target.x);  // eq 12
-      rho = leg_ik::hypot(target.x, target.y);
+      const S rho2 = x * x + y * y;
+      // Near the axis a Fixed square loses the digits that matter: hypot.
+      rho = leg_ik::tiny_square(rho2) ? leg_ik::to_unit(leg_ik::hypot(target.x, target.y), unit_shift) : sqrt(rho2);
     }
-    S h = leg_ik::to_unit(rho - coxa_mm, unit_shift);  // eq 11, row 1
-    const S v = leg_ik::to_unit(target.z - d1_mm, unit_shift);  // eq 11, row 2
-    if (coxa_mm > S(0) && rho > S(0) && h * h + v * v < link.inner2) {
-      const S h_far = leg_ik::to_unit(-rho - coxa_mm, unit_shift);
-      if (far_side_is_nearer(h, h_far, v)) {
+    S h = rho - coxa_unit;  // eq 11, row 1
+    S d2 = h * h + v * v;
+    if (d2 < link.inner2 && coxa_unit > S(0) && rho > S(0)) {
+      const S h_far = -rho - coxa_unit;
+      const S d2_far = h_far * h_far + v * v;
+      if (far_side_is_nearer(d2, d2_far)) {
         h = h_far;
+        d2 = d2_far;
         sol[0] = wrap_pi(sol[0] + pi<S>());
       }
     }
-    const bool clamped = link.solve(h, v, branch, sol[1], sol[2]);
+    const bool clamped = link.solve(h, v, d2, branch, sol[1], sol[2]);
     return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);
   }
 
  private:
   // The target is inside the hole of the femur-tibia annulus on the near side
-  // (h = rho - l1). Facing away (h = -rho - l1), is it nearer the annulus?
-  bool far_side_is_nearer(S h_near, S h_far, S v) const {
-    const S d2_far = h_far * h_far + v * v;
+  // (h = rho - l1, D^2 = d2). Facing away (h = -rho - l1), is it nearer the
+  // annulus? [unit^2]
+  bool far_side_is_nearer(S d2_near, S d2_far) const {
     if (!(d2_far > link.outer2)) return true;
-    const S miss_near = abs(link.a1 - link.a2) - leg_ik::hypot(h_near, v);
-    const S miss_far = leg_ik::hypot(h_far, v) - (link.a1 + link.a2);
+    const S miss_near = abs(link.a1 - link.a2) - sqrt(d2_near);
+    const S miss_far = sqrt(d2_far) - (link.a1 + link.a2);
     return miss_far < miss_near;
   }
 };

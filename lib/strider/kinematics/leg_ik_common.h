@@ -1,12 +1,13 @@
 //! Building blocks shared by the analytic leg solvers (sprawl, planar,
-//! coxa/femur/tibia, abduction): the knee branch, working units that keep
-//! Fixed from overflowing, the planar two-link problem, revolute joint limits
-//! and the status of a missed target.
+//! coxa/femur/tibia, abduction): working units that keep Fixed from
+//! overflowing, overflow-free lengths, revolute joint limits, and the common
+//! end of ik() (status of a missed target, limits, outputs). The planar
+//! two-link problem is in two_link.h.
 //!
 //! Working units: Fixed (Q16.16) overflows above 32767, so a 280 mm link
 //! cannot be squared in millimetres. Each leg picks a power of two 2^n (its
 //! "unit shift") that brings its two main links into [4, 8) units, where the
-//! two-link solver's largest product, (2 a1 a2 sin)^2, stays below 4096 and
+//! two-link solver's largest product, (2 a1 a2 sin)^2, stays below 1024 and
 //! one unit keeps 16 fraction bits (2^(n-16) mm: 0.002 mm for a 557 mm leg).
 //! Shifts are exact for lengths with few fraction bits and cost no multiply.
 //! Lengths of small vectors (a foot near an axis, a miss distance) use
@@ -15,18 +16,14 @@
 #ifndef STRIDER_KINEMATICS_LEG_IK_COMMON_H
 #define STRIDER_KINEMATICS_LEG_IK_COMMON_H
 
+#include <math.h>
+#include <string.h>
+
 #include "../math/vec3.h"
 #include "ik_status.h"
 #include "joints.h"
 
 namespace strider {
-
-//! Which of the two elbow-up/elbow-down solutions a two-link IK returns: the
-//! sign of the knee joint angle.
-enum class KneeBranch : uint8_t {
-  kPositive = 0,  //!< knee angle in [0, pi]
-  kNegative = 1   //!< knee angle in [-pi, 0]
-};
 
 namespace leg_ik {
 
@@ -42,16 +39,35 @@ constexpr int8_t unit_shift(Fixed length) {
   return n;
 }
 
-//! Millimetres to working units, and back (saturating for Fixed).
+//! Millimetres to working units, and back (saturating for Fixed). Going
+//! down is a rounded right shift (half away from zero, like scaled_pow2).
 constexpr float to_unit(float v_mm, int8_t) { return v_mm; }
-constexpr Fixed to_unit(Fixed v_mm, int8_t shift) { return v_mm.scaled_pow2(-shift); }
+constexpr Fixed to_unit(Fixed v_mm, int8_t shift) {
+  return shift <= 0 ? v_mm.scaled_pow2(-shift)
+                    : Fixed::from_raw(v_mm.raw() < 0 ? -int32_t(((Fixed::abs_raw(v_mm.raw()) >> (shift - 1)) + 1u) >> 1)
+                                                     : int32_t(((uint32_t(v_mm.raw()) >> (shift - 1)) + 1u) >> 1));
+}
 constexpr float from_unit(float v, int8_t) { return v; }
 constexpr Fixed from_unit(Fixed v, int8_t shift) { return v.scaled_pow2(shift); }
 
-//! True when |v| <= bound; false for NaN and infinities, so every solver's
-//! first test also rejects non-finite float targets.
-template <typename S>
-bool within(S v, S bound) { return abs(v) <= bound; }
+//! The first test of every solver: false when a target coordinate is so far
+//! out (|v| > bound [mm], the leg's reach plus max_clamp) that the target is
+//! unreachable anyway, and for NaN and infinities. Fixed tests the bound
+//! exactly (it keeps the squares that follow from saturating). Float only
+//! needs finite, not absurd values (|v| < 2^15 mm): one integer test of the
+//! exponent instead of a ~100-cycle compare, and the miss distance decides
+//! the rest.
+inline bool within(float v, float) {
+  uint32_t bits;
+  memcpy(&bits, &v, sizeof bits);
+  return (bits & 0x7F800000ul) < (uint32_t(127 + 15) << 23);
+}
+inline bool within(Fixed v, Fixed bound) { return abs(v) <= bound; }
+
+//! Whether a sum of squares [unit^2] is too small for its square root to keep
+//! Fixed's precision (a length under 1/4 unit); then use hypot(). Never for float.
+constexpr bool tiny_square(float) { return false; }
+constexpr bool tiny_square(Fixed sq) { return sq < Fixed(0.0625); }
 
 //! sqrt(x^2 + y^2) and |v| without overflow or loss of precision for any
 //! magnitude. Fixed: the operands are shifted so the larger lies in [32, 64)
@@ -104,66 +120,6 @@ IkStatus miss_status(S miss_mm, const IkOptions<S>& opt) {
   return miss_mm > opt.tolerance_mm ? IkStatus::kClamped : IkStatus::kOk;
 }
 
-//! The planar two-link problem in working units:
-//!   (h, v) = a1 (cos ta, sin ta) + a2 (cos(ta + tb), sin(ta + tb)).
-//! Law of cosines with every quantity multiplied by 2 a1 a2 so that no
-//! reciprocal is needed (seed 003 eqs 4-5, seed 002 eqs 8-11):
-//!   2 a1 a2 cos tb = D^2 - a1^2 - a2^2,
-//!   2 a1 a2 |sin tb| = sqrt(((a1 + a2)^2 - D^2) (D^2 - (a1 - a2)^2)),
-//! which stays accurate near the stretched and folded boundaries, and
-//!   ta = atan2(v, h) - atan2(a2 sin tb, a1 + a2 cos tb)
-//! as a single atan2 by the angle-difference identity.
-template <typename S>
-struct TwoLink {
-  S a1;        //!< first link [unit]
-  S a2;        //!< second link [unit]
-  S outer2;    //!< (a1 + a2)^2 [unit^2]
-  S inner2;    //!< (a1 - a2)^2 [unit^2]
-  S sum_sq;    //!< a1^2 + a2^2 [unit^2]
-  S diff_sq;   //!< a1^2 - a2^2 [unit^2]
-
-  static constexpr TwoLink make(S a1_unit, S a2_unit) {
-    return TwoLink{a1_unit,
-                   a2_unit,
-                   (a1_unit + a2_unit) * (a1_unit + a2_unit),
-                   (a1_unit - a2_unit) * (a1_unit - a2_unit),
-                   a1_unit * a1_unit + a2_unit * a2_unit,
-                   a1_unit * a1_unit - a2_unit * a2_unit};
-  }
-
-  //! Solves for (h, v) [unit] on the given branch. A target outside the
-  //! annulus (a1 - a2)^2 <= D^2 <= (a1 + a2)^2 is replaced by the nearest
-  //! annulus point on the same ray (stretched or folded leg); returns true
-  //! then. ta in (-pi, pi], tb in [-pi, pi]; never NaN.
-  bool solve(S h, S v, KneeBranch branch, S& ta, S& tb) const {
-    const S d2 = h * h + v * v;
-    if (!(d2 < outer2)) {  // stretched; also catches a saturated d2
-      ta = atan2(v, h);
-      tb = S(0);
-      return d2 > outer2;
-    }
-    if (!(d2 > inner2)) {  // folded: the foot sits at (a1 - a2)(cos ta, sin ta)
-      tb = branch == KneeBranch::kNegative ? -pi<S>() : pi<S>();
-      if (h == S(0) && v == S(0)) {
-        ta = S(0);  // any direction is as near
-      } else {
-        ta = a2 > a1 ? atan2(-v, -h) : atan2(v, h);
-      }
-      return d2 < inner2;
-    }
-    const S c = d2 - sum_sq;                          // 2 a1 a2 cos tb
-    S s = sqrt((outer2 - d2) * (d2 - inner2));        // 2 a1 a2 |sin tb|
-    if (branch == KneeBranch::kNegative) s = -s;
-    tb = atan2(s, c);
-    S k1 = d2 + diff_sq;                              // 2 a1 (a1 + a2 cos tb)
-    S k2 = s;                                         // 2 a1 (a2 sin tb)
-    lift_pair(k1, k2);
-    lift_pair(h, v);
-    ta = atan2(v * k1 - h * k2, h * k1 + v * k2);
-    return false;
-  }
-};
-
 //! Picks, for each revolute joint, the representative of its angle (+-2 pi)
 //! that lies inside the limits; if none does, clamps it to the limit that is
 //! nearer around the circle. Returns true when any joint was clamped.
@@ -172,8 +128,15 @@ bool fit_into_limits(const JointLimits<S, N>& lim, JointVector<S, N>& q) {
   bool moved = false;
   for (uint8_t i = 0; i < N; ++i) {
     S a = q[i];
-    if (a < lim.lo[i] && !(lim.hi[i] < a + two_pi<S>())) a += two_pi<S>();
-    if (lim.hi[i] < a && !(a - two_pi<S>() < lim.lo[i])) a -= two_pi<S>();
+    if (a < lim.lo[i]) {
+      a += two_pi<S>();
+      if (lim.hi[i] < a) a = q[i];
+    } else if (lim.hi[i] < a) {
+      a -= two_pi<S>();
+      if (a < lim.lo[i]) a = q[i];
+    } else {
+      continue;  // the common case: inside
+    }
     if (a < lim.lo[i] || lim.hi[i] < a) {
       const S past_hi = wrap_two_pi(a - lim.hi[i]);
       const S below_lo = wrap_two_pi(lim.lo[i] - a);

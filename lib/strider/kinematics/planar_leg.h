@@ -26,6 +26,7 @@
 #include "ik_status.h"
 #include "joints.h"
 #include "leg_ik_common.h"
+#include "two_link.h"
 
 namespace strider {
 
@@ -56,7 +57,7 @@ struct PlanarLeg {
     return Vec3<S>(a1_mm * cos(q[0]) + a2_mm * cos(t12), S(0), a1_mm * sin(q[0]) + a2_mm * sin(t12));
   }
 
-  //! Seed 003 eqs 4-5 (as one atan2 each, see leg_ik_common.h), then
+  //! Seed 003 eqs 4-5 (as one atan2 each, see two_link.h), then
   //! reachability and joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {

@@ -13,8 +13,8 @@
 //! knee circle (rho = a1, z = 0) the shank direction is undefined and the
 //! target is unreachable.
 //!
-//! Lengths come from leg_ik::hypot (overflow-free in Fixed), so the plain
-//! aggregate {a1_mm, a2_mm, limits} needs no cached constants.
+//! Squares are taken in working units (leg_ik_common.h) chosen per call, so
+//! the plain aggregate {a1_mm, a2_mm, limits} needs no cached constants.
 #ifndef STRIDER_KINEMATICS_SPRAWL_LEG_H
 #define STRIDER_KINEMATICS_SPRAWL_LEG_H
 
@@ -53,28 +53,37 @@ struct SprawlLeg {
     if (!leg_ik::within(target.x, bound_xy) || !leg_ik::within(target.y, bound_xy) ||
         !leg_ik::within(target.z, a2_mm + opt.max_clamp_mm))
       return IkStatus::kUnreachable;  // farther than max_clamp from the torus
+    // Working units per call (leg_ik_common.h), so the aggregate needs no cache.
+    const int8_t n = leg_ik::unit_shift(a1_mm + a2_mm);
+    const S x = leg_ik::to_unit(target.x, n), y = leg_ik::to_unit(target.y, n), z = leg_ik::to_unit(target.z, n);
+    const S a1 = leg_ik::to_unit(a1_mm, n), a2 = leg_ik::to_unit(a2_mm, n);
     Joints sol;
     S rho = S(0);
     if (target.x == S(0) && target.y == S(0)) {
       sol[0] = leg_ik::free_angle(limits, 0, S(0));  // on the yaw axis
     } else {
       sol[0] = atan2(target.y, target.x);  // eq 7
-      rho = leg_ik::hypot(target.x, target.y);
+      const S rho2 = x * x + y * y;
+      // Near the axis a Fixed square loses the digits that matter: hypot.
+      rho = leg_ik::tiny_square(rho2) ? leg_ik::to_unit(leg_ik::hypot(target.x, target.y), n) : sqrt(rho2);
     }
-    S dr = rho - a1_mm;
-    if (dr == S(0) && target.z == S(0)) return IkStatus::kUnreachable;  // on the knee circle
-    const S knee_dist = leg_ik::hypot(dr, target.z);
-    S miss = abs(knee_dist - a2_mm);
-    if (knee_dist < a2_mm && rho > S(0)) {
-      const S dr_far = -rho - a1_mm;  // facing away: the target is behind the yaw axis
-      const S miss_far = abs(leg_ik::hypot(dr_far, target.z) - a2_mm);
+    S dr = rho - a1;
+    if (dr == S(0) && z == S(0)) return IkStatus::kUnreachable;  // on the knee circle
+    const S knee2 = dr * dr + z * z;
+    S miss = abs(sqrt(knee2) - a2);
+    if (knee2 < a2 * a2 && rho > S(0)) {
+      const S dr_far = -rho - a1;  // facing away: the target is behind the yaw axis
+      const S miss_far = abs(sqrt(dr_far * dr_far + z * z) - a2);
       if (miss_far < miss) {
         dr = dr_far;
         miss = miss_far;
         sol[0] = wrap_pi(sol[0] + pi<S>());
       }
     }
-    sol[1] = atan2(target.z, dr);  // eq 8
+    S zl = z;
+    leg_ik::lift_pair(dr, zl);  // keeps the digits of a foot near the knee circle
+    sol[1] = atan2(zl, dr);  // eq 8
+    miss = leg_ik::from_unit(miss, n);
     IkStatus status = leg_ik::miss_status(miss, opt);
     if (status == IkStatus::kUnreachable) return status;
     Vec3<S> at = fk(sol);

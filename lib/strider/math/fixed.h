@@ -195,7 +195,7 @@ class Fixed {
         : "r0");
     if ((hi >> 16) != 0) return 0xFFFFFFFFu;
     const uint32_t mid = (hi << 16) | (lo >> 16);
-    return ((lo >> 15) & 1u) ? add_sat_u(mid, 1u) : mid;
+    return (lo & 0x8000u) ? add_sat_u(mid, 1u) : mid;
   }
 #endif
   static constexpr int32_t shl_sat(int32_t v, int n) {

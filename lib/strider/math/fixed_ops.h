@@ -62,18 +62,18 @@ STRIDER_ALWAYS_INLINE int32_t to_signed(uint32_t u) {
 STRIDER_ALWAYS_INLINE uint32_t abs_u32(int32_t v) { return v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v); }
 
 //! x >> n for n in [0, 31]: whole bytes, then at most 7 single-bit steps.
-inline uint32_t shr_var(uint32_t x, uint8_t n) {
+STRIDER_ALWAYS_INLINE uint32_t shr_var(uint32_t x, uint8_t n) {
   if (n & 16) x >>= 16;
   if (n & 8) x >>= 8;
   return x >> (n & 7);
 }
 
 //! round(x / 2^n) for n in [1, 31], halves rounded up.
-inline uint32_t shr_round(uint32_t x, uint8_t n) { return (shr_var(x, uint8_t(n - 1)) + 1) >> 1; }
+STRIDER_ALWAYS_INLINE uint32_t shr_round(uint32_t x, uint8_t n) { return (shr_var(x, uint8_t(n - 1)) + 1) >> 1; }
 
 //! Shifts u (!= 0) left by the even count s that brings it into
 //! [2^30, 2^32) and returns s.
-inline uint8_t normalize_even(uint32_t& u) {
+STRIDER_ALWAYS_INLINE uint8_t normalize_even(uint32_t& u) {
   uint8_t s = 0;
   if (u < 0x10000UL) { u <<= 16; s = 16; }
   if (u < 0x1000000UL) { u <<= 8; s = uint8_t(s + 8); }
@@ -83,7 +83,7 @@ inline uint8_t normalize_even(uint32_t& u) {
 }
 
 //! Shifts hi (!= 0) and lo <= hi left together until bit 31 of hi is set.
-inline void normalize_pair(uint32_t& hi, uint32_t& lo) {
+STRIDER_ALWAYS_INLINE void normalize_pair(uint32_t& hi, uint32_t& lo) {
   if (hi < 0x10000UL) { hi <<= 16; lo <<= 16; }
   if (hi < 0x1000000UL) { hi <<= 8; lo <<= 8; }
   if (hi < 0x10000000UL) { hi <<= 4; lo <<= 4; }
@@ -93,7 +93,7 @@ inline void normalize_pair(uint32_t& hi, uint32_t& lo) {
 
 //! 2^30 / (h / 2^16) = 2^46 / h for h16 = h / 2^16 in [2^15, 2^16) and
 //! f8 = the next 8 bits of h: a value in [2^14, 2^15] from a 129-node table
-//! with linear interpolation. Relative error below 2^-14; the callers refine
+//! with linear interpolation. Relative error below 2^-13; the callers refine
 //! the quotients it gives with an exact residual.
 STRIDER_ALWAYS_INLINE uint16_t recip_q30(uint16_t h16, uint8_t f8) {
   const uint16_t j = uint16_t((h16 >> 8) - 128U);

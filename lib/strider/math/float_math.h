@@ -39,9 +39,9 @@ inline float cos(float a) { return detail::is_finite(a) ? ::cosf(a) : 0.0f; }
 inline float hypot(float a, float b) {
   const uint32_t ma = detail::magnitude_bits(a), mb = detail::magnitude_bits(b);
   if (detail::is_nan_bits(ma) || detail::is_nan_bits(mb)) return 0.0f;
-  const float hi = detail::bits_float(ma > mb ? ma : mb);
-  const float lo = detail::bits_float(ma > mb ? mb : ma);
   const uint32_t hi_bits = ma > mb ? ma : mb;
+  const float hi = detail::bits_float(hi_bits);
+  const float lo = detail::bits_float(ma > mb ? mb : ma);
   if (hi_bits == 0 || hi_bits == detail::kFloatInfBits) return hi;
   // Squares overflow above 2^64 and lose bits below 2^-63: scale there.
   if (hi_bits > 0x5D800000UL || hi_bits < 0x21800000UL) {  // 2^60, 2^-60
@@ -62,7 +62,9 @@ constexpr float kTwoPiHiF = 6.28125f;
 constexpr float kTwoPiLoF = 1.9353071795864769e-3f;
 
 //! wrap_pi for float: (-pi, pi] with pi = pi<float>(); bounded time (no
-//! loop); NaN and infinities give 0.
+//! loop); NaN and infinities give 0. Within 1e-6 rad for |a| <= 1e4; the
+//! reduction keeps ~1e-6 relative accuracy up to |a| = 4e5 and is only as
+//! good as the float input beyond.
 inline float wrap_pi_impl(float a) {
   const uint32_t mag = magnitude_bits(a);
   if (mag >= kFloatInfBits) return 0.0f;  // NaN or infinite
@@ -73,7 +75,7 @@ inline float wrap_pi_impl(float a) {
       const float n = float(int32_t((float_bits(k) & kFloatSignBit) ? k - 0.5f : k + 0.5f));
       r = (a - n * kTwoPiHiF) - n * kTwoPiLoF;
     } else {
-      r = ::fmodf(a, kTwoPiF);  // exact remainder, in (-2 pi, 2 pi)
+      r = ::fmodf(a, kTwoPiF);  // exact remainder of float(2 pi), in (-2 pi, 2 pi)
     }
   }
   // r is in [-3 pi, 3 pi]: one exact (Sterbenz) step lands in (-pi, pi].

@@ -1,0 +1,78 @@
+//! BodyShift: how a statically stable gait (walk, crawl) moves the body over
+//! its feet so that the CoM stays inside the support polygon with a margin
+//! (seed 003 section 3; seed 000 section 3.3: "the body moves forward, which
+//! keeps the robot balanced").
+//!
+//! The shift s is a horizontal offset of the body [mm] added to its pose;
+//! the CoM's ground point is ref + s (ref: the CoM with no shift).
+//! - While legs are in the air: s = c(P) - ref, where P is the support
+//!   polygon of the feet down and c() moves ref into P's region with at
+//!   least the wanted margin (SupportPolygon::constrain: the smallest move,
+//!   so the body still travels at the commanded velocity along the edge that
+//!   binds: on a crawl's support diagonal it moves diagonally, as the seed
+//!   describes).
+//! - While every foot is down (the window before the next swing group lifts):
+//!   s blends from its value at the window's start to the shift the next
+//!   swing will need, evaluated for the support polygon that will remain and
+//!   for the CoM reference where it will be at lift-off (ref + v dt), with a
+//!   smoothstep of the window's phase. Both ends match the swing formula, so
+//!   s is continuous.
+//! - Every tick s moves at most max_step toward that target (per axis).
+#ifndef STRIDER_GAIT_BODY_SHIFT_H
+#define STRIDER_GAIT_BODY_SHIFT_H
+
+#include "stability.h"
+
+namespace strider {
+
+template <typename S>
+class BodyShift {
+ public:
+  S x_mm() const { return x_; }
+  S y_mm() const { return y_; }
+
+  void reset() { x_ = y_ = from_x_ = from_y_ = S(0); }
+
+  //! The shift [mm] that moves `ref` [mm] into `poly`'s region with margin
+  //! `want_mm` (along x only with x_only).
+  static void correction(const SupportPolygon<S>& poly, const Vec3<S>* feet, S ref_x, S ref_y, S want_mm,
+                         bool x_only, S& sx, S& sy) {
+    S px = ref_x, py = ref_y;
+    poly.constrain(feet, px, py, want_mm, x_only);
+    sx = px - ref_x;
+    sy = py - ref_y;
+  }
+
+  //! Marks the start of a four-foot window: the blend starts from here.
+  void begin_window() {
+    from_x_ = x_;
+    from_y_ = y_;
+  }
+
+  //! The window's blend at progress t in [0, 1] toward (to_x, to_y).
+  void window_target(S t, S to_x, S to_y, S& tx, S& ty) const {
+    const S k = smoothstep(t);
+    tx = from_x_ + (to_x - from_x_) * k;
+    ty = from_y_ + (to_y - from_y_) * k;
+  }
+
+  //! Moves toward (tx, ty) by at most max_step_mm per axis.
+  void step_toward(S tx, S ty, S max_step_mm) {
+    x_ += clamp(tx - x_, -max_step_mm, max_step_mm);
+    y_ += clamp(ty - y_, -max_step_mm, max_step_mm);
+  }
+
+  //! 3 t^2 - 2 t^3 on [0, 1]: zero slope at both ends.
+  static S smoothstep(S t) {
+    t = clamp(t, S(0), S(1));
+    return t * t * (S(3) - S(2) * t);
+  }
+
+ private:
+  S x_ = S(0), y_ = S(0);
+  S from_x_ = S(0), from_y_ = S(0);
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_BODY_SHIFT_H

@@ -1,0 +1,83 @@
+//! GaitConfig: everything the gait engine needs about one robot, in the
+//! scalar S, built once at configuration time from the robot model, its gait
+//! defaults (gait_params.h) and its legs (the velocity limits need IK).
+#ifndef STRIDER_GAIT_GAIT_CONFIG_H
+#define STRIDER_GAIT_GAIT_CONFIG_H
+
+#include "gait_params.h"
+#include "velocity_limits.h"
+
+namespace strider {
+
+template <typename S>
+struct GaitConfig {
+  uint8_t leg_count = 0;
+  Vec3<S> home[kMaxLegs];       //!< standing feet, body frame [mm]
+  SwingShape shape = SwingShape::kEllipse;
+  S step_height_mm = S(0);      //!< swing apex [mm]
+  S stance_depth_mm = S(0);     //!< [mm]
+  S foot_radius_mm = S(0);      //!< foot pads [mm]
+  S com_x_mm = S(0);            //!< CoM, body frame [mm]
+  S com_y_mm = S(0);
+  S margin_mm = S(0);           //!< body shift's target margin [mm]
+  S shift_budget_mm = S(0);     //!< reach kept for the shift [mm]
+  S sit_drop_mm = S(0);         //!< [mm]
+  S transition_s = S(1);        //!< stand-up / sit-down time [s]
+  S accel_mm_s2 = S(0);         //!< command ramp, translation [mm/s^2]
+  S yaw_accel_rad_s2 = S(0);    //!< command ramp, yaw [rad/s^2]
+  S shift_speed_mm_s = S(0);    //!< fastest body shift [mm/s]
+  S target_speed_mm_s = S(0);   //!< fastest move of a swinging foot's touch-down point [mm/s]
+  S pose_speed_mm_s = S(0);     //!< fastest change of the body pose offset [mm/s]
+  S pose_rate_rad_s = S(0);     //!< fastest change of the body rotation [rad/s]
+  S home_tolerance_mm = S(0);   //!< a foot this close to home needs no final step [mm]
+  bool shift_x_only = false;    //!< planar legs: the body can only shift along x
+  uint8_t min_support = 2;      //!< never lift a foot if fewer would stay down
+  int8_t unit_shift = 0;        //!< working units of the support polygon (stability.h)
+  VelocityLimits<S> limits;
+};
+
+//! Builds the configuration of `model` with `legs` (AnyLeg::from_model for
+//! every leg) and gait defaults `params`, for swing shape `shape`. Costs a few
+//! thousand IK calls (velocity limits): call it at start-up, not per tick.
+template <typename S>
+GaitConfig<S> make_gait_config(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
+                               SwingShape shape) {
+  GaitConfig<S> c;
+  c.leg_count = model.leg_count;
+  S reach = S(0);
+  for (uint8_t i = 0; i < model.leg_count; ++i) {
+    c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
+    reach = max_of(reach, max_of(abs(c.home[i].x), abs(c.home[i].y)));
+  }
+  c.shape = shape;
+  c.step_height_mm = scalar<S>(params.step_height_mm);
+  c.stance_depth_mm = scalar<S>(params.stance_depth_mm);
+  c.foot_radius_mm = scalar<S>(params.foot_radius_mm);
+  c.com_x_mm = scalar<S>(params.com_x_mm);
+  c.com_y_mm = scalar<S>(params.com_y_mm);
+  c.margin_mm = scalar<S>(params.margin_mm);
+  c.shift_budget_mm = scalar<S>(params.shift_budget_mm);
+  c.sit_drop_mm = scalar<S>(params.sit_drop_mm);
+  c.transition_s = scalar<S>(params.transition_s);
+  c.shift_x_only = model.kind == LegKind::kPlanar;
+  c.min_support = model.leg_count == 6 ? 3 : 2;
+  c.unit_shift = gait_units::shift_for(reach + reach);
+  c.limits = compute_velocity_limits(model, legs, c.home, shape, c.step_height_mm,
+                                     scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
+  // Ramps: from standing to the top forward speed of a trot-like duty in one
+  // default cycle, which keeps every first stance within its stride.
+  const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
+  const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
+  c.accel_mm_s2 = max_of(top_speed * c.limits.min_hz, S(1));
+  c.yaw_accel_rad_s2 = max_of(top_yaw * c.limits.min_hz, scalar<S>(0.05));
+  c.shift_speed_mm_s = scalar<S>(400.0);
+  c.target_speed_mm_s = max_of((top_speed + top_yaw * reach) * S(2), scalar<S>(10.0));
+  c.pose_speed_mm_s = scalar<S>(50.0);
+  c.pose_rate_rad_s = scalar<S>(0.5);
+  c.home_tolerance_mm = scalar<S>(0.5);
+  return c;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_GAIT_CONFIG_H

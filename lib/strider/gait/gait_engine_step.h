@@ -1,0 +1,173 @@
+//! GaitEngine's walking tick, body shift and margin (kept apart from the
+//! class declaration in gait_engine.h so that each file reads on its own;
+//! include gait_engine.h, not this file).
+#ifndef STRIDER_GAIT_GAIT_ENGINE_STEP_H
+#define STRIDER_GAIT_GAIT_ENGINE_STEP_H
+
+#include "gait_engine.h"
+
+namespace strider {
+
+template <typename S>
+void GaitEngine<S>::step_walk(S dt) {
+  step_command(dt);
+  update_landing_velocity();
+  const BodyStep<S> step = BodyStep<S>::make(vx_, vy_, wz_, dt);
+  // Odometry: the step in the world frame; heading kept as cos/sin,
+  // renormalised by one Newton step (no trig per tick).
+  odo_x_ += odo_c_ * step.dx_mm - odo_s_ * step.dy_mm;
+  odo_y_ += odo_s_ * step.dx_mm + odo_c_ * step.dy_mm;
+  odo_yaw_ += step.dyaw;
+  const S c = odo_c_ * step.cos_yaw - odo_s_ * step.sin_yaw;
+  const S s = odo_s_ * step.cos_yaw + odo_c_ * step.sin_yaw;
+  const S k = (S(3) - (c * c + s * s)) * scalar<S>(0.5);
+  odo_c_ = c * k;
+  odo_s_ = s * k;
+
+  clock_.advance(dt * hz_);
+  const uint32_t delta = Phase16(clock_.now() - clock_.before());
+  const uint8_t n = cfg_.leg_count;
+  bool changed = false;
+  bool landed[kMaxLegs] = {};
+  // Touch-downs first, so a foot landing this tick counts as support.
+  for (uint8_t i = 0; i < n; ++i) {
+    if (contact_[i]) continue;
+    swing_elapsed_[i] += delta;
+    if (swing_elapsed_[i] < leg_swing_len_[i]) continue;
+    foot_[i] = Vec3<S>(target_[i].x, target_[i].y, cfg_.home[i].z);
+    contact_[i] = true;
+    stance_elapsed_[i] = swing_elapsed_[i] - leg_swing_len_[i];
+    landed[i] = true;
+    changed = true;
+  }
+  // Feet on the ground stay on the ground: they move by the inverse step.
+  for (uint8_t i = 0; i < n; ++i) {
+    if (!contact_[i] || landed[i]) continue;
+    foot_[i] = step.move_ground_point(foot_[i]);
+    stance_elapsed_[i] = min_of(stance_elapsed_[i] + delta, kPhaseOne);
+  }
+  // Lift-offs when the clock passes a foot's offset.
+  for (uint8_t i = 0; i < n; ++i) {
+    if (!contact_[i]) continue;
+    const bool crossed = clock_.crossed(offset_[i]);
+    if (crossed) pending_[i] = true;
+    if (!pending_[i]) continue;
+    if (done(i)) {
+      pending_[i] = false;  // home already: this foot stays down
+      continue;
+    }
+    if (!may_lift(i)) continue;  // deferred until enough feet are down
+    lift_[i] = foot_[i];
+    contact_[i] = false;
+    pending_[i] = false;
+    leg_swing_len_[i] = swing_len_;
+    leg_inv_swing_[i] = inv_swing_;
+    swing_elapsed_[i] = crossed ? uint32_t(Phase16(clock_.now() - offset_[i])) : 0u;
+    target_[i] = touchdown(i);
+    apex_[i] = swing_apex_mm(cfg_.shape, hypot(target_[i].x - lift_[i].x, target_[i].y - lift_[i].y),
+                             cfg_.step_height_mm);
+    changed = true;
+  }
+  // Feet in the air follow the swing shape toward a touch-down point that
+  // moves at most max_step per tick (command and gait changes).
+  const S max_step = cfg_.target_speed_mm_s * dt;
+  for (uint8_t i = 0; i < n; ++i) {
+    if (contact_[i]) continue;
+    const Vec3<S> want = touchdown(i);
+    target_[i].x += clamp(want.x - target_[i].x, -max_step, max_step);
+    target_[i].y += clamp(want.y - target_[i].y, -max_step, max_step);
+    const SwingPoint<S> sp = swing_point(cfg_.shape, phase_to<S>(swing_elapsed_[i]) * leg_inv_swing_[i]);
+    foot_[i] = Vec3<S>(lift_[i].x + (target_[i].x - lift_[i].x) * sp.u,
+                       lift_[i].y + (target_[i].y - lift_[i].y) * sp.u,
+                       lift_[i].z + (cfg_.home[i].z - lift_[i].z) * sp.u + apex_[i] * sp.w);
+  }
+  for (uint8_t i = 0; i < n; ++i) {
+    if (!contact_[i]) continue;
+    foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(stance_elapsed_[i]) * inv_stance_);
+  }
+  if (changed) support_.build(foot_, contact_, n, cfg_.foot_radius_mm, cfg_.unit_shift);
+  step_shift(dt);
+
+  if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
+  if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
+  if (state_ == GaitState::kStopping && at_rest()) {
+    bool still = shift_.x_mm() == S(0) && shift_.y_mm() == S(0);
+    for (uint8_t i = 0; i < n && still; ++i) still = contact_[i] && near_home(i);
+    if (still) state_ = GaitState::kStanding;
+  }
+}
+
+template <typename S>
+void GaitEngine<S>::step_shift(S dt) {
+  const S max_step = cfg_.shift_speed_mm_s * dt;
+  if (!table_.shift_body) {
+    shift_.step_toward(S(0), S(0), max_step);
+    return;
+  }
+  const uint8_t n = cfg_.leg_count;
+  const S ref_x = cfg_.com_x_mm + pose_.translation_mm.x, ref_y = cfg_.com_y_mm + pose_.translation_mm.y;
+  bool any_swing = false;
+  for (uint8_t i = 0; i < n; ++i)
+    if (!contact_[i]) any_swing = true;
+  S tx = S(0), ty = S(0);
+  if (any_swing) {
+    in_window_ = false;
+    BodyShift<S>::correction(support_, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, tx, ty);
+  } else {
+    const Phase16 now = clock_.now();
+    if (!in_window_) {
+      in_window_ = true;
+      shift_.begin_window();
+      window_start_ = now;
+      window_group_ = kNoGroup;
+    }
+    // The group that lifts next: the nearest offset among feet still to step.
+    uint8_t lead = kNoGroup;
+    Phase16 ahead = 0;
+    for (uint8_t i = 0; i < n; ++i) {
+      if (done(i)) continue;
+      const Phase16 d = pending_[i] ? Phase16(0) : Phase16(offset_[i] - now);
+      if (lead == kNoGroup || d < ahead) {
+        lead = i;
+        ahead = d;
+      }
+    }
+    if (lead != window_group_) {
+      window_group_ = lead;
+      if (lead != kNoGroup) {
+        bool stays[kMaxLegs];
+        for (uint8_t i = 0; i < n; ++i) stays[i] = contact_[i] && offset_[i] != offset_[lead];
+        next_support_.build(foot_, stays, n, cfg_.foot_radius_mm, cfg_.unit_shift);
+        const Phase16 len = Phase16(Phase16(now + ahead) - window_start_);
+        window_inv_ = len == 0 ? S(0) : S(1) / phase_to<S>(len);
+      }
+    }
+    S to_x = S(0), to_y = S(0);
+    if (lead != kNoGroup) {
+      const S lead_s = phase_to<S>(ahead) * period_;  // time until it lifts [s]
+      BodyShift<S>::correction(next_support_, foot_, ref_x + vx_ * lead_s, ref_y + vy_ * lead_s, cfg_.margin_mm,
+                               cfg_.shift_x_only, to_x, to_y);
+    }
+    const S t = window_inv_ == S(0) ? S(1) : phase_to<S>(Phase16(now - window_start_)) * window_inv_;
+    shift_.window_target(t, to_x, to_y, tx, ty);
+  }
+  shift_.step_toward(tx, ty, max_step);
+}
+
+template <typename S>
+void GaitEngine<S>::update_margin() {
+  const BodyPose<S> bp = body_pose();
+  S cx = bp.translation_mm.x + cfg_.com_x_mm, cy = bp.translation_mm.y + cfg_.com_y_mm;
+  const bool tilted = bp.roll_rad != S(0) || bp.pitch_rad != S(0) || bp.yaw_rad != S(0);
+  if (tilted && (cfg_.com_x_mm != S(0) || cfg_.com_y_mm != S(0))) {
+    const Vec3<S> com = rotation_rpy(bp.roll_rad, bp.pitch_rad, bp.yaw_rad, bp.order) *
+                        Vec3<S>(cfg_.com_x_mm, cfg_.com_y_mm, S(0));
+    cx = bp.translation_mm.x + com.x;
+    cy = bp.translation_mm.y + com.y;
+  }
+  margin_ = support_.margin(foot_, cx, cy);
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_GAIT_ENGINE_STEP_H

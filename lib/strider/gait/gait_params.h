@@ -1,0 +1,93 @@
+//! GaitParams: each robot model's gait defaults, in one constexpr table
+//! indexed like robots/all_robots.h (kAllRobots), one entry per robot.
+//!
+//! The robot models describe geometry; how a robot walks is kept here.
+//! Values are chosen for each robot's size and servos and checked by
+//! test/gait (every foot target reachable at these defaults over whole
+//! cycles in every direction). Float, millimetres, seconds, like the models.
+#ifndef STRIDER_GAIT_GAIT_PARAMS_H
+#define STRIDER_GAIT_GAIT_PARAMS_H
+
+#include <string.h>
+
+#include "../robots/all_robots.h"
+#include "swing_trajectory.h"
+
+namespace strider {
+
+struct GaitParams {
+  const char* robot;          //!< model name (kAllRobots order)
+  const char* default_gait;   //!< gait used when none is named
+  SwingShape shape;           //!< default swing trajectory
+  float step_height_mm;       //!< swing apex above the ground [mm]
+  float step_length_mm;       //!< preferred stride [mm]: faster walking raises the step rate first
+  float cycle_s;              //!< cycle time at low speed [s]
+  float stance_depth_mm;      //!< stance foot pressed below the ground line mid-stance [mm]
+  float foot_radius_mm;       //!< foot pad radius: the support region is the hull of the pads [mm]
+  float com_x_mm;             //!< CoM ground projection, body frame, unshifted [mm]
+  float com_y_mm;             //!< [mm]
+  float margin_mm;            //!< stability margin the body shift aims for (walk, crawl) [mm]
+  float shift_budget_mm;      //!< reach kept free for the body shift [mm]
+  float sit_drop_mm;          //!< how far the body lowers from standing to sitting [mm]
+  float transition_s;         //!< stand-up and sit-down time [s]
+};
+
+//! One entry per model, in the order of kAllRobots.
+constexpr GaitParams kGaitParams[kRobotCount] = {
+    // sprawl8 (seed 000): 20 mm steps clear a cable; 10 mm foot pads are the
+    // seed's "wide ends of the legs" (a rubber cap over the shank's tip).
+    // Seed 000 moves at 155 mm/s and turns 360 deg in 6 s; the crawl here,
+    // at the servo-speed limit, is in docs/gaits.md. Lowers 30 mm to sit.
+    {"sprawl8", "crawl", SwingShape::kEllipse, 20.0f, 40.0f, 0.8f, 0.0f, 10.0f, 0.0f, 0.0f, 4.0f, 12.0f,
+     30.0f, 1.0f},
+    // mammal8 (seed 003): short 30 mm steps of a 140 mm leg under a 1.5 kg
+    // body; the seed's walk is slow (2.5 mm/s measured), so a 2 s cycle.
+    // Planar legs: the body shift can only move along x.
+    {"mammal8", "walk", SwingShape::kEllipse, 20.0f, 30.0f, 2.0f, 0.0f, 5.0f, 0.0f, 0.0f, 4.0f, 15.0f, 40.0f,
+     1.5f},
+    // dog12 (seed 001): a 557 mm leg; seed 001's own path is a rectangle
+    // (section 3.2). 50 mm steps, 120 mm stride, 1.2 s cycle.
+    {"dog12", "trot", SwingShape::kRectangle, 50.0f, 120.0f, 1.2f, 0.0f, 15.0f, 0.0f, 0.0f, 10.0f, 40.0f,
+     100.0f, 2.0f},
+    // hexapod18 (seed 002): 30 mm steps, 60 mm stride, tripod at 1 Hz.
+    {"hexapod18", "tripod", SwingShape::kCycloid, 30.0f, 60.0f, 1.0f, 0.0f, 5.0f, 0.0f, 0.0f, 10.0f, 0.0f,
+     50.0f, 1.5f},
+    // spider12 (seed 004): the MG90S spider; 20 mm steps, 40 mm stride.
+    {"spider12", "walk", SwingShape::kEllipse, 20.0f, 40.0f, 1.2f, 0.0f, 4.0f, 0.0f, 0.0f, 4.0f, 20.0f, 30.0f,
+     1.0f},
+};
+
+namespace gait_params_detail {
+constexpr bool same(const char* a, const char* b) {
+  while (*a != '\0' && *a == *b) ++a, ++b;
+  return *a == *b;
+}
+constexpr bool matches_models() {
+  for (uint8_t i = 0; i < kRobotCount; ++i)
+    if (!same(kGaitParams[i].robot, kAllRobots[i]->name)) return false;
+  return true;
+}
+constexpr bool values_sane() {
+  for (uint8_t i = 0; i < kRobotCount; ++i) {
+    const GaitParams& p = kGaitParams[i];
+    if (!(p.step_height_mm > 0.0f && p.step_length_mm > 0.0f && p.cycle_s > 0.0f)) return false;
+    if (!(p.stance_depth_mm >= 0.0f && p.foot_radius_mm >= 0.0f && p.margin_mm >= 0.0f)) return false;
+    if (!(p.shift_budget_mm >= 0.0f && p.sit_drop_mm >= 0.0f && p.transition_s > 0.0f)) return false;
+  }
+  return true;
+}
+}  // namespace gait_params_detail
+
+static_assert(gait_params_detail::matches_models(), "kGaitParams: one entry per model, in kAllRobots order");
+static_assert(gait_params_detail::values_sane(), "kGaitParams: positive sizes and times");
+
+//! The gait defaults of `model` (by name; nullptr for a model not listed).
+inline const GaitParams* gait_params_for(const RobotModel& model) {
+  for (uint8_t i = 0; i < kRobotCount; ++i)
+    if (strcmp(kGaitParams[i].robot, model.name) == 0) return &kGaitParams[i];
+  return nullptr;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_GAIT_PARAMS_H

@@ -1,0 +1,77 @@
+//! Where a 2-DOF leg can put its foot while walking: the projection of a foot
+//! target onto the leg's reachable set, and how far it had to be moved.
+//!
+//! A 2-DOF leg reaches a surface, not a volume, so a gait's target (a point
+//! on a straight stance line, or on a swing arc) is generally off it. The
+//! walker projects every target onto the surface before IK and reports the
+//! distance it moved the target (what was clamped), instead of letting the
+//! IK clamp silently:
+//! - planar leg (seed 003): the leg moves in its x-z plane; the projection
+//!   drops the sideways component (leg frame y = 0). x and z are kept, so
+//!   walking forward and backward is exact and sideways motion is reported
+//!   in full.
+//! - sprawling leg (seed 000): the foot lies on the torus
+//!   (rho - a1)^2 + z^2 = a2^2 (rho = horizontal distance from the yaw axis).
+//!   The projection keeps the height z (the ground contact) and the direction
+//!   from the hip (hip yaw t1, seed 000 eq 7), and moves the foot along that
+//!   direction to rho = a1 + sqrt(a2^2 - z^2) (knee outward, eq 8's branch):
+//!   on the ground this is a slide of the foot, which is what a sprawling
+//!   robot does when its body moves along a leg (seed 000 section 2.4: the
+//!   leg "will not be able to move straight toward Z axis without affecting
+//!   the X and Y coordinates").
+//! - 3-DOF legs: unchanged.
+#ifndef STRIDER_GAIT_REACH_PROJECTION_H
+#define STRIDER_GAIT_REACH_PROJECTION_H
+
+#include "../robots/robot_model.h"
+#include "gait_units.h"
+
+namespace strider {
+
+//! The constants of one leg's projection, in S (built once per model).
+template <typename S>
+struct ReachProjection {
+  LegKind kind;
+  S a1_mm;      //!< sprawl: thigh a1
+  S a2_mm;      //!< sprawl: shank a2
+  int8_t shift; //!< working units for the sprawl's squares (gait_units.h)
+
+  static ReachProjection make(const RobotModel& model) {
+    const S a1 = scalar<S>(model.links.l1_mm), a2 = scalar<S>(model.links.l2_mm);
+    return ReachProjection{model.kind, a1, a2, gait_units::shift_for(a1 + a2)};
+  }
+
+  //! True for the kinds whose reachable set is a surface.
+  bool projects() const { return kind == LegKind::kSprawl || kind == LegKind::kPlanar; }
+
+  //! The target [mm, leg frame] moved onto the reachable set; moved_mm gets
+  //! the distance it moved (0 for 3-DOF legs).
+  Vec3<S> apply(const Vec3<S>& target, S& moved_mm) const {
+    moved_mm = S(0);
+    if (kind == LegKind::kPlanar) {
+      moved_mm = abs(target.y);
+      return Vec3<S>(target.x, S(0), target.z);
+    }
+    if (kind != LegKind::kSprawl) return target;
+    const S x = gait_units::to_unit(target.x, shift), y = gait_units::to_unit(target.y, shift);
+    const S a1 = gait_units::to_unit(a1_mm, shift), a2 = gait_units::to_unit(a2_mm, shift);
+    const S z = clamp(gait_units::to_unit(target.z, shift), -a2, a2);
+    const S rho = sqrt(x * x + y * y);
+    const S rho_new = a1 + sqrt(a2 * a2 - z * z);
+    Vec3<S> out;
+    if (rho > S(0)) {
+      const S k = rho_new / rho;
+      out = Vec3<S>(x * k, y * k, z);
+    } else {
+      out = Vec3<S>(rho_new, S(0), z);  // on the yaw axis: face forward
+    }
+    const S dr = rho_new - rho, dz = z - gait_units::to_unit(target.z, shift);
+    moved_mm = gait_units::from_unit(sqrt(dr * dr + dz * dz), shift);  // the move is radial and vertical
+    return Vec3<S>(gait_units::from_unit(out.x, shift), gait_units::from_unit(out.y, shift),
+                   gait_units::from_unit(out.z, shift));
+  }
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_REACH_PROJECTION_H

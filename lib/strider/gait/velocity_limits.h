@@ -1,0 +1,263 @@
+//! Velocity limits of a robot: how long a stride each leg can make in each
+//! direction (from its reachable workspace at the standing pose) and how fast
+//! it can step (from its servos' speed and the joint travel of a step); and
+//! the planner that turns a velocity command into a stride and a step rate.
+//!
+//! Stride: for each leg and each of 16 directions, a binary search (IK at
+//! configuration time, never per tick) for the longest stride L whose stance
+//! ends (home -+ L/2 along the direction, on the ground) and swing (the
+//! trajectory's points at s = 1/6 .. 5/6, apex included) all solve with IK
+//! status ok; a 2-DOF leg's targets are first projected onto its reachable
+//! set (reach_projection.h): what the projection moves is reported while
+//! walking, not limited here (a planar leg's sideways stride, a sprawling
+//! leg's slide). kStrideShare of it is used; gaits that shift the body keep
+//! a budget of reach free on top.
+//!
+//! Servo speed: a swing of stride L at step rate f (duty d) turns joint j at
+//! most T_j(L) f / (1 - d) [rad/s], T_j = max |dq_j/ds| over the swing (9
+//! samples; s the swing phase); a stance at |q_j(end) - q_j(start)| f / d.
+//! T_j is convex in L (the joint rates are |J^-1 dp/ds|, dp/ds linear in L),
+//! so the chord through L = 0 and the longest stride bounds it from above:
+//! T_j(L) <= T_j(0) + slope_j L. With w_j = kServoSpeedShare x the part's
+//! no-load speed (robots/servo_parts.h; a loaded servo is slower):
+//!   swing:  f (lift_ms + swing_ms_per_mm L) <= 1000 (1 - d)
+//!   stance: stance_ms_per_mm L f <= 1000 d
+//! where lift_ms = max_j T_j(0) / w_j, swing_ms_per_mm = max_j slope_j / w_j
+//! and stance_ms_per_mm = max_j travel_j / (L w_j) over legs and directions.
+//!
+//! Planner (plan()): each stance foot moves at r_i = v + w x home_i: a
+//! stride L_i = R_i / f with R_i = |r_i| d. The step rate is 1 / cycle_s at
+//! low speed, raised so that strides stay at the preferred step length, and
+//! kept between R_i / L_max,i (the stride limit in r_i's direction; also
+//! |w| d / kMaxStanceTurnRad) and the servo limit above. When no rate satisfies both, the whole command is
+//! scaled down (direction and turning radius kept) and reported as limited.
+#ifndef STRIDER_GAIT_VELOCITY_LIMITS_H
+#define STRIDER_GAIT_VELOCITY_LIMITS_H
+
+#include "../kinematics/any_leg.h"
+#include "reach_projection.h"
+#include "swing_trajectory.h"
+
+namespace strider {
+
+//! Share of a servo's no-load speed a step may use.
+constexpr double kServoSpeedShare = 0.75;
+//! Share of the longest reachable stride a gait may use: the rest absorbs a
+//! tick of overshoot at lift-off, the turning approximations of stance.h and
+//! command changes.
+constexpr double kStrideShare = 0.9;
+//! Most the body may turn during one stance [rad]: feet on the ground move
+//! on arcs about the turning centre, and the straight-line stride check
+//! covers an arc only while it is short (sag r (1 - cos 0.125) < 0.8 % of r).
+constexpr double kMaxStanceTurnRad = 0.25;
+
+template <typename S>
+struct VelocityPlan {
+  S vx_mm_s, vy_mm_s, wz_rad_s;  //!< the command as it will be walked
+  S step_hz;                     //!< cycles per second
+  bool limited;                  //!< the command was scaled down
+};
+
+template <typename S>
+struct VelocityLimits {
+  static constexpr uint8_t kDirections = 16;  //!< direction k at k * 22.5 deg from forward
+
+  uint8_t leg_count = 0;
+  //! False for planar legs (seed 003): they cannot step sideways, so a
+  //! sideways command is dropped (and reported as limited); turning stays,
+  //! its sideways part reported by the walker as clamped.
+  bool sideways = true;
+  S stride_mm[kMaxLegs][kDirections];  //!< longest stride of leg i along direction k [mm]
+  S min_hz = S(1);                     //!< default step rate, 1 / cycle_s [Hz]
+  S preferred_stride_mm = S(0);        //!< step_length_mm [mm]
+  S lift_ms = S(0);                    //!< servo time of a swing's lift alone [ms]
+  S swing_ms_per_mm = S(0);            //!< servo time of a swing per mm of stride [ms/mm]
+  S stance_ms_per_mm = S(0);           //!< servo time of a stance per mm of stride [ms/mm]
+
+  //! Leg i's longest stride along (dx, dy) (any length, not both 0) [mm],
+  //! interpolated between the two nearest of the 16 directions, less twice
+  //! the body-shift budget [mm].
+  S leg_stride(uint8_t leg, S dx, S dy, S budget_mm = S(0)) const {
+    S a = atan2(dy, dx);  // (-pi, pi]
+    if (a < S(0)) a += two_pi<S>();
+    const S x = a * scalar<S>(double(kDirections) / 6.283185307179586);
+    uint8_t k = 0;
+    while (k + 1 < kDirections && S(k + 1) <= x) ++k;
+    const S f = clamp(x - S(k), S(0), S(1));
+    const S lo = stride_mm[leg][k], hi = stride_mm[leg][(k + 1) % kDirections];
+    return max_of(lo + (hi - lo) * f - budget_mm * S(2), S(0));
+  }
+
+  //! The fastest step rate the servos allow for strides of `length_mm` in a
+  //! gait of this duty [Hz] (at most 100).
+  S servo_hz(S length_mm, S duty) const {
+    const S swing = lift_ms + swing_ms_per_mm * length_mm;
+    S f = swing > S(0) ? scalar<S>(1000.0) * (S(1) - duty) / swing : scalar<S>(100.0);
+    const S stance = stance_ms_per_mm * length_mm;
+    if (stance > S(0)) f = min_of(f, scalar<S>(1000.0) * duty / stance);
+    return min_of(f, scalar<S>(100.0));
+  }
+
+  //! The command (vx, vy [mm/s], wz [rad/s]) as the robot can walk it with
+  //! its feet at home[i] [mm, body frame] in a gait of this duty (see the
+  //! file comment). Gaits that shift the body pass their budget [mm] and
+  //! keep_stride = true: their stride stays at most the preferred step
+  //! length (the shift they need grows with the stride), so they walk faster
+  //! only by stepping faster.
+  VelocityPlan<S> plan(const Vec3<S>* home, S vx, S vy, S wz, S duty, S budget_mm = S(0),
+                       bool keep_stride = false) const {
+    VelocityPlan<S> p{vx, vy, wz, min_of(min_hz, servo_hz(S(0), duty)), false};
+    if (!sideways && vy != S(0)) {
+      p.vy_mm_s = vy = S(0);
+      p.limited = true;
+    }
+    S rate_lo = S(0);   // step rate the stride limits need [Hz]
+    S fastest = S(0);   // largest R_i [mm/s]
+    for (uint8_t i = 0; i < leg_count; ++i) {
+      const S rx = vx - wz * home[i].y, ry = vy + wz * home[i].x;
+      const S r = hypot(rx, ry) * duty;
+      if (r == S(0)) continue;
+      S room = leg_stride(i, rx, ry, budget_mm);
+      if (keep_stride) room = min_of(room, preferred_stride_mm);
+      rate_lo = room > S(0) ? max_of(rate_lo, r / room) : scalar<S>(1000.0);
+      fastest = max_of(fastest, r);
+    }
+    if (fastest == S(0)) return p;
+    rate_lo = max_of(rate_lo, abs(wz) * duty * scalar<S>(1.0 / kMaxStanceTurnRad));
+    // Scale k so that some rate f >= k rate_lo meets the servo limits:
+    // f lift + swing_per_mm k R <= 1000 (1 - d) at f = k rate_lo, and the stance.
+    S k = S(1);
+    const S swing_need = lift_ms * rate_lo + swing_ms_per_mm * fastest;
+    if (swing_need > scalar<S>(1000.0) * (S(1) - duty)) k = scalar<S>(1000.0) * (S(1) - duty) / swing_need;
+    const S stance_need = stance_ms_per_mm * fastest;
+    if (stance_need > scalar<S>(1000.0) * duty) k = min_of(k, scalar<S>(1000.0) * duty / stance_need);
+    const S lo = k * rate_lo;
+    S hi = scalar<S>(100.0);
+    if (lift_ms > S(0)) hi = (scalar<S>(1000.0) * (S(1) - duty) - swing_ms_per_mm * k * fastest) / lift_ms;
+    S f = max_of(min_hz, preferred_stride_mm > S(0) ? k * fastest / preferred_stride_mm : S(0));
+    p.step_hz = max_of(min_of(f, hi), lo);
+    if (k < S(1)) {
+      p.vx_mm_s = vx * k;
+      p.vy_mm_s = vy * k;
+      p.wz_rad_s = wz * k;
+      p.limited = true;
+    }
+    return p;
+  }
+
+  //! Top speed along (dx, dy) without turning [mm/s].
+  S max_speed_mm_s(const Vec3<S>* home, S dx, S dy, S duty, S budget_mm = S(0), bool keep_stride = false) const {
+    const S n = hypot(dx, dy);
+    if (n == S(0)) return S(0);
+    const S big = scalar<S>(5000.0);
+    const VelocityPlan<S> p = plan(home, dx / n * big, dy / n * big, S(0), duty, budget_mm, keep_stride);
+    return hypot(p.vx_mm_s, p.vy_mm_s);
+  }
+
+  //! Top yaw rate turning in place [rad/s].
+  S max_yaw_rate(const Vec3<S>* home, S duty, S budget_mm = S(0), bool keep_stride = false) const {
+    return plan(home, S(0), S(0), scalar<S>(20.0), duty, budget_mm, keep_stride).wz_rad_s;
+  }
+};
+
+namespace velocity_limits_detail {
+
+//! Swing phase samples of the stride check.
+constexpr uint8_t kSwingSamples = 5;
+
+template <typename S>
+bool reaches(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& body_target) {
+  S moved;
+  const Vec3<S> t = proj.apply(leg.mount().body_to_leg(body_target), moved);
+  typename AnyLeg<S>::Joints q;
+  Vec3<S> at;
+  return leg.ik(t, q, at) == IkStatus::kOk;
+}
+
+//! The point of a stride of length L along unit (dx, dy) at swing phase s
+//! (s < 0: the stance end -L/2, s > 1: the stance end +L/2).
+template <typename S>
+Vec3<S> stride_point(const Vec3<S>& home, S dx, S dy, S L, SwingShape shape, S step_mm, S s) {
+  if (s < S(0)) return Vec3<S>(home.x - dx * L * scalar<S>(0.5), home.y - dy * L * scalar<S>(0.5), home.z);
+  if (s > S(1)) return Vec3<S>(home.x + dx * L * scalar<S>(0.5), home.y + dy * L * scalar<S>(0.5), home.z);
+  const SwingPoint<S> sp = swing_point(shape, s);
+  const S along = L * (sp.u - scalar<S>(0.5));
+  return Vec3<S>(home.x + dx * along, home.y + dy * along, home.z + sp.w * swing_apex_mm(shape, L, step_mm));
+}
+
+template <typename S>
+void joints_at(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& body_target,
+               typename AnyLeg<S>::Joints& q) {
+  S moved;
+  Vec3<S> at;
+  leg.ik(proj.apply(leg.mount().body_to_leg(body_target), moved), q, at);
+}
+
+template <typename S>
+bool stride_ok(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& home, S dx, S dy, S L,
+               SwingShape shape, S step_mm) {
+  if (!reaches(leg, proj, stride_point(home, dx, dy, L, shape, step_mm, -S(1)))) return false;
+  if (!reaches(leg, proj, stride_point(home, dx, dy, L, shape, step_mm, S(2)))) return false;
+  for (uint8_t k = 1; k <= kSwingSamples; ++k) {
+    const S s = S(k) * scalar<S>(1.0 / (kSwingSamples + 1));
+    if (!reaches(leg, proj, stride_point(home, dx, dy, L, shape, step_mm, s))) return false;
+  }
+  return true;
+}
+
+}  // namespace velocity_limits_detail
+
+//! The limits of `model` with `legs` (AnyLeg from the model) and standing
+//! feet home[i] [mm, body frame], for a swing shape and step height [mm];
+//! step_length_mm and cycle_s are the gait defaults (gait_params.h).
+template <typename S>
+VelocityLimits<S> compute_velocity_limits(const RobotModel& model, const AnyLeg<S>* legs, const Vec3<S>* home,
+                                          SwingShape shape, S step_height_mm, S step_length_mm, S cycle_s) {
+  namespace d = velocity_limits_detail;
+  VelocityLimits<S> lim;
+  lim.leg_count = model.leg_count;
+  lim.sideways = model.kind != LegKind::kPlanar;
+  lim.min_hz = S(1) / cycle_s;
+  lim.preferred_stride_mm = step_length_mm;
+  const ReachProjection<S> proj = ReachProjection<S>::make(model);
+  const S top = scalar<S>(2.0 * double(model.links.l1_mm + model.links.l2_mm + model.links.l3_mm));
+  for (uint8_t i = 0; i < model.leg_count; ++i) {
+    for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) {
+      const double deg = double(k) * 360.0 / VelocityLimits<S>::kDirections;
+      const S dx = scalar<S>(model_math::cos_deg(deg)), dy = scalar<S>(model_math::sin_deg(deg));
+      S lo = S(0), hi = top;
+      if (!d::stride_ok(legs[i], proj, home[i], dx, dy, S(0), shape, step_height_mm)) hi = S(0);
+      for (uint8_t it = 0; it < 16 && hi - lo > scalar<S>(0.05); ++it) {
+        const S mid = (lo + hi) * scalar<S>(0.5);
+        if (d::stride_ok(legs[i], proj, home[i], dx, dy, mid, shape, step_height_mm)) lo = mid;
+        else hi = mid;
+      }
+      lim.stride_mm[i][k] = lo * scalar<S>(kStrideShare);
+      if (lo == S(0)) continue;
+      // Joint rates of a swing in place and of this longest stride.
+      typename AnyLeg<S>::Joints still[9], q[11];
+      for (uint8_t m = 0; m < 11; ++m) {
+        const S s = m == 0 ? -S(1) : m == 10 ? S(2) : S(m - 1) * scalar<S>(1.0 / 8.0);
+        d::joints_at(legs[i], proj, d::stride_point(home[i], dx, dy, lo, shape, step_height_mm, s), q[m]);
+        if (m >= 1 && m <= 9)
+          d::joints_at(legs[i], proj, d::stride_point(home[i], dx, dy, S(0), shape, step_height_mm, s), still[m - 1]);
+      }
+      for (uint8_t j = 0; j < model.dof(); ++j) {
+        const S w = scalar<S>(double(servo_speed_deg_s(model.servo[j])) * kServoSpeedShare * 0.017453292519943295e-3);
+        S t0 = S(0), t1 = S(0);  // max |dq/ds| [rad per swing]: in place, longest stride
+        for (uint8_t m = 0; m < 8; ++m) {
+          t0 = max_of(t0, abs(still[m + 1][j] - still[m][j]) * S(8));
+          t1 = max_of(t1, abs(q[m + 2][j] - q[m + 1][j]) * S(8));
+        }
+        lim.lift_ms = max_of(lim.lift_ms, t0 / w);
+        lim.swing_ms_per_mm = max_of(lim.swing_ms_per_mm, max_of(t1 - t0, S(0)) / w / lo);
+        lim.stance_ms_per_mm = max_of(lim.stance_ms_per_mm, abs(q[10][j] - q[0][j]) / w / lo);
+      }
+    }
+  }
+  return lim;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_VELOCITY_LIMITS_H

@@ -1,0 +1,131 @@
+//! Walker: a whole robot walking: gait engine -> body pose -> reachable-set
+//! projection (2-DOF legs) -> leg IK, per tick, with each leg's joints and
+//! status.
+//!
+//! Per leg the walker reports:
+//! - the foot target in the body frame after the body pose [mm];
+//! - what it had to clamp: a 2-DOF leg's target is first moved onto the
+//!   leg's reachable set (reach_projection.h) and clamp_mm says by how much;
+//! - the joints [rad] from IK of that target, and the IK's own status (never
+//!   hidden: kUnreachable keeps the previous joints and says so);
+//! - status = the worse of the IK status and kClamped when the projection
+//!   moved a foot on the ground by more than kClampToleranceMm (the foot
+//!   slides: a sprawling leg moving along its own direction, a planar leg
+//!   asked to move sideways) or moved a foot in the air up or down. A 2-DOF
+//!   foot in the air only keeps its height and direction: its reach follows
+//!   from its joints (a sprawling leg's foot swings outward as the knee lifts
+//!   it, seed 000 section 2.4), which is not reported as a clamp.
+#ifndef STRIDER_GAIT_WALKER_H
+#define STRIDER_GAIT_WALKER_H
+
+#include "../kinematics/any_leg.h"
+#include "gait_engine.h"
+#include "reach_projection.h"
+
+namespace strider {
+
+//! A 2-DOF foot moved by more than this counts as clamped [mm].
+constexpr double kClampToleranceMm = 0.5;
+
+template <typename S>
+struct LegResult {
+  Vec3<S> target_mm;                //!< engine target, body frame [mm]
+  Vec3<S> foot_mm;                  //!< foot the joints reach, body frame [mm]
+  typename AnyLeg<S>::Joints q;     //!< joints, seed convention [rad]
+  IkStatus ik_status;               //!< IK of the projected target
+  IkStatus status;                  //!< worst of ik_status and the clamp
+  S clamp_mm;                       //!< how far the projection moved the target [mm]
+  bool contact;                     //!< foot on the ground
+};
+
+template <typename S>
+class Walker {
+ public:
+  //! Builds the legs, the configuration (velocity limits: a few thousand IK
+  //! calls) and the engine. Returns false for a gait of another leg count.
+  bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
+                 bool sitting = false) {
+    if (!build_legs(model)) return false;
+    return configure(model, gait, make_gait_config(model, legs_, params, shape), sitting);
+  }
+
+  //! The same with a configuration built before (make_gait_config): no IK
+  //! search, so a robot can switch configurations quickly.
+  bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>& config,
+                 bool sitting = false) {
+    if (gait.leg_count != model.leg_count || config.leg_count != model.leg_count) return false;
+    if (model_ != &model && !build_legs(model)) return false;
+    engine_.configure(config, gait, sitting);
+    for (uint8_t i = 0; i < model.leg_count; ++i) {
+      out_[i].q = typename AnyLeg<S>::Joints();
+      for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
+      out_[i].foot_mm = engine_.foot(i);
+    }
+    solve();
+    return true;
+  }
+
+  GaitEngine<S>& engine() { return engine_; }
+  const GaitEngine<S>& engine() const { return engine_; }
+  const AnyLeg<S>& leg_model(uint8_t i) const { return legs_[i]; }
+  uint8_t leg_count() const { return engine_.leg_count(); }
+  uint8_t dof() const { return model_ == nullptr ? 0 : model_->dof(); }
+
+  //! One control tick of dt [s]: engine, then every leg.
+  void tick(S dt) {
+    engine_.tick(dt);
+    solve();
+  }
+
+  const LegResult<S>& leg(uint8_t i) const { return out_[i]; }
+  //! Static stability margin [mm] (negative: CoM outside the support).
+  S margin_mm() const { return engine_.margin_mm(); }
+  //! The worst status over all legs this tick.
+  IkStatus worst_status() const {
+    IkStatus w = IkStatus::kOk;
+    for (uint8_t i = 0; i < leg_count(); ++i) w = worst(w, out_[i].status);
+    return w;
+  }
+
+ private:
+  void solve() {
+    const BodyPose<S> pose = engine_.body_pose();
+    const bool turned = pose.roll_rad != S(0) || pose.pitch_rad != S(0) || pose.yaw_rad != S(0);
+    const Transform<S> body = turned ? body_transform(pose) : Transform<S>::identity();
+    for (uint8_t i = 0; i < leg_count(); ++i) {
+      LegResult<S>& r = out_[i];
+      const Vec3<S>& p = engine_.foot(i);
+      r.target_mm = turned ? foot_in_body(body, p) : p - pose.translation_mm;
+      r.contact = engine_.contact(i);
+      const Vec3<S> leg_target = legs_[i].mount().body_to_leg(r.target_mm);
+      S moved;
+      const Vec3<S> t = proj_.apply(leg_target, moved);
+      r.clamp_mm = moved;
+      Vec3<S> reached;
+      r.ik_status = legs_[i].ik(t, r.q, reached);
+      if (r.ik_status != IkStatus::kUnreachable) r.foot_mm = legs_[i].mount().leg_to_body(reached);
+      const bool slid = r.contact ? moved > scalar<S>(kClampToleranceMm)
+                                  : abs(t.z - leg_target.z) > scalar<S>(kClampToleranceMm);
+      r.status = worst(r.ik_status, slid ? IkStatus::kClamped : IkStatus::kOk);
+    }
+  }
+
+  bool build_legs(const RobotModel& model) {
+    model_ = nullptr;
+    for (uint8_t i = 0; i < model.leg_count; ++i)
+      if (!AnyLeg<S>::from_model(model, i, legs_[i])) return false;
+    proj_ = ReachProjection<S>::make(model);
+    model_ = &model;
+    return true;
+  }
+
+  const RobotModel* model_ = nullptr;
+  AnyLeg<S> legs_[kMaxLegs];
+  ReachProjection<S> proj_{};
+  GaitEngine<S> engine_;
+  LegResult<S> out_[kMaxLegs];
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_WALKER_H

@@ -1,0 +1,1 @@
+#include "gait_test_util.h"
