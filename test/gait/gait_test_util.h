@@ -1,4 +1,4 @@
-// Shared helpers of the gait tests: scalar conversions, a walker per model
+// Shared code of the gait tests: scalar conversions, a walker per model
 // and gait, a recorder of whole runs, and the per-tick step bound.
 #ifndef STRIDER_TEST_GAIT_GAIT_TEST_UTIL_H
 #define STRIDER_TEST_GAIT_GAIT_TEST_UTIL_H

@@ -1,1 +1,245 @@
+// `strider gait` and `strider gaits` as scripts see them (ARCHITECTURE.md
+// "Gaits"): the built binary run through popen; the CSV's header names,
+// column count, row count, value formats and status values; the JSON lines
+// of `gaits`; bad usage exits 2; float and fixed agree.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gait/gait_library.h"
+#include "robots/all_robots.h"
+
+#ifndef STRIDER_CLI_PATH
+#error "STRIDER_CLI_PATH must name the strider executable"
+#endif
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::vector<std::string> lines;  // stdout
+  std::string err;                 // stderr
+};
+
+Result run(const std::string& args) {
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  std::string err_name = dir + "/strider_gait_err_XXXXXX";
+  const int fd = mkstemp(err_name.data());
+  EXPECT_GE(fd, 0);
+  close(fd);
+  const std::string cmd = std::string("'") + STRIDER_CLI_PATH + "' " + args + " 2> " + err_name;
+  Result r;
+  FILE* p = popen(cmd.c_str(), "r");
+  EXPECT_NE(p, nullptr);
+  std::string out;
+  char buf[8192];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+  const int raw = pclose(p);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::stringstream ss(out);
+  std::string line;
+  while (std::getline(ss, line)) r.lines.push_back(line);
+  std::ifstream f(err_name);
+  std::stringstream es;
+  es << f.rdbuf();
+  r.err = es.str();
+  std::filesystem::remove(err_name);
+  return r;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> v;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, sep)) v.push_back(item);
+  if (!s.empty() && s.back() == sep) v.push_back("");
+  return v;
+}
+
+bool is_number(const std::string& s) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && std::isfinite(v);
+}
+
+// The expected header of a model (ARCHITECTURE.md).
+std::vector<std::string> expected_header(const strider::RobotModel& m) {
+  std::vector<std::string> h = {"t"};
+  for (int i = 0; i < m.leg_count; ++i) {
+    const std::string n = std::to_string(i);
+    h.push_back("contact_" + n);
+    h.push_back("foot_" + n + "_x");
+    h.push_back("foot_" + n + "_y");
+    h.push_back("foot_" + n + "_z");
+    for (int j = 0; j < m.dof(); ++j) h.push_back("q_" + n + "_" + std::to_string(j));
+    h.push_back("status_" + n);
+  }
+  h.push_back("margin_mm");
+  return h;
+}
+
+const std::set<std::string> kStatuses = {"ok", "clamped", "joint_limit", "unreachable"};
+
+TEST(GaitCli, CsvFormatForEveryModelAndGait) {
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    const strider::GaitList list = strider::gaits_for(*m);
+    for (uint8_t g = 0; g < list.count; ++g) {
+      SCOPED_TRACE(std::string(m->name) + "/" + list.items[g]->name);
+      const Result r = run(std::string("gait --robot ") + m->name + " --gait " + list.items[g]->name +
+                           " --vx 40 --wz 5 --duration 2 --dt 0.02");
+      ASSERT_EQ(r.status, 0) << r.err;
+      ASSERT_EQ(r.lines.size(), 1u + 101u);  // header, t = 0 .. 2 s
+      const std::vector<std::string> header = expected_header(*m);
+      EXPECT_EQ(split(r.lines[0], ','), header);
+      const size_t cols = header.size();
+      EXPECT_EQ(cols, 1u + m->leg_count * (4u + m->dof() + 1u) + 1u);
+      std::set<std::string> contacts_seen;
+      for (size_t k = 1; k < r.lines.size(); ++k) {
+        const std::vector<std::string> c = split(r.lines[k], ',');
+        ASSERT_EQ(c.size(), cols) << r.lines[k];
+        EXPECT_NEAR(std::stod(c[0]), 0.02 * double(k - 1), 1e-9);
+        size_t at = 1;
+        for (int i = 0; i < m->leg_count; ++i) {
+          ASSERT_TRUE(c[at] == "0" || c[at] == "1") << c[at];
+          contacts_seen.insert(c[at]);
+          ++at;
+          for (int v = 0; v < 3 + m->dof(); ++v, ++at) ASSERT_TRUE(is_number(c[at])) << c[at];
+          ASSERT_TRUE(kStatuses.count(c[at])) << c[at];
+          if (m->dof() == 3) {
+            EXPECT_EQ(c[at], "ok");
+          }
+          ++at;
+        }
+        ASSERT_TRUE(is_number(c[at])) << c[at];
+      }
+      EXPECT_EQ(contacts_seen.size(), 2u);  // the feet step
+    }
+  }
+}
+
+TEST(GaitCli, StandingRowAndMarginMatchTheModel) {
+  // The first row is the standing pose: feet at the model's stand_mm, margin
+  // the CoM's distance to the nearest support edge plus the pad radius.
+  const Result r = run("gait --robot hexapod18 --gait tripod --vx 50 --duration 0.04 --dt 0.02");
+  ASSERT_EQ(r.status, 0);
+  const std::vector<std::string> c = split(r.lines[1], ',');
+  for (int i = 0; i < 6; ++i) {
+    const strider::Vec3<float>& s = strider::kHexapod18.legs[i].stand_mm;
+    EXPECT_EQ(c[size_t(1 + i * 8)], "1");
+    EXPECT_NEAR(std::stod(c[size_t(2 + i * 8)]), s.x, 1e-3);
+    EXPECT_NEAR(std::stod(c[size_t(3 + i * 8)]), s.y, 1e-3);
+    EXPECT_NEAR(std::stod(c[size_t(4 + i * 8)]), s.z, 1e-3);
+  }
+  EXPECT_GT(std::stod(c.back()), 0.0);
+}
+
+TEST(GaitCli, GaitsListsEachGaitOfAModel) {
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    const Result r = run(std::string("gaits --robot ") + m->name);
+    ASSERT_EQ(r.status, 0);
+    const strider::GaitList list = strider::gaits_for(*m);
+    ASSERT_EQ(r.lines.size(), size_t(list.count));
+    for (uint8_t g = 0; g < list.count; ++g) {
+      const std::string& l = r.lines[g];
+      EXPECT_EQ(l.rfind(std::string("{\"name\":\"") + list.items[g]->name + "\",\"duty\":", 0), 0u) << l;
+      EXPECT_NE(l.find(",\"offsets\":["), std::string::npos) << l;
+      const size_t open = l.find('['), close = l.find(']');
+      EXPECT_EQ(split(l.substr(open + 1, close - open - 1), ',').size(), size_t(m->leg_count)) << l;
+      EXPECT_EQ(l.back(), '}');
+    }
+  }
+  const Result walk = run("gaits --robot mammal8");
+  EXPECT_EQ(walk.lines[0], "{\"name\":\"walk\",\"duty\":0.85,\"offsets\":[0.25,0.75,0,0.5]}");
+}
+
+TEST(GaitCli, BadUsageExits2) {
+  for (const char* args :
+       {"gait", "gait --robot nosuch --gait walk --duration 1 --dt 0.02",
+        "gait --robot sprawl8 --gait tripod --duration 1 --dt 0.02",
+        "gait --robot sprawl8 --gait walk --dt 0.02", "gait --robot sprawl8 --gait walk --duration 1",
+        "gait --robot sprawl8 --gait walk --duration 1 --dt 0", "gait --robot sprawl8 --gait walk --duration -1 --dt 0.02",
+        "gait --robot sprawl8 --gait walk --duration 1 --dt 0.02 --speed 150",
+        "gait --robot sprawl8 --gait walk --duration 1 --dt 0.02 --vx fast",
+        "gait --robot sprawl8 --gait walk --duration 1 --dt 0.02 --vx nan",
+        "gait --robot sprawl8 --gait walk --duration 1 --dt 0.02 --scalar double",
+        "gait --robot sprawl8 --gait walk --duration 1 --dt 0.02 --trajectory circle",
+        "gait --robot sprawl8 --gait walk --duration 1 --dt 0.02 --bogus 1", "gaits", "gaits --robot nosuch",
+        "gaits --robot sprawl8 --gait walk"}) {
+    const Result r = run(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_TRUE(r.lines.empty()) << args;
+    EXPECT_NE(r.err.find("strider: "), std::string::npos) << args;
+  }
+}
+
+TEST(GaitCli, LimitedCommandIsReported) {
+  const Result r = run("gait --robot spider12 --gait walk --vx 5000 --duration 0.1 --dt 0.02");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.err.find("command limited"), std::string::npos) << r.err;
+  const Result ok = run("gait --robot spider12 --gait walk --vx 5 --duration 0.1 --dt 0.02");
+  EXPECT_EQ(ok.err, "");
+}
+
+TEST(GaitCli, FloatAndFixedAgree) {
+  // Same run in both scalars, each with its own configuration (Fixed builds
+  // its velocity limits with Fixed IK): a lift-off may fall one tick apart,
+  // so contacts agree on at least 97 % of the rows and feet within one tick
+  // of travel (the largest row-to-row move in the float run) plus 0.5 mm.
+  const std::string args = "gait --robot hexapod18 --gait ripple --vx 60 --vy 20 --wz 5 --duration 6 --dt 0.02";
+  const Result a = run(args + " --scalar float");
+  const Result b = run(args + " --scalar fixed");
+  ASSERT_EQ(a.status, 0);
+  ASSERT_EQ(b.status, 0);
+  ASSERT_EQ(a.lines.size(), b.lines.size());
+  EXPECT_EQ(a.lines[0], b.lines[0]);
+  auto foot = [](const std::vector<std::string>& c, int i, int v) { return std::stod(c[size_t(v + i * 8)]); };
+  double tick = 0.0;
+  for (size_t k = 2; k < a.lines.size(); ++k) {
+    const std::vector<std::string> x = split(a.lines[k], ','), p = split(a.lines[k - 1], ',');
+    for (int i = 0; i < 6; ++i)
+      tick = std::max(tick, std::hypot(std::hypot(foot(x, i, 2) - foot(p, i, 2), foot(x, i, 3) - foot(p, i, 3)),
+                                       foot(x, i, 4) - foot(p, i, 4)));
+  }
+  size_t same = 0;
+  double worst = 0.0;
+  for (size_t k = 1; k < a.lines.size(); ++k) {
+    const std::vector<std::string> x = split(a.lines[k], ','), y = split(b.lines[k], ',');
+    bool contacts = true;
+    for (int i = 0; i < 6; ++i) contacts = contacts && x[size_t(1 + i * 8)] == y[size_t(1 + i * 8)];
+    if (!contacts) continue;
+    ++same;
+    for (int i = 0; i < 6; ++i)
+      worst = std::max(worst, std::hypot(std::hypot(foot(x, i, 2) - foot(y, i, 2), foot(x, i, 3) - foot(y, i, 3)),
+                                         foot(x, i, 4) - foot(y, i, 4)));
+  }
+  EXPECT_GE(double(same) / double(a.lines.size() - 1), 0.97);
+  EXPECT_LT(worst, tick + 0.5);
+  std::printf("[ measured ] CLI float vs fixed: %zu of %zu rows same contacts, feet within %.3f mm (a tick: %.3f)\n",
+              same, a.lines.size() - 1, worst, tick);
+}
+
+TEST(GaitCli, TrajectoryOptionChangesTheSwing) {
+  const std::string base = "gait --robot dog12 --gait trot --vx 100 --duration 1.5 --dt 0.02 --trajectory ";
+  const Result rect = run(base + "rectangle");
+  const Result bez = run(base + "bezier");
+  ASSERT_EQ(rect.status, 0);
+  ASSERT_EQ(bez.status, 0);
+  ASSERT_EQ(rect.lines.size(), bez.lines.size());
+  int differ = 0;
+  for (size_t k = 1; k < rect.lines.size(); ++k) differ += rect.lines[k] != bez.lines[k] ? 1 : 0;
+  EXPECT_GT(differ, 10);
+}
+
+}  // namespace

@@ -6,7 +6,8 @@
 //   reported and bounded here);
 // - foot paths are continuous: no foot moves more than the step bound of
 //   gait_test_util.h in one tick;
-// - the static stability margin stays positive for walk, crawl and wave;
+// - the static stability margin stays positive for walk, crawl and wave
+//   (and the hexapods' tripod and ripple);
 // - the walk ends standing on all feet at home.
 #include "gait_test_util.h"
 
@@ -27,8 +28,12 @@ double lift_reach_mm(const RobotModel& m) {
   return (a1 + std::sqrt(a2 * a2 - (z + h) * (z + h))) - (a1 + std::sqrt(a2 * a2 - z * z));
 }
 
+// Gaits that must keep the CoM inside the support polygon: walk, crawl and
+// wave (the issue), and the hexapods' tripod and ripple too (three or more
+// feet down, on both sides).
 bool static_gait(const GaitTable& g) {
-  return std::string(g.name) == "walk" || std::string(g.name) == "crawl" || std::string(g.name) == "wave";
+  const std::string n = g.name;
+  return n == "walk" || n == "crawl" || n == "wave" || n == "tripod" || n == "ripple";
 }
 
 struct SweepResult {

@@ -33,6 +33,7 @@ struct GaitConfig {
   bool shift_x_only = false;    //!< planar legs: the body can only shift along x
   uint8_t min_support = 2;      //!< never lift a foot if fewer would stay down
   int8_t unit_shift = 0;        //!< working units of the support polygon (stability.h)
+  S edge_mm[kMaxLegs];          //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
   VelocityLimits<S> limits;
 };
 
@@ -64,6 +65,11 @@ GaitConfig<S> make_gait_config(const RobotModel& model, const AnyLeg<S>* legs, c
   c.unit_shift = gait_units::shift_for(reach + reach);
   c.limits = compute_velocity_limits(model, legs, c.home, shape, c.step_height_mm,
                                      scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
+  for (uint8_t i = 0; i < model.leg_count; ++i) {
+    S shortest = c.limits.stride_mm[i][0];
+    for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm[i][k]);
+    c.edge_mm[i] = shortest * scalar<S>(0.5);
+  }
   // Ramps: from standing to the top forward speed of a trot-like duty in one
   // default cycle, which keeps every first stance within its stride.
   const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));

@@ -5,19 +5,21 @@
 //! frame of the neutral standing pose); body_pose() says where the body is
 //! in it (body shift, height, sit/stand, the user's pose offsets).
 //!
-//! Each tick: the command ramps toward its target (acceleration limited); the
-//! body moves by v dt and turns by w dt; feet on the ground move by the
-//! inverse (stance.h), so they stay put on the ground and reproduce the
-//! command exactly; a foot lifts when the phase clock passes its offset
-//! (gait_table.h), if enough feet stay down; a foot in the air follows the
-//! swing shape from where it lifted to its touch-down point, home moved
-//! forward by half a stance's travel (stance.h), which moves at most
-//! max_target_step per tick; it lands when its swing time is over. Walking
-//! starts from standing (all feet home) and stops back to it: with the
-//! command at zero, a foot away from home takes one more step and a foot at
-//! home stays down, until every foot is home and the body shift is back to
-//! zero. Gait changes keep feet in the air on their old swing until they
-//! land, so no foot jumps. Body shift for walk and crawl: body_shift.h.
+//! Each tick: the command ramps toward its plan (velocity_limits.h) in
+//! stride per cycle, so a stance's travel depends on the phase only; the body
+//! moves along the arc of v dt and w dt, and feet on the ground move by the
+//! inverse (stance.h): they stay put on the ground and reproduce the command
+//! exactly. A foot lifts when the phase clock passes its offset (gait
+//! table), if enough feet stay down; a foot in the air follows the swing
+//! shape from where it lifted to its touch-down point (home moved forward by
+//! half its coming stance's travel; the point moves at most
+//! target_speed_mm_s) and lands when its swing time is over. Walking starts
+//! from standing and stops back to it: with the command at zero a foot away
+//! from home takes one more step and a foot at home stays down, until every
+//! foot is home and the body shift is back to zero. Gait changes keep feet
+//! in the air on their old swing, so no foot jumps. Body shift for walk and
+//! crawl: body_shift.h. Set-up and ramps: gait_engine_ramp.h; the walking
+//! tick: gait_engine_step.h.
 #ifndef STRIDER_GAIT_GAIT_ENGINE_H
 #define STRIDER_GAIT_GAIT_ENGINE_H
 
@@ -64,30 +66,7 @@ template <typename S>
 class GaitEngine {
  public:
   //! Takes the configuration and a gait; the robot stands (or sits).
-  void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false) {
-    cfg_ = config;
-    base_ = gait;
-    load_table(gait);
-    for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
-      foot_[i] = cfg_.home[i];
-      contact_[i] = true;
-      pending_[i] = false;
-    }
-    state_ = sitting ? GaitState::kSitting : GaitState::kStanding;
-    progress_ = sitting ? S(0) : S(1);
-    vx_ = vy_ = wz_ = S(0);
-    hz_ = cfg_.limits.min_hz;
-    period_ = S(1) / hz_;
-    from_ = to_ = VelocityPlan<S>{S(0), S(0), S(0), hz_, false};
-    ramp_ = S(1);
-    shift_.reset();
-    pose_ = goal_pose_ = BodyOffsets<S>::zero();
-    odo_x_ = odo_y_ = odo_yaw_ = S(0);
-    odo_c_ = S(1);
-    odo_s_ = S(0);
-    support_.build(foot_, contact_, cfg_.leg_count, cfg_.foot_radius_mm, cfg_.unit_shift);
-    update_margin();
-  }
+  void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false);
 
   // ---- commands --------------------------------------------------------------
 
@@ -95,7 +74,8 @@ class GaitEngine {
   //! percent. Clamped to the robot's limits (limited() tells). A non-zero
   //! command starts walking from standing; zero stops at the end of a step.
   void set_command(S vx, S vy, S wz, S speed_pct = scalar<S>(100.0)) {
-    const S k = clamp(speed_pct, S(0), scalar<S>(100.0)) * scalar<S>(0.01);
+    constexpr S hundred = scalar<S>(100.0);
+    const S k = clamp(speed_pct, S(0), hundred) / hundred;  // exact at 100 %
     cmd_vx_ = vx * k;
     cmd_vy_ = vy * k;
     cmd_wz_ = wz * k;
@@ -104,11 +84,7 @@ class GaitEngine {
   //! Keep stepping in place when the command is zero (default: stop).
   void set_step_in_place(bool on) { step_in_place_ = on; }
   //! Changes the gait, also while walking (feet in the air finish their swing).
-  void set_gait(const GaitTable& gait) {
-    base_ = gait;
-    load_table(relabel_ ? gait_table::relabeled(gait, quarter_) : gait);
-    replan();
-  }
+  void set_gait(const GaitTable& gait);
   void stand_up() { if (state_ == GaitState::kSitting) state_ = GaitState::kStandingUp; }
   //! Sits down from standing; while walking, stops first.
   void sit_down() {
@@ -135,7 +111,7 @@ class GaitEngine {
       case GaitState::kWalking:
       case GaitState::kStopping: step_walk(dt); break;
     }
-    update_margin();
+    margin_fresh_ = false;
   }
 
   // ---- outputs ---------------------------------------------------------------
@@ -155,8 +131,13 @@ class GaitEngine {
   }
   S shift_x_mm() const { return shift_.x_mm(); }
   S shift_y_mm() const { return shift_.y_mm(); }
-  //! Static stability margin of the CoM [mm] (stability.h), this tick.
-  S margin_mm() const { return margin_; }
+  //! Static stability margin of the CoM [mm] (stability.h), this tick;
+  //! computed when asked (once per tick), so a firmware that does not ask
+  //! does not pay for it.
+  S margin_mm() const {
+    if (!margin_fresh_) update_margin();
+    return margin_;
+  }
   //! The velocity being walked (vx, vy [mm/s], wz [rad/s]) and step rate [Hz].
   S vx() const { return vx_; }
   S vy() const { return vy_; }
@@ -164,6 +145,9 @@ class GaitEngine {
   S step_hz() const { return hz_; }
   //! True when the last command was scaled down to the robot's limits.
   bool limited() const { return to_.limited; }
+  //! True when the body stood still this tick because a foot on the ground
+  //! was at the edge of its reach and could not lift (after abrupt changes).
+  bool held() const { return held_; }
   const VelocityPlan<S>& target_plan() const { return to_; }
   //! Body odometry since configure(): position [mm] and heading [rad].
   S odometry_x() const { return odo_x_; }
@@ -174,54 +158,35 @@ class GaitEngine {
   S odometry_sin() const { return odo_s_; }
   //! How far the body travels [mm] and turns [rad] if the command is set to
   //! zero now (the ramp down, see replan()).
-  S stopping_distance_mm() const { return hypot(vx_, vy_) * stop_time() * scalar<S>(0.5); }
-  S stopping_angle_rad() const { return abs(wz_) * stop_time() * scalar<S>(0.5); }
+  S stopping_distance_mm() const { return hypot(now_s_.x, now_s_.y) * stop_cycles() / S(2); }
+  S stopping_angle_rad() const { return abs(now_s_.yaw) * stop_cycles() / S(2); }
   Phase16 phase() const { return clock_.now(); }
   const GaitTable& table() const { return table_; }
   const GaitConfig<S>& config() const { return cfg_; }
   const SupportPolygon<S>& support() const { return support_; }
 
  private:
-  void load_table(const GaitTable& t) {
-    table_ = t;
-    swing_len_ = phase_span(1.0 - double(t.duty));
-    duty_ = scalar<S>(double(t.duty));
-    inv_swing_ = scalar<S>(1.0 / (1.0 - double(t.duty)));
-    inv_stance_ = scalar<S>(1.0 / double(t.duty));
-    uint32_t latest_end = 0;
-    for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
-      offset_[i] = phase16(double(t.offset[i]));
-      const uint32_t end = uint32_t(offset_[i]) + swing_len_;
-      if (end <= kPhaseOne && end > latest_end) latest_end = end;
-    }
-    // Start just before the first lift-off, or at the four-foot window
-    // before it when the body must shift first.
-    start_phase_ = t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
-  }
+  void load_table(const GaitTable& t);
 
   S budget() const { return table_.shift_body ? cfg_.shift_budget_mm : S(0); }
 
-  void replan() {
-    from_ = VelocityPlan<S>{vx_, vy_, wz_, hz_, false};
-    to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), table_.shift_body);
-    const S dv = max_of(abs(to_.vx_mm_s - vx_), abs(to_.vy_mm_s - vy_));
-    const S dw = abs(to_.wz_rad_s - wz_);
-    S time = max_of(dv / cfg_.accel_mm_s2, dw / cfg_.yaw_accel_rad_s2);
-    // At least one cycle at the slower step rate: a foot's first stance after
-    // a start (or a change) then stays within its stride.
-    if (dv > S(0) || dw > S(0)) time = max_of(time, S(1) / min_of(hz_, to_.step_hz));
-    ramp_rate_ = time > scalar<S>(0.001) ? S(1) / time : scalar<S>(1000.0);
-    ramp_ = S(0);
-    // A faster step rate starts at once (feet keep their place, only their
-    // speed changes): stances get shorter, never longer than planned. A
-    // slower one waits for the end of the ramp, when the velocity matches it.
-    if (to_.step_hz > hz_ || ramp_rate_ >= scalar<S>(1000.0)) set_rate(to_.step_hz);
-  }
+  //! A command as a stride per cycle (so that a foot's travel over a stance
+  //! depends on the phase only, not on how the step rate changes meanwhile)
+  //! and the step rate.
+  struct Stride {
+    S x, y;  //!< body travel per cycle [mm]
+    S yaw;   //!< body turn per cycle [rad]
+    S hz;    //!< step rate [Hz]
+  };
 
-  S stop_time() const {
+  //! Plans the command and starts the ramp to it (gait_engine_ramp.h).
+  void replan();
+
+  //! Cycles a stop from now takes (replan() with a zero command).
+  S stop_cycles() const {
     const S rest_hz = min_of(cfg_.limits.min_hz, cfg_.limits.servo_hz(S(0), duty_));
     const S t = max_of(max_of(abs(vx_), abs(vy_)) / cfg_.accel_mm_s2, abs(wz_) / cfg_.yaw_accel_rad_s2);
-    return max_of(t, S(1) / min_of(hz_, rest_hz));
+    return max_of(t * max_of(rest_hz, hz_), S(1));
   }
 
   bool command_zero() const {
@@ -230,61 +195,17 @@ class GaitEngine {
   bool wants_to_walk() const { return !command_zero() || step_in_place_; }
   bool at_rest() const { return ramp_ >= S(1) && vx_ == S(0) && vy_ == S(0) && wz_ == S(0) && !step_in_place_; }
 
-  void start_walking() {
-    relabel_ = base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
-    quarter_ = 0;
-    if (relabel_) {
-      // The quadrant of the direction of travel (seed 000 section 3.3).
-      const S ax = abs(to_.vx_mm_s), ay = abs(to_.vy_mm_s);
-      quarter_ = ax >= ay ? (to_.vx_mm_s >= S(0) ? 0 : 2) : (to_.vy_mm_s > S(0) ? 1 : 3);
-      load_table(gait_table::relabeled(base_, quarter_));
-    } else {
-      load_table(base_);
-    }
-    clock_.reset(start_phase_);
-    for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
-      pending_[i] = false;
-      stance_elapsed_[i] = 0;
-    }
-    in_window_ = false;
-    window_group_ = kNoGroup;
-    state_ = GaitState::kWalking;
-  }
+  void start_walking();
 
-  void step_transition(S dt) {
-    const S d = dt / cfg_.transition_s;
-    if (state_ == GaitState::kStandingUp) {
-      progress_ = min_of(progress_ + d, S(1));
-      if (progress_ >= S(1)) state_ = GaitState::kStanding;
-    } else {
-      progress_ = max_of(progress_ - d, S(0));
-      if (progress_ <= S(0)) state_ = GaitState::kSitting;
-    }
-  }
+  //! Stand-up / sit-down progress, and the body offsets' rate limit.
+  void step_transition(S dt);
+  void step_pose(S dt);
 
-  void step_pose(S dt) {
-    const S dp = cfg_.pose_speed_mm_s * dt, da = cfg_.pose_rate_rad_s * dt;
-    pose_.translation_mm.x += clamp(goal_pose_.translation_mm.x - pose_.translation_mm.x, -dp, dp);
-    pose_.translation_mm.y += clamp(goal_pose_.translation_mm.y - pose_.translation_mm.y, -dp, dp);
-    pose_.translation_mm.z += clamp(goal_pose_.translation_mm.z - pose_.translation_mm.z, -dp, dp);
-    pose_.roll_rad += clamp(goal_pose_.roll_rad - pose_.roll_rad, -da, da);
-    pose_.pitch_rad += clamp(goal_pose_.pitch_rad - pose_.pitch_rad, -da, da);
-    pose_.yaw_rad += clamp(goal_pose_.yaw_rad - pose_.yaw_rad, -da, da);
-  }
+  //! Moves the ramp on by this tick's phase; the velocity is stride x rate.
+  void step_command(S dt);
 
-  void step_command(S dt) {
-    if (ramp_ >= S(1)) return;
-    ramp_ = min_of(ramp_ + dt * ramp_rate_, S(1));
-    vx_ = from_.vx_mm_s + (to_.vx_mm_s - from_.vx_mm_s) * ramp_;
-    vy_ = from_.vy_mm_s + (to_.vy_mm_s - from_.vy_mm_s) * ramp_;
-    wz_ = from_.wz_rad_s + (to_.wz_rad_s - from_.wz_rad_s) * ramp_;
-    if (ramp_ >= S(1)) set_rate(to_.step_hz);
-  }
-
-  void set_rate(S hz) {
-    if (hz == hz_) return;
-    hz_ = hz;
-    period_ = S(1) / hz_;
+  static Stride lerp(const Stride& a, const Stride& b, S t) {
+    return Stride{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.yaw + (b.yaw - a.yaw) * t, a.hz + (b.hz - a.hz) * t};
   }
 
   bool near_home(uint8_t i) const {
@@ -302,35 +223,33 @@ class GaitEngine {
     return down > cfg_.min_support;
   }
 
-  Vec3<S> touchdown(uint8_t i) const {
-    return touchdown_point(cfg_.home[i], land_vx_, land_vy_, land_wz_, duty_ * period_);
+  //! True when foot p of leg i is beyond kEdgeShare of the longest stride
+  //! it may make in its direction from home (velocity limits; the IK limit
+  //! is at 0.5 / kStrideShare = 0.556): a foot on the ground there lifts
+  //! early, or, without the support to lift, holds the body still. Never
+  //! while the command is steady (the plan keeps strides within the limits).
+  bool at_edge(uint8_t i) const { return beyond_edge(i, foot_[i]); }
+  bool beyond_edge(uint8_t i, const Vec3<S>& p) const {
+    const S dx = p.x - cfg_.home[i].x, dy = p.y - cfg_.home[i].y;
+    const S r = cfg_.edge_mm[i];
+    if (abs(dx) + abs(dy) <= r) return false;  // inside the shortest stride's diamond: no product
+    const S stride = cfg_.limits.leg_stride(i, dx, dy);
+    const S d = gait_units::length_mm(dx, dy, cfg_.unit_shift);
+    constexpr S share = scalar<S>(kEdgeShare);
+    return d > stride * share;
   }
 
-  //! The mean velocity of the next stance (duty / f seconds) along the
-  //! command ramp: a foot landing now is placed for it, so that its stance
-  //! stays centred on home while the command ramps (stance.h).
-  void update_landing_velocity() {
-    land_vx_ = vx_;
-    land_vy_ = vy_;
-    land_wz_ = wz_;
-    if (ramp_ >= S(1)) return;
-    const S stance = duty_ * period_;
-    const S left = S(1) - ramp_;             // ramp still to go
-    const S finish = left / ramp_rate_;      // its time [s]
-    // lag = (integral over the stance of (1 - ramp)) / stance
-    const S lag = finish >= stance ? left - ramp_rate_ * stance * scalar<S>(0.5)
-                                   : left * finish * scalar<S>(0.5) / stance;
-    const S ahead = left - lag;  // how much further than now the mean is along the ramp
-    land_vx_ += (to_.vx_mm_s - from_.vx_mm_s) * ahead;
-    land_vy_ += (to_.vy_mm_s - from_.vy_mm_s) * ahead;
-    land_wz_ += (to_.wz_rad_s - from_.wz_rad_s) * ahead;
-  }
+  //! Where foot i lands (stance.h's touchdown_point with cached terms).
+  Vec3<S> touchdown(uint8_t i);
+  //! The mean stride per cycle over the next stance along the ramp.
+  void update_landing();
 
   void step_walk(S dt);
   void step_shift(S dt);
-  void update_margin();
+  void update_margin() const;
 
   static constexpr uint8_t kNoGroup = 0xFF;
+  static constexpr double kEdgeShare = 0.53;
 
   GaitConfig<S> cfg_;
   GaitTable base_{};   // as given
@@ -348,10 +267,10 @@ class GaitEngine {
   bool step_in_place_ = false;
 
   S cmd_vx_ = S(0), cmd_vy_ = S(0), cmd_wz_ = S(0);
-  VelocityPlan<S> from_{}, to_{};
-  S ramp_ = S(1), ramp_rate_ = S(1);
-  S vx_ = S(0), vy_ = S(0), wz_ = S(0), hz_ = S(1), period_ = S(1);
-  S land_vx_ = S(0), land_vy_ = S(0), land_wz_ = S(0);  // mean velocity of the next stance
+  VelocityPlan<S> to_{};
+  Stride from_s_{}, to_s_{}, now_s_{}, land_s_{};
+  S ramp_ = S(1), ramp_per_cycle_ = S(1);
+  S vx_ = S(0), vy_ = S(0), wz_ = S(0), hz_ = S(1);
 
   PhaseClock clock_;
   Vec3<S> foot_[kMaxLegs];
@@ -363,23 +282,34 @@ class GaitEngine {
   S leg_inv_swing_[kMaxLegs];
   uint32_t leg_swing_len_[kMaxLegs] = {};
   uint32_t swing_elapsed_[kMaxLegs] = {};
-  uint32_t stance_elapsed_[kMaxLegs] = {};
+  int32_t stance_elapsed_[kMaxLegs] = {};  // phase since touch-down (may start negative)
 
   SupportPolygon<S> support_;
   SupportPolygon<S> next_support_;
   BodyShift<S> shift_;
+  bool held_ = false;
   bool in_window_ = false;           // every foot down, shifting for the next swing
   uint8_t window_group_ = kNoGroup;  // leg that leads the next swing group
   Phase16 window_start_ = 0;
   S window_inv_ = S(0);
 
   BodyOffsets<S> pose_{}, goal_pose_{};
-  S margin_ = S(0);
+  mutable S margin_ = S(0);
+  mutable bool margin_fresh_ = false;
+  // Per-tick work that only changes with the command: the body step and the
+  // rotation and offset of every touch-down point.
+  struct StepCache {
+    S vx, vy, wz, dt;
+    BodyStep<S> step;
+  } step_cache_{};
+  bool td_fresh_ = false;
+  S td_cos_ = S(1), td_sin_ = S(0), td_dx_ = S(0), td_dy_ = S(0);
   S odo_x_ = S(0), odo_y_ = S(0), odo_yaw_ = S(0), odo_c_ = S(1), odo_s_ = S(0);
 };
 
 }  // namespace strider
 
+#include "gait_engine_ramp.h"
 #include "gait_engine_step.h"
 
 #endif  // STRIDER_GAIT_GAIT_ENGINE_H

@@ -11,20 +11,39 @@ namespace strider {
 template <typename S>
 void GaitEngine<S>::step_walk(S dt) {
   step_command(dt);
-  update_landing_velocity();
-  const BodyStep<S> step = BodyStep<S>::make(vx_, vy_, wz_, dt);
+  update_landing();
+  StepCache& sc = step_cache_;
+  if (!(sc.vx == vx_ && sc.vy == vy_ && sc.wz == wz_ && sc.dt == dt))
+    sc = StepCache{vx_, vy_, wz_, dt, BodyStep<S>::make(vx_, vy_, wz_, dt)};
+  BodyStep<S> step = sc.step;
+  // A foot on the ground at the edge of its reach that this step would take
+  // farther out holds the body for this tick (it lifts as soon as it can).
+  held_ = false;
+  bool edge[kMaxLegs] = {};
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
+  for (uint8_t i = 0; i < cfg_.leg_count && !held_; ++i) {
+    if (!edge[i]) continue;
+    const Vec3<S> next = step.move_ground_point(foot_[i]);
+    const S before = abs(foot_[i].x - cfg_.home[i].x) + abs(foot_[i].y - cfg_.home[i].y);
+    const S after = abs(next.x - cfg_.home[i].x) + abs(next.y - cfg_.home[i].y);
+    held_ = after > before;
+  }
+  if (held_) step = BodyStep<S>::none();
   // Odometry: the step in the world frame; heading kept as cos/sin,
   // renormalised by one Newton step (no trig per tick).
   odo_x_ += odo_c_ * step.dx_mm - odo_s_ * step.dy_mm;
   odo_y_ += odo_s_ * step.dx_mm + odo_c_ * step.dy_mm;
   odo_yaw_ += step.dyaw;
-  const S c = odo_c_ * step.cos_yaw - odo_s_ * step.sin_yaw;
-  const S s = odo_s_ * step.cos_yaw + odo_c_ * step.sin_yaw;
-  const S k = (S(3) - (c * c + s * s)) * scalar<S>(0.5);
-  odo_c_ = c * k;
-  odo_s_ = s * k;
+  if (step.dyaw != S(0)) {
+    const S c = odo_c_ * step.cos_yaw - odo_s_ * step.sin_yaw;
+    const S s = odo_s_ * step.cos_yaw + odo_c_ * step.sin_yaw;
+    constexpr S half = scalar<S>(0.5);
+    const S k = (S(3) - (c * c + s * s)) * half;
+    odo_c_ = c * k;
+    odo_s_ = s * k;
+  }
 
-  clock_.advance(dt * hz_);
+  clock_.advance(dt, hz_);
   const uint32_t delta = Phase16(clock_.now() - clock_.before());
   const uint8_t n = cfg_.leg_count;
   bool changed = false;
@@ -36,7 +55,7 @@ void GaitEngine<S>::step_walk(S dt) {
     if (swing_elapsed_[i] < leg_swing_len_[i]) continue;
     foot_[i] = Vec3<S>(target_[i].x, target_[i].y, cfg_.home[i].z);
     contact_[i] = true;
-    stance_elapsed_[i] = swing_elapsed_[i] - leg_swing_len_[i];
+    stance_elapsed_[i] = int32_t(swing_elapsed_[i] - leg_swing_len_[i]);
     landed[i] = true;
     changed = true;
   }
@@ -44,13 +63,17 @@ void GaitEngine<S>::step_walk(S dt) {
   for (uint8_t i = 0; i < n; ++i) {
     if (!contact_[i] || landed[i]) continue;
     foot_[i] = step.move_ground_point(foot_[i]);
-    stance_elapsed_[i] = min_of(stance_elapsed_[i] + delta, kPhaseOne);
+    stance_elapsed_[i] = min_of(stance_elapsed_[i] + int32_t(delta), int32_t(kPhaseOne));
   }
   // Lift-offs when the clock passes a foot's offset.
   for (uint8_t i = 0; i < n; ++i) {
     if (!contact_[i]) continue;
     const bool crossed = clock_.crossed(offset_[i]);
-    if (crossed) pending_[i] = true;
+    // Lift at the offset; or, after a gait change that made a foot miss its
+    // offset, as soon as its stance is a sixteenth of a cycle overdue; or
+    // when the foot reaches the edge of its stride (a command change).
+    if (crossed || stance_elapsed_[i] >= int32_t(kPhaseOne - swing_len_ + kPhaseOne / 16) || (edge[i] && at_edge(i)))
+      pending_[i] = true;
     if (!pending_[i]) continue;
     if (done(i)) {
       pending_[i] = false;  // home already: this foot stays down
@@ -83,7 +106,8 @@ void GaitEngine<S>::step_walk(S dt) {
   }
   for (uint8_t i = 0; i < n; ++i) {
     if (!contact_[i]) continue;
-    foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(stance_elapsed_[i]) * inv_stance_);
+    const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
+    foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
   }
   if (changed) support_.build(foot_, contact_, n, cfg_.foot_radius_mm, cfg_.unit_shift);
   step_shift(dt);
@@ -144,18 +168,22 @@ void GaitEngine<S>::step_shift(S dt) {
     }
     S to_x = S(0), to_y = S(0);
     if (lead != kNoGroup) {
-      const S lead_s = phase_to<S>(ahead) * period_;  // time until it lifts [s]
-      BodyShift<S>::correction(next_support_, foot_, ref_x + vx_ * lead_s, ref_y + vy_ * lead_s, cfg_.margin_mm,
+      const S cycles = phase_to<S>(ahead);  // until it lifts
+      BodyShift<S>::correction(next_support_, foot_, ref_x + now_s_.x * cycles, ref_y + now_s_.y * cycles, cfg_.margin_mm,
                                cfg_.shift_x_only, to_x, to_y);
     }
     const S t = window_inv_ == S(0) ? S(1) : phase_to<S>(Phase16(now - window_start_)) * window_inv_;
     shift_.window_target(t, to_x, to_y, tx, ty);
   }
-  shift_.step_toward(tx, ty, max_step);
+  // Never beyond the reach kept for it (the walk and crawl stay within it,
+  // test/gait; a switch from another gait mid-stride may ask for more).
+  const S b = cfg_.shift_budget_mm;
+  shift_.step_toward(clamp(tx, -b, b), clamp(ty, -b, b), max_step);
 }
 
 template <typename S>
-void GaitEngine<S>::update_margin() {
+void GaitEngine<S>::update_margin() const {
+  margin_fresh_ = true;
   const BodyPose<S> bp = body_pose();
   S cx = bp.translation_mm.x + cfg_.com_x_mm, cy = bp.translation_mm.y + cfg_.com_y_mm;
   const bool tilted = bp.roll_rad != S(0) || bp.pitch_rad != S(0) || bp.yaw_rad != S(0);

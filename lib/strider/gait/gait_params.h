@@ -38,7 +38,7 @@ constexpr GaitParams kGaitParams[kRobotCount] = {
     // seed's "wide ends of the legs" (a rubber cap over the shank's tip).
     // Seed 000 moves at 155 mm/s and turns 360 deg in 6 s; the crawl here,
     // at the servo-speed limit, is in docs/gaits.md. Lowers 30 mm to sit.
-    {"sprawl8", "crawl", SwingShape::kEllipse, 20.0f, 40.0f, 0.8f, 0.0f, 10.0f, 0.0f, 0.0f, 4.0f, 12.0f,
+    {"sprawl8", "crawl", SwingShape::kEllipse, 20.0f, 40.0f, 0.8f, 0.0f, 10.0f, 0.0f, 0.0f, 6.0f, 12.0f,
      30.0f, 1.0f},
     // mammal8 (seed 003): short 30 mm steps of a 140 mm leg under a 1.5 kg
     // body; the seed's walk is slow (2.5 mm/s measured), so a 2 s cycle.

@@ -70,9 +70,15 @@ class PhaseClock {
   //! Returns true when the cycle wrapped past phase 0.
   template <typename S>
   bool advance(S cycles) {
-    previous_ = phase_;
-    phase_ += cycles_to_q32(cycles);
-    return phase_ < previous_;
+    return advance_q32(cycles_to_q32(cycles));
+  }
+  //! Moves on by dt [s] at hz [Hz]. For Fixed the product of the two raw
+  //! values is the step in 2^-32 cycle exactly (no rounding to 2^-16).
+  bool advance(float dt, float hz) { return advance_q32(cycles_to_q32(dt * hz)); }
+  bool advance(Fixed dt, Fixed hz) {
+    if (dt.raw() <= 0 || hz.raw() <= 0) return advance_q32(0);
+    const uint32_t a = uint32_t(dt.raw()), b = uint32_t(hz.raw());
+    return advance_q32(a > 0xFFFF0000u / b ? 0xFFFF0000u : a * b);
   }
 
   //! True when the last advance() passed `mark` (before < mark <= now, on the
@@ -84,6 +90,12 @@ class PhaseClock {
   }
 
  private:
+  bool advance_q32(uint32_t step) {
+    previous_ = phase_;
+    phase_ += step;
+    return phase_ < previous_;
+  }
+
   uint32_t phase_ = 0;
   uint32_t previous_ = 0;
 };

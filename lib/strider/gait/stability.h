@@ -88,7 +88,8 @@ class SupportPolygon {
   //! The stability margin [mm] of the point (x, y) [mm]: signed distance to
   //! the boundary of the hull of the contact discs, positive inside.
   S margin(const Vec3<S>* feet, S x_mm, S y_mm) const {
-    if (count_ == 0) return scalar<S>(kNoSupportMarginMm);
+    constexpr S none = scalar<S>(kNoSupportMarginMm);
+    if (count_ == 0) return none;
     const Vec3<S> p(unit(x_mm), unit(y_mm), S(0));
     S inside = S(0);
     bool is_inside = count_ >= 3;
@@ -228,7 +229,8 @@ class SupportPolygon {
     for (uint8_t k = 0; k < n; ++k) {
       // Inside edge k: u.x (y - v.y) - u.y (x + t - v.x) = c - u.y t >= 0.
       const S c = u[k].x * (p.y - v[k].y) - u[k].y * (p.x - v[k].x);
-      if (abs(u[k].y) < scalar<S>(0.05)) continue;  // an edge along x: no x move helps
+      constexpr S flat = scalar<S>(0.05);
+      if (abs(u[k].y) < flat) continue;  // an edge along x: no x move helps
       const S t = c / u[k].y;
       if (u[k].y < S(0)) {  // t >= c / u.y
         if (!has_lo || t > lo) lo = t;
@@ -238,7 +240,8 @@ class SupportPolygon {
         has_hi = true;
       }
     }
-    if (has_lo && has_hi && hi < lo) return (lo + hi) * scalar<S>(0.5);
+    constexpr S half = scalar<S>(0.5);
+    if (has_lo && has_hi && hi < lo) return (lo + hi) * half;
     if (has_lo && lo > S(0)) return lo;
     if (has_hi && hi < S(0)) return hi;
     return S(0);

@@ -21,17 +21,21 @@ namespace strider {
 //! power: error below 3e-5 for |a| <= 0.5, below 1e-7 for |a| <= 0.2.
 template <typename S>
 void small_angle_cos_sin(S a, S& c, S& s) {
+  // constexpr: the constants fold at compile time (the AVR has no double).
+  constexpr S k2 = scalar<S>(0.5), k3 = scalar<S>(1.0 / 6.0), k4 = scalar<S>(1.0 / 24.0), k5 = scalar<S>(1.0 / 120.0);
   const S a2 = a * a;
-  c = S(1) - a2 * (scalar<S>(0.5) - a2 * scalar<S>(1.0 / 24.0));
-  s = a * (S(1) - a2 * (scalar<S>(1.0 / 6.0) - a2 * scalar<S>(1.0 / 120.0)));
+  c = S(1) - a2 * (k2 - a2 * k4);
+  s = a * (S(1) - a2 * (k3 - a2 * k5));
 }
 
 //! sin(a)/a and (1 - cos a)/a of a small angle [rad] (series as above).
 template <typename S>
 void small_angle_arc(S a, S& sinc, S& cosc) {
+  constexpr S k2 = scalar<S>(0.5), k3 = scalar<S>(1.0 / 6.0), k4 = scalar<S>(1.0 / 24.0);
+  constexpr S k5 = scalar<S>(1.0 / 120.0), k6 = scalar<S>(1.0 / 720.0);
   const S a2 = a * a;
-  sinc = S(1) - a2 * (scalar<S>(1.0 / 6.0) - a2 * scalar<S>(1.0 / 120.0));
-  cosc = a * (scalar<S>(0.5) - a2 * (scalar<S>(1.0 / 24.0) - a2 * scalar<S>(1.0 / 720.0)));
+  sinc = S(1) - a2 * (k3 - a2 * k5);
+  cosc = a * (k2 - a2 * (k4 - a2 * k6));
 }
 
 //! The body's motion over one tick, seen from the body.
@@ -83,7 +87,8 @@ S stance_sink_mm(S depth_mm, S sigma) {
 //! BodyStep (exact for a pure translation, no division by wz).
 template <typename S>
 Vec3<S> touchdown_point(const Vec3<S>& home, S vx, S vy, S wz, S stance_s) {
-  const S half = stance_s * scalar<S>(0.5);
+  constexpr S kHalf = scalar<S>(0.5);
+  const S half = stance_s * kHalf;
   const S alpha = wz * half;
   S c, s, a, b;
   small_angle_cos_sin(alpha, c, s);

@@ -110,7 +110,8 @@ SwingPoint<S> bezier(S s) {
 template <typename S>
 SwingPoint<S> swing_point(SwingShape shape, S s) {
   s = clamp(s, S(0), S(1));
-  const S one = S(1), half = scalar<S>(0.5);
+  constexpr S one = S(1), half = scalar<S>(0.5), inv_two_pi = scalar<S>(0.15915494309189535);
+  constexpr S k_pi = pi<S>(), k_two_pi = two_pi<S>();
   switch (shape) {
     case SwingShape::kRectangle: {
       const S three_s = s * S(3);
@@ -119,15 +120,15 @@ SwingPoint<S> swing_point(SwingShape shape, S s) {
       return SwingPoint<S>{one, S(3) - three_s};
     }
     case SwingShape::kCycloid: {
-      const S a = two_pi<S>() * s;
-      return SwingPoint<S>{s - sin(a) * scalar<S>(0.15915494309189535), (one - cos(a)) * half};
+      const S a = k_two_pi * s;
+      return SwingPoint<S>{s - sin(a) * inv_two_pi, (one - cos(a)) * half};
     }
     case SwingShape::kParabola: return SwingPoint<S>{s, S(4) * s * (one - s)};
     case SwingShape::kBezier: return swing_detail::bezier(s);
     case SwingShape::kSemicircle:
     case SwingShape::kEllipse: break;
   }
-  const S a = pi<S>() * s;
+  const S a = k_pi * s;
   return SwingPoint<S>{(one - cos(a)) * half, sin(a)};
 }
 
@@ -135,8 +136,9 @@ SwingPoint<S> swing_point(SwingShape shape, S s) {
 //! robot's step height step_mm: step_mm, except for the semicircle.
 template <typename S>
 S swing_apex_mm(SwingShape shape, S stride_mm, S step_mm) {
+  constexpr S half = scalar<S>(0.5);
   if (shape != SwingShape::kSemicircle) return step_mm;
-  return clamp(stride_mm * scalar<S>(0.5), step_mm * scalar<S>(0.5), step_mm);
+  return clamp(stride_mm * half, step_mm * half, step_mm);
 }
 
 }  // namespace strider

@@ -29,8 +29,10 @@
 //! stride L_i = R_i / f with R_i = |r_i| d. The step rate is 1 / cycle_s at
 //! low speed, raised so that strides stay at the preferred step length, and
 //! kept between R_i / L_max,i (the stride limit in r_i's direction; also
-//! |w| d / kMaxStanceTurnRad) and the servo limit above. When no rate satisfies both, the whole command is
-//! scaled down (direction and turning radius kept) and reported as limited.
+//! |w| d / kMaxStanceTurnRad) and the servo limit above. When no rate
+//! satisfies both, the whole command is scaled down (direction and turning
+//! radius kept) and reported as limited. Planar legs drop sideways commands.
+//! Legs mirrored across the body's x-z plane share their searches.
 #ifndef STRIDER_GAIT_VELOCITY_LIMITS_H
 #define STRIDER_GAIT_VELOCITY_LIMITS_H
 
@@ -185,6 +187,22 @@ Vec3<S> stride_point(const Vec3<S>& home, S dx, S dy, S L, SwingShape shape, S s
   return Vec3<S>(home.x + dx * along, home.y + dy * along, home.z + sp.w * swing_apex_mm(shape, L, step_mm));
 }
 
+//! The leg that is leg i mirrored across the body's x-z plane (mount, yaw,
+//! standing foot and joint ranges mirrored), or i itself when none is.
+inline uint8_t mirror_twin(const RobotModel& m, uint8_t i) {
+  const LegModel& a = m.legs[i];
+  auto near = [](float p, float q) { return p - q <= 1e-3f && q - p <= 1e-3f; };
+  for (uint8_t j = 0; j < m.leg_count; ++j) {
+    const LegModel& b = m.legs[j];
+    if (j == i || !near(a.mount_mm.x, b.mount_mm.x) || !near(a.mount_mm.y, -b.mount_mm.y) ||
+        !near(a.mount_mm.z, b.mount_mm.z) || !near(a.stand_mm.x, b.stand_mm.x) ||
+        !near(a.stand_mm.y, -b.stand_mm.y) || !near(a.stand_mm.z, b.stand_mm.z))
+      continue;
+    return j;
+  }
+  return i;
+}
+
 template <typename S>
 void joints_at(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& body_target,
                typename AnyLeg<S>::Joints& q) {
@@ -222,12 +240,21 @@ VelocityLimits<S> compute_velocity_limits(const RobotModel& model, const AnyLeg<
   const ReachProjection<S> proj = ReachProjection<S>::make(model);
   const S top = scalar<S>(2.0 * double(model.links.l1_mm + model.links.l2_mm + model.links.l3_mm));
   for (uint8_t i = 0; i < model.leg_count; ++i) {
+    // A leg mirrored across the body's x-z plane from one already done (every
+    // built-in model is symmetric) has the mirrored strides: direction k of
+    // one is direction -k of the other, and the same joint travel.
+    const uint8_t twin = d::mirror_twin(model, i);
+    if (twin < i) {
+      for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k)
+        lim.stride_mm[i][k] = lim.stride_mm[twin][(VelocityLimits<S>::kDirections - k) % VelocityLimits<S>::kDirections];
+      continue;
+    }
     for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) {
       const double deg = double(k) * 360.0 / VelocityLimits<S>::kDirections;
       const S dx = scalar<S>(model_math::cos_deg(deg)), dy = scalar<S>(model_math::sin_deg(deg));
       S lo = S(0), hi = top;
       if (!d::stride_ok(legs[i], proj, home[i], dx, dy, S(0), shape, step_height_mm)) hi = S(0);
-      for (uint8_t it = 0; it < 16 && hi - lo > scalar<S>(0.05); ++it) {
+      for (uint8_t it = 0; it < 16 && hi - lo > scalar<S>(0.5); ++it) {  // to 0.5 mm
         const S mid = (lo + hi) * scalar<S>(0.5);
         if (d::stride_ok(legs[i], proj, home[i], dx, dy, mid, shape, step_height_mm)) lo = mid;
         else hi = mid;

@@ -104,8 +104,8 @@ class Walker {
       Vec3<S> reached;
       r.ik_status = legs_[i].ik(t, r.q, reached);
       if (r.ik_status != IkStatus::kUnreachable) r.foot_mm = legs_[i].mount().leg_to_body(reached);
-      const bool slid = r.contact ? moved > scalar<S>(kClampToleranceMm)
-                                  : abs(t.z - leg_target.z) > scalar<S>(kClampToleranceMm);
+      constexpr S tolerance = scalar<S>(kClampToleranceMm);
+      const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
       r.status = worst(r.ik_status, slid ? IkStatus::kClamped : IkStatus::kOk);
     }
   }

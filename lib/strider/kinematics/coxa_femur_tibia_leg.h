@@ -33,6 +33,33 @@
 
 namespace strider {
 
+namespace leg_ik {
+
+//! The integer fast path of CoxaFemurTibiaLeg<Fixed>::ik() for the common
+//! case: target off the yaw axis, in front of it and strictly inside the
+//! femur-tibia annulus (a kOk solve of the target itself). Float, and every
+//! other case, returns false and takes the general path.
+template <typename Leg, typename S>
+bool cft_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 3>&) {
+  return false;
+}
+template <typename Leg>
+bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 3>& sol) {
+  int32_t x, y, v;
+  if (!wide::from_mm(target.x, leg.unit_shift, x) || !wide::from_mm(target.y, leg.unit_shift, y) ||
+      !wide::from_mm(target.z - leg.d1_mm, leg.unit_shift, v) || leg.coxa_unit.raw() >= (int32_t(8) << 16))
+    return false;
+  const uint32_t rho2 = wide::sq(x) + wide::sq(y);  // [Q6.24]
+  // rho >= 1/16 unit keeps ~16 significant bits; rho < 8 units fits wide units.
+  if (rho2 < 0x10000UL || rho2 >= 0x40000000UL) return false;
+  const int32_t h = wide::sqrt_sq(rho2) - wide::from_unit(leg.coxa_unit);  // eq 11, row 1
+  if (!solve_wide(leg.link, h, v, leg.branch, sol[1], sol[2])) return false;
+  sol[0] = wide::atan2_raw(target.y.raw(), target.x.raw());  // eq 12
+  return true;
+}
+
+}  // namespace leg_ik
+
 template <typename S>
 struct CoxaFemurTibiaLeg {
   static constexpr uint8_t kDof = 3;
@@ -69,6 +96,15 @@ struct CoxaFemurTibiaLeg {
   //! joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
+    Joints sol;
+    // Fixed's fast path: strictly inside the annulus is within the bounds
+    // below while max_clamp >= 0 (always false for float).
+    if (leg_ik::cft_solve_fast(*this, target, sol) && !(opt.max_clamp_mm < S(0))) {
+      if (!limits.contains(sol)) return leg_ik::finish(*this, target, sol, false, opt, q, reached);
+      q = sol;  // what finish() does for an exact solve inside the limits
+      reached = target;
+      return IkStatus::kOk;
+    }
     const S bound_z = reach_mm + opt.max_clamp_mm;
     const S bound_xy = coxa_mm + bound_z;
     if (!leg_ik::within(target.x, bound_xy) || !leg_ik::within(target.y, bound_xy) ||
@@ -77,7 +113,6 @@ struct CoxaFemurTibiaLeg {
     const S x = leg_ik::to_unit(target.x, unit_shift);
     const S y = leg_ik::to_unit(target.y, unit_shift);
     const S v = leg_ik::to_unit(target.z - d1_mm, unit_shift);  // eq 11, row 2
-    Joints sol;
     S rho = S(0);  // [unit]
     if (target.x == S(0) && target.y == S(0)) {
       sol[0] = leg_ik::free_angle(limits, 0, S(0));  // on the yaw axis

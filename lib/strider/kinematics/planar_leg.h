@@ -61,15 +61,32 @@ struct PlanarLeg {
   //! reachability and joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
+    Joints sol;
+    if (solve_fast(target, sol) && !(opt.max_clamp_mm < S(0))) {  // Fixed, strictly inside the annulus
+      if (!limits.contains(sol)) return leg_ik::finish(*this, target, sol, false, opt, q, reached);
+      q = sol;  // what finish() does for an exact solve inside the limits
+      reached = target;
+      return IkStatus::kOk;
+    }
     const S bound = a1_mm + a2_mm + opt.max_clamp_mm;
     if (!leg_ik::within(target.x, bound) || !leg_ik::within(target.z, bound) ||
         !leg_ik::within(target.y, opt.max_clamp_mm))
       return IkStatus::kUnreachable;
-    Joints sol;
     bool clamped = link.solve(leg_ik::to_unit(target.x, unit_shift), leg_ik::to_unit(target.z, unit_shift),
                               branch, sol[0], sol[1]);
     if (!(target.y == S(0))) clamped = true;  // projected onto the leg plane
     return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);
+  }
+
+ private:
+  // The integer two-link path (two_link.h) for a Fixed target in the leg
+  // plane; float, and every other case, takes the general path.
+  static bool solve_fast(const Vec3<float>&, JointVector<float, kDof>&) { return false; }
+  template <typename T>
+  bool solve_fast(const Vec3<T>& target, JointVector<T, kDof>& sol) const {
+    int32_t h, v;
+    return target.y == T(0) && leg_ik::wide::from_mm(target.x, unit_shift, h) &&
+           leg_ik::wide::from_mm(target.z, unit_shift, v) && leg_ik::solve_wide(link, h, v, branch, sol[0], sol[1]);
   }
 };
 

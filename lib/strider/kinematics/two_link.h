@@ -82,6 +82,130 @@ struct TwoLink {
   }
 };
 
+
+//! Fixed's integer fast path (docs/fixed-point.md, "Leg IK"). Lengths are
+//! "wide" working units: int32 Q3.28 (|v| < 8 units), so a length's top 16
+//! bits are Q3.12 and its square needs two 16x16 products; squares are Q6.24,
+//! which is a Fixed square in units [unit^2] shifted left by 8 (whole bytes).
+namespace wide {
+
+//! u << k for k in [0, 31]: whole bytes, then single bits (avr-gcc loops
+//! over every bit of a variable 32-bit shift).
+STRIDER_ALWAYS_INLINE uint32_t shl(uint32_t u, uint8_t k) {
+  if (k & 16) u <<= 16;
+  if (k & 8) u <<= 8;
+  for (k &= 7; k != 0; --k) u <<= 1;
+  return u;
+}
+
+//! Fixed [mm] to wide units of a leg with unit shift n; false when |v| is
+//! 8 units or more (then the caller takes the general path).
+inline bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
+  uint32_t m = Fixed::abs_raw(v_mm.raw());
+  const int8_t k = int8_t(12 - shift);  // wide = raw 2^(12 - n)
+  if (k >= 0) {
+    if (k > 15) return false;
+    // m 2^k < 2^31; a variable 32-bit shift is a loop, so test the common
+    // case (k <= 7, m < 2^24) first.
+    if ((k > 7 || m >= 0x1000000UL) && m >= (uint32_t(0x80000000UL) >> k)) return false;
+    m = shl(m, uint8_t(k));
+  } else {
+    if (k < -24) return false;
+    m = detail::shr_round(m, uint8_t(-k));
+    if (m >= 0x80000000UL) return false;
+  }
+  out = v_mm.raw() < 0 ? -int32_t(m) : int32_t(m);
+  return true;
+}
+
+//! A Fixed length [unit] below 8 units in wide units (exact).
+STRIDER_ALWAYS_INLINE int32_t from_unit(Fixed v) { return int32_t(uint32_t(v.raw()) << 12); }
+
+//! w^2 in Q6.24 for a wide w, within 2 LSB below (the low half's square is dropped).
+STRIDER_ALWAYS_INLINE uint32_t sq(int32_t w) {
+  const uint32_t u = detail::abs_u32(w);
+  const uint16_t uh = detail::hi16(u);  // < 2^15
+  return detail::mul_u16(uh, uh) + detail::hi16(detail::mul_u16(uint16_t(uh << 1), uint16_t(u)));
+}
+
+//! Shift that brings u (!= 0) into [2^31, 2^32): whole bytes, then bits.
+STRIDER_ALWAYS_INLINE uint8_t normalize_top(uint32_t& u) {
+  uint8_t k = 0;
+  if (u < 0x10000UL) { u <<= 16; k = 16; }
+  if (u < 0x1000000UL) { u <<= 8; k = uint8_t(k + 8); }
+  while (u < 0x80000000UL) { u <<= 1; ++k; }
+  return k;
+}
+
+//! round(root 2^e) for e in [-31, 7] (a signed shift of an isqrt result).
+STRIDER_ALWAYS_INLINE uint32_t shift_signed(uint32_t root, int8_t e) {
+  return e >= 0 ? shl(root, uint8_t(e)) : detail::shr_round(root, uint8_t(-e));
+}
+
+//! sqrt(x) for x in Q6.24 (0 < x < 2^30): wide units.
+inline int32_t sqrt_sq(uint32_t x) {
+  const uint8_t s = detail::normalize_even(x);
+  // isqrt_q22 ~ sqrt(x 2^(22 + s)); the wide root is sqrt(x) 2^16.
+  return int32_t(shift_signed(detail::isqrt_q22(x), int8_t(5 - s / 2)));
+}
+
+//! sqrt(p q) for p, q > 0 in Q6.24 (a product of up to 60 bits), relative
+//! error < 2^-14: both are normalised to 16 significant bits, multiplied,
+//! and the root comes from the interpolated table alone. Q6.24.
+inline uint32_t sqrt_product(uint32_t p, uint32_t q) {
+  uint8_t k = uint8_t(normalize_top(p) + normalize_top(q));
+  uint32_t m = detail::mul_u16(detail::hi16(p), detail::hi16(q));  // p q = m 2^(32 - k), m >= 2^30
+  if (k & 1) {
+    m >>= 1;
+    --k;
+    if (m < 0x40000000UL) { m <<= 2; k = uint8_t(k + 2); }
+  }
+  // sqrt(m) in [2^15, 2^16]; sqrt(p q) = sqrt(m) 2^(16 - k/2).
+  return shift_signed(detail::isqrt_table_estimate(m), int8_t(16 - k / 2));
+}
+
+//! The top 16 bits of a and b after one common shift, the larger magnitude
+//! in [2^14, 2^15): a pair with the same angle and ~15 significant bits.
+inline void to_q15_pair(int32_t a, int32_t b, int16_t& a16, int16_t& b16) {
+  uint32_t ua = detail::abs_u32(a), ub = detail::abs_u32(b);
+  uint32_t mx = ua | ub;  // same top bit as the larger one
+  if (mx == 0) { a16 = b16 = 0; return; }
+  const uint8_t k = normalize_top(mx);
+  const int16_t ha = int16_t(detail::hi16(shl(ua, k)) >> 1), hb = int16_t(detail::hi16(shl(ub, k)) >> 1);
+  a16 = a < 0 ? int16_t(-ha) : ha;
+  b16 = b < 0 ? int16_t(-hb) : hb;
+}
+
+//! Signed 16x16 -> 32 product.
+STRIDER_ALWAYS_INLINE int32_t mul_s16(int16_t a, int16_t b) { return int32_t(a) * int32_t(b); }
+
+//! atan2(y, x) [rad] as Fixed for int32 y, x of any common scale.
+STRIDER_ALWAYS_INLINE Fixed atan2_raw(int32_t y, int32_t x) { return Fixed::from_raw(detail::atan2_lean_raw(y, x)); }
+
+}  // namespace wide
+
+//! The two-link solution for (h, v) [wide units] strictly inside the
+//! annulus, with the identities of TwoLink::solve in 16/32-bit integers.
+//! Returns false, leaving ta and tb alone, when the point is not strictly
+//! inside or the links are 8 units or longer: then use solve().
+inline bool solve_wide(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch, Fixed& ta, Fixed& tb) {
+  if (link.outer2.raw() >= (int32_t(64) << 16)) return false;  // a1 + a2 >= 8 units
+  const uint32_t d2 = wide::sq(h) + wide::sq(v);
+  const uint32_t outer2 = uint32_t(link.outer2.raw()) << 8, inner2 = uint32_t(link.inner2.raw()) << 8;
+  if (!(d2 < outer2 && d2 > inner2)) return false;
+  const int32_t c = int32_t(d2) - (link.sum_sq.raw() << 8);            // 2 a1 a2 cos tb [Q6.24]
+  int32_t s = int32_t(wide::sqrt_product(outer2 - d2, d2 - inner2));  // 2 a1 a2 |sin tb|
+  if (branch == KneeBranch::kNegative) s = -s;
+  tb = wide::atan2_raw(s, c);
+  const int32_t k1 = int32_t(d2) + (link.diff_sq.raw() << 8);  // 2 a1 (a1 + a2 cos tb)
+  int16_t k1s, k2s, hs, vs;
+  wide::to_q15_pair(k1, s, k1s, k2s);
+  wide::to_q15_pair(h, v, hs, vs);
+  ta = wide::atan2_raw(wide::mul_s16(vs, k1s) - wide::mul_s16(hs, k2s),
+                       wide::mul_s16(hs, k1s) + wide::mul_s16(vs, k2s));
+  return true;
+}
+
 }  // namespace leg_ik
 }  // namespace strider
 

@@ -76,6 +76,39 @@ STRIDER_ALWAYS_INLINE int32_t clamp_unit_raw(int32_t raw) {
   return raw > Fixed::kOneRaw ? Fixed::kOneRaw : raw < -Fixed::kOneRaw ? -Fixed::kOneRaw : raw;
 }
 
+//! A leaner atan2 for solvers that need ~1e-4 rad, not 1 LSB: the ratio of
+//! the folded pair from 16 significant bits and the table reciprocal, with no
+//! residual step, then the same atan table. In Q16.16 [rad], (-pi, pi];
+//! 0 for (0, 0). Error below 6e-5 rad (measured 5.5e-5 over 2 million
+//! random pairs of every magnitude).
+inline int32_t atan2_lean_raw(int32_t y, int32_t x) {
+  uint32_t hi = abs_u32(x), lo = abs_u32(y);
+  const bool swapped = lo > hi;
+  if (swapped) {
+    const uint32_t t = hi;
+    hi = lo;
+    lo = t;
+  }
+  if (hi == 0) return 0;
+  if (hi < 0x10000UL) { hi <<= 16; lo <<= 16; }
+  if (hi < 0x1000000UL) { hi <<= 8; lo <<= 8; }
+  while (!(hi & 0x80000000UL)) { hi <<= 1; lo <<= 1; }
+  const uint16_t hh = hi16(hi);
+  const uint16_t r = recip_q30(hh, uint8_t(uint16_t(hi) >> 8));  // 2^46 / hi
+  uint32_t p = mul_u16(hi16(lo), r);  // ~ (lo / hi) 2^30
+  if (p > 0x3FFFFFFFUL) p = 0x3FFFFFFFUL;
+  const uint16_t t = uint16_t(hi16(p) << 2) | uint16_t(uint16_t(p) >> 14);  // lo / hi in Q0.16
+  // atan t = t - D(t), D in units of 2^-18: Q16.16 is t - D / 4.
+  const uint8_t i = uint8_t(t >> 8);
+  const uint16_t d0 = flash_u16(FixedTables<>::kAtan, i);
+  const uint16_t d1 = flash_u16(FixedTables<>::kAtan, uint16_t(i + 1U));
+  const uint32_t d = (uint32_t(d0) << 8) + mul_u16(uint16_t(d1 - d0), uint8_t(t));  // D 2^26
+  int32_t a = int32_t(uint16_t(t - uint16_t(uint16_t((d + 512U) >> 8) >> 2)));
+  if (swapped) a = int32_t(kHalfPiQ24 >> 8) - a;
+  if (x < 0) a = int32_t((kPiQ24 + 128) >> 8) - a;
+  return y < 0 ? -a : a;
+}
+
 }  // namespace detail
 
 //! atan2(y, x) in [-pi, pi] [rad]; atan2(0, 0) = 0; abs error < 0.75 LSB

@@ -1,0 +1,185 @@
+//! parse_command_line: one complete text line (without its line ending) ->
+//! Command, or the ParseError that explains why not. Words are lowercase,
+//! separated by spaces or tabs; numbers are checked against each command's
+//! range here, so the controller only sees values it can apply.
+#ifndef STRIDER_CONTROL_COMMAND_LINE_H
+#define STRIDER_CONTROL_COMMAND_LINE_H
+
+#include <stdint.h>
+
+#include "command.h"
+#include "decimal.h"
+#include "settings.h"
+
+namespace strider {
+
+constexpr uint8_t kMaxLineTokens = 5;  //!< command word + up to 4 arguments (one more to detect extras)
+
+namespace detail {
+
+struct Token {
+  const char* text;
+  uint8_t len;
+};
+
+inline bool token_is(const Token& t, const char* word) {
+  uint8_t i = 0;
+  for (; i < t.len; ++i) {
+    if (word[i] != t.text[i]) return false;
+  }
+  return word[i] == 0;
+}
+
+//! Splits line into tokens; returns the count, or kMaxLineTokens + 1 when there are more.
+inline uint8_t split_tokens(const char* line, uint8_t len, Token* tokens) {
+  uint8_t n = 0, i = 0;
+  while (i < len) {
+    while (i < len && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= len) break;
+    const uint8_t start = i;
+    while (i < len && line[i] != ' ' && line[i] != '\t') ++i;
+    if (n == kMaxLineTokens) return kMaxLineTokens + 1;
+    tokens[n].text = line + start;
+    tokens[n].len = uint8_t(i - start);
+    ++n;
+  }
+  return n;
+}
+
+//! Number token -> scaled integer in [lo, hi], or the error.
+inline ParseError number_arg(const Token& t, uint8_t decimals, int32_t lo, int32_t hi, int32_t* out) {
+  int32_t v = 0;
+  const DecimalStatus s = parse_decimal(t.text, t.len, decimals, &v);
+  if (s == DecimalStatus::kSyntax) return ParseError::kBadArgument;
+  if (s == DecimalStatus::kOverflow || v < lo || v > hi) return ParseError::kOutOfRange;
+  *out = v;
+  return ParseError::kNone;
+}
+
+//! Parses tokens[first..first+count) as numbers into cmd->arg[slot..], all with the
+//! same decimals and range, after checking the token count is exactly count.
+inline ParseError number_args(const Token* tokens, uint8_t ntokens, uint8_t first, uint8_t count,
+                              uint8_t slot, uint8_t decimals, int32_t lo, int32_t hi, Command* cmd) {
+  if (ntokens < first + count) return ParseError::kMissingArgument;
+  if (ntokens > first + count) return ParseError::kExtraArgument;
+  for (uint8_t k = 0; k < count; ++k) {
+    const ParseError e = number_arg(tokens[first + k], decimals, lo, hi, &cmd->arg[slot + k]);
+    if (e != ParseError::kNone) return e;
+  }
+  return ParseError::kNone;
+}
+
+inline ParseError no_args(uint8_t ntokens, uint8_t first) {
+  return ntokens > first ? ParseError::kExtraArgument : ParseError::kNone;
+}
+
+inline ParseError parse_cal(const Token* t, uint8_t n, Command* cmd) {
+  if (n < 2) return ParseError::kMissingArgument;
+  const Token& sub = t[1];
+  if (token_is(sub, "start")) { cmd->kind = CommandKind::kCalStart; return no_args(n, 2); }
+  if (token_is(sub, "save")) { cmd->kind = CommandKind::kCalSave; return no_args(n, 2); }
+  if (token_is(sub, "abort")) { cmd->kind = CommandKind::kCalAbort; return no_args(n, 2); }
+  if (token_is(sub, "show")) { cmd->kind = CommandKind::kCalShow; return no_args(n, 2); }
+  if (token_is(sub, "osc")) {
+    cmd->kind = CommandKind::kCalOsc;
+    return number_args(t, n, 2, 1, 0, 0, int32_t(kPca9685MinOscHz), int32_t(kPca9685MaxOscHz), cmd);
+  }
+  if (token_is(sub, "pwm")) {
+    cmd->kind = CommandKind::kCalPwm;
+    return number_args(t, n, 2, 1, 0, 0, 40, 400, cmd);
+  }
+  if (token_is(sub, "trim")) {
+    cmd->kind = CommandKind::kCalTrim;
+    if (n < 4) return ParseError::kMissingArgument;
+    if (n > 4) return ParseError::kExtraArgument;
+    const ParseError e = number_arg(t[2], 0, 0, kMaxServoJoints - 1, &cmd->arg[0]);
+    if (e != ParseError::kNone) return e;
+    return number_arg(t[3], 1, -kMaxTrimDecideg, kMaxTrimDecideg, &cmd->arg[1]);
+  }
+  return ParseError::kBadArgument;
+}
+
+inline ParseError parse_avoid(const Token* t, uint8_t n, Command* cmd) {
+  if (n < 2) return ParseError::kMissingArgument;
+  if (token_is(t[1], "on") || token_is(t[1], "off")) {
+    cmd->kind = CommandKind::kAvoidEnable;
+    cmd->arg[0] = token_is(t[1], "on") ? 1 : 0;
+    return no_args(n, 2);
+  }
+  cmd->kind = CommandKind::kAvoidLimits;
+  int32_t probe = 0;
+  if (parse_decimal(t[1].text, t[1].len, 0, &probe) == DecimalStatus::kSyntax) return ParseError::kBadArgument;
+  const ParseError e = number_args(t, n, 1, 2, 0, 0, 20, 3000, cmd);
+  if (e != ParseError::kNone) return e;
+  return cmd->arg[1] < cmd->arg[0] ? ParseError::kOutOfRange : ParseError::kNone;
+}
+
+inline ParseError parse_gait(const Token* t, uint8_t n, Command* cmd) {
+  cmd->kind = CommandKind::kGait;
+  if (n < 2) return ParseError::kMissingArgument;
+  if (n > 2) return ParseError::kExtraArgument;
+  if (t[1].len >= kCommandWordBytes) return ParseError::kBadArgument;
+  for (uint8_t i = 0; i < t[1].len; ++i) {
+    const char c = t[1].text[i];
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) return ParseError::kBadArgument;
+    cmd->word[i] = c;
+  }
+  cmd->word[t[1].len] = 0;
+  return ParseError::kNone;
+}
+
+}  // namespace detail
+
+constexpr int32_t kMaxLinearDecimm_s = 5000;  //!< |walk|, |strafe| <= 500.0 mm/s
+constexpr int32_t kMaxTurnDecideg_s = 3600;   //!< |turn| <= 360.0 deg/s
+constexpr int32_t kMaxPoseDecideg = 300;      //!< |roll|, |pitch|, |yaw| <= 30.0 deg
+
+//! Parses one line (len bytes, printable ASCII, no line ending). On success
+//! returns kNone and fills *cmd (source kLine); otherwise returns the error.
+inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd) {
+  using namespace detail;
+  *cmd = make_command(CommandKind::kNone, CommandSource::kLine);
+  Token t[kMaxLineTokens];
+  const uint8_t n = split_tokens(line, len, t);
+  if (n == 0) return ParseError::kNone;  // blank line: nothing to do, no reply
+  if (n > kMaxLineTokens) return ParseError::kExtraArgument;
+  const Token& w = t[0];
+  if (token_is(w, "walk")) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd); }
+  if (token_is(w, "strafe")) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 1, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd); }
+  if (token_is(w, "turn")) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 2, 1, -kMaxTurnDecideg_s, kMaxTurnDecideg_s, cmd); }
+  if (token_is(w, "vel") || token_is(w, "velocity")) {
+    cmd->kind = CommandKind::kMove;
+    ParseError e = number_args(t, n, 1, 3, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd);
+    if (e == ParseError::kNone && (cmd->arg[2] < -kMaxTurnDecideg_s || cmd->arg[2] > kMaxTurnDecideg_s)) {
+      e = ParseError::kOutOfRange;
+    }
+    return e;
+  }
+  if (token_is(w, "stop")) { cmd->kind = CommandKind::kStop; return no_args(n, 1); }
+  if (token_is(w, "relax")) { cmd->kind = CommandKind::kRelax; return no_args(n, 1); }
+  if (token_is(w, "speed")) { cmd->kind = CommandKind::kSpeed; return number_args(t, n, 1, 1, 0, 0, 0, 100, cmd); }
+  if (token_is(w, "gait")) return parse_gait(t, n, cmd);
+  if (token_is(w, "pose")) { cmd->kind = CommandKind::kPose; return number_args(t, n, 1, 3, 0, 1, -kMaxPoseDecideg, kMaxPoseDecideg, cmd); }
+  if (token_is(w, "height")) { cmd->kind = CommandKind::kHeight; return number_args(t, n, 1, 1, 0, 1, 100, 4000, cmd); }
+  if (token_is(w, "avoid")) return parse_avoid(t, n, cmd);
+  if (token_is(w, "deadman")) { cmd->kind = CommandKind::kDeadman; return number_args(t, n, 1, 1, 0, 0, 0, 60000, cmd); }
+  if (token_is(w, "baud")) {
+    cmd->kind = CommandKind::kBaud;
+    const ParseError e = number_args(t, n, 1, 1, 0, 0, 0, 2000000, cmd);
+    if (e != ParseError::kNone) return e;
+    return valid_baud(uint32_t(cmd->arg[0])) ? ParseError::kNone : ParseError::kOutOfRange;
+  }
+  if (token_is(w, "cal")) return parse_cal(t, n, cmd);
+  if (token_is(w, "save")) { cmd->kind = CommandKind::kSave; return no_args(n, 1); }
+  if (token_is(w, "status")) { cmd->kind = CommandKind::kStatus; return no_args(n, 1); }
+  if (token_is(w, "help")) { cmd->kind = CommandKind::kHelp; return no_args(n, 1); }
+  if (len == 1) {  // a light button's lowercase byte typed on its own line
+    const char c = line[0];
+    if (c == 'w' || c == 'u' || c == 'v' || c == 'x') { cmd->kind = CommandKind::kLight; cmd->arg[0] = c; return ParseError::kNone; }
+  }
+  return ParseError::kUnknownCommand;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_COMMAND_LINE_H

@@ -1,0 +1,261 @@
+//! Controller: applies parsed commands to a motion sink, answers each text
+//! line with exactly one reply, and runs the deadman and obstacle avoidance
+//! every tick. It knows nothing of the gait engine: the firmware binds a
+//! MotionSink (gait engine), a ByteStore (EEPROM) and feeds it bytes, sonar
+//! readings and the time [ms].
+//!
+//! MotionSink members (template concept, no virtual calls):
+//!   void set_velocity(const Twist& v);   // [0.1 mm/s], [0.1 deg/s]; zero = step in place/stop
+//!   void stand();                         // stop walking and stand
+//!   void relax();                         // servos limp
+//!   bool set_gait(const char* name);      // false: no such gait for this robot
+//!   bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw);  // [0.1 deg]; false: refused
+//!   bool set_body_height(int32_t height); // [0.1 mm]; false: out of the robot's range
+//!   void apply_settings(const Settings& s);  // trims, oscillator, PWM frequency
+#ifndef STRIDER_CONTROL_CONTROLLER_H
+#define STRIDER_CONTROL_CONTROLLER_H
+
+#include <stdint.h>
+
+#include "avoidance.h"
+#include "calibration.h"
+#include "command_parser.h"
+#include "deadman.h"
+#include "reply.h"
+#include "reply_texts.h"
+#include "robot_mode.h"
+
+namespace strider {
+
+template <typename Sink, typename Store>
+class Controller {
+ public:
+  Controller(Sink& sink, Store& store, const Settings& loaded, SettingsStatus load_status)
+      : sink_(sink), store_(store), settings_(loaded), cal_(loaded), load_status_(load_status) {
+    deadman_.set_timeout(settings_.deadman_ms);
+    speed_pct_ = settings_.speed_pct;
+    sink_.apply_settings(settings_);
+  }
+
+  //! One received byte at now_ms. Returns true when *w holds a reply line
+  //! (without line ending) to send.
+  bool on_byte(uint8_t b, uint32_t now_ms, ReplyWriter& w) {
+    Command c;
+    const ParseResult r = parser_.feed(b, &c);
+    return handle(r, c, now_ms, w);
+  }
+
+  //! No byte for a while: abandons a partial line (reply on true).
+  bool on_idle(uint32_t now_ms, ReplyWriter& w) {
+    Command c;
+    return handle(parser_.idle_timeout(&c), c, now_ms, w);
+  }
+
+  //! One control tick: deadman and avoidance; sends the walking command.
+  //! Returns true when *w holds a notice (`info ...`) to send.
+  bool tick(uint32_t now_ms, const SonarReading& sonar, ReplyWriter& w) {
+    sonar_ = sonar;
+    if (mode_ == RobotMode::kWalking && deadman_.expired(now_ms, true)) {
+      stop();
+      w.text(FlashText{text::kInfoDeadmanStop});
+      return true;
+    }
+    if (mode_ != RobotMode::kWalking) return false;
+    AvoidConfig cfg = default_avoid_config();
+    cfg.enabled = settings_.avoid_enabled != 0;
+    cfg.stop_mm = settings_.avoid_stop_mm;
+    cfg.slow_mm = settings_.avoid_slow_mm;
+    const AvoidState before = avoid_.state();
+    out_ = avoid_.update(cmd_, sonar, now_ms, cfg);
+    sink_.set_velocity(out_);
+    if (avoid_.state() != before && avoid_.state() != AvoidState::kPassThrough) {
+      w.text(FlashText{text::kInfoAvoid_}).text(to_string(avoid_.state()));
+      return true;
+    }
+    return false;
+  }
+
+  RobotMode mode() const { return mode_; }
+  const Twist& command() const { return cmd_; }      //!< operator's velocity
+  const Twist& output() const { return out_; }       //!< after avoidance
+  const Settings& settings() const { return settings_; }
+  uint8_t speed_pct() const { return speed_pct_; }
+
+ private:
+  bool handle(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
+    if (r == ParseResult::kNothing) return false;
+    if (r == ParseResult::kError) {
+      write_parse_error(w, c.error);
+      return true;
+    }
+    if (c.kind != CommandKind::kRcEcho) deadman_.feed(now_ms);
+    apply(c, w);
+    return c.source == CommandSource::kLine;
+  }
+
+  void fail(ReplyWriter& w, ControlError e, FlashText reason) { write_error(w, uint8_t(e), reason); }
+
+  void stop() {
+    cmd_ = out_ = Twist{0, 0, 0};
+    sink_.stand();
+    if (mode_ == RobotMode::kWalking || mode_ == RobotMode::kRelaxed) mode_ = RobotMode::kStanding;
+  }
+
+  void move(const Twist& t, ReplyWriter& w) {
+    if (mode_ == RobotMode::kCalibrating) return fail(w, ControlError::kBusy, FlashText{text::kCalibrating});
+    cmd_ = t;
+    if (t.vx == 0 && t.vy == 0 && t.wz == 0) {
+      stop();
+    } else {
+      mode_ = RobotMode::kWalking;
+      sink_.set_velocity(cmd_);  // avoidance refines it on the next tick
+    }
+    w.text(FlashText{text::kOkMove}).field_tenths(FlashText{text::kVx}, t.vx).field_tenths(FlashText{text::kVy}, t.vy).field_tenths(FlashText{text::kWz}, t.wz);
+  }
+
+  void apply(const Command& c, ReplyWriter& w) {
+    switch (c.kind) {
+      case CommandKind::kDrive: {
+        const RcLimits lim;
+        const int32_t s = speed_pct_;
+        return move(Twist{c.arg[0] * lim.linear * s / 100, c.arg[1] * lim.linear * s / 100,
+                          c.arg[2] * lim.turn * s / 100}, w);
+      }
+      case CommandKind::kMove: return move(Twist{c.arg[0], c.arg[1], c.arg[2]}, w);
+      case CommandKind::kStop: stop(); w.text(FlashText{text::kOkStop}); return;
+      case CommandKind::kRelax:
+        if (mode_ == RobotMode::kCalibrating) return fail(w, ControlError::kBusy, FlashText{text::kCalibrating});
+        cmd_ = out_ = Twist{0, 0, 0};
+        sink_.relax();
+        mode_ = RobotMode::kRelaxed;
+        w.text(FlashText{text::kOkRelax});
+        return;
+      case CommandKind::kSpeed:
+        speed_pct_ = uint8_t(c.arg[0]);
+        w.text(FlashText{text::kOkSpeed}).field(FlashText{text::kPct}, c.arg[0]);
+        return;
+      case CommandKind::kGait:
+        if (!sink_.set_gait(c.word)) return fail(w, ControlError::kUnknownGait, FlashText{text::kUnknownGait});
+        w.text(FlashText{text::kOkGait_}).text(c.word);
+        return;
+      case CommandKind::kPose:
+        if (!sink_.set_body_pose(c.arg[0], c.arg[1], c.arg[2])) return fail(w, ControlError::kRefused, FlashText{text::kPoseRefused});
+        w.text(FlashText{text::kOkPose}).field_tenths(FlashText{text::kRoll}, c.arg[0]).field_tenths(FlashText{text::kPitch}, c.arg[1]).field_tenths(FlashText{text::kYaw}, c.arg[2]);
+        return;
+      case CommandKind::kHeight:
+        if (!sink_.set_body_height(c.arg[0])) return fail(w, ControlError::kRefused, FlashText{text::kHeightRefused});
+        w.text(FlashText{text::kOkHeight}).field_tenths(FlashText{text::kMm}, c.arg[0]);
+        return;
+      case CommandKind::kAvoidEnable:
+        settings_.avoid_enabled = uint8_t(c.arg[0]);
+        w.text(FlashText{text::kOkAvoid_}).text(c.arg[0] ? FlashText{text::kOn} : FlashText{text::kOff});
+        return;
+      case CommandKind::kAvoidLimits:
+        settings_.avoid_stop_mm = uint16_t(c.arg[0]);
+        settings_.avoid_slow_mm = uint16_t(c.arg[1]);
+        w.text(FlashText{text::kOkAvoid}).field(FlashText{text::kStopMm}, c.arg[0]).field(FlashText{text::kSlowMm}, c.arg[1]);
+        return;
+      case CommandKind::kDeadman:
+        settings_.deadman_ms = uint16_t(c.arg[0]);
+        deadman_.set_timeout(settings_.deadman_ms);
+        w.text(FlashText{text::kOkDeadman}).field(FlashText{text::kMs}, c.arg[0]);
+        return;
+      case CommandKind::kBaud:
+        settings_.baud = uint32_t(c.arg[0]);
+        w.text(FlashText{text::kOkBaud}).field(FlashText{text::kRate}, c.arg[0]).text(FlashText{text::kSpAfterSaveAndReset});
+        return;
+      default: return apply_cal(c, w);
+    }
+  }
+
+  void apply_cal(const Command& c, ReplyWriter& w) {
+    switch (c.kind) {
+      case CommandKind::kCalStart:
+        stop();
+        cal_.start();
+        mode_ = RobotMode::kCalibrating;
+        w.text(FlashText{text::kOkCalStart});
+        return;
+      case CommandKind::kCalTrim:
+      case CommandKind::kCalOsc:
+      case CommandKind::kCalPwm: {
+        const CalStatus s = c.kind == CommandKind::kCalTrim ? cal_.set_trim(uint8_t(c.arg[0]), int16_t(c.arg[1]))
+                            : c.kind == CommandKind::kCalOsc ? cal_.set_oscillator(uint32_t(c.arg[0]))
+                                                             : cal_.set_pwm(uint16_t(c.arg[0]));
+        if (s != CalStatus::kOk) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
+        sink_.apply_settings(cal_.live());
+        if (c.kind == CommandKind::kCalTrim) w.text(FlashText{text::kOkCalTrim}).field(FlashText{text::kJoint}, c.arg[0]).field_tenths(FlashText{text::kDeg}, c.arg[1]);
+        else w.text(c.kind == CommandKind::kCalOsc ? FlashText{text::kOkCalOsc} : FlashText{text::kOkCalPwm}).field(FlashText{text::kHz}, c.arg[0]);
+        return;
+      }
+      case CommandKind::kCalShow:
+        w.text(FlashText{text::kOkCal}).field(FlashText{text::kOsc}, int32_t(cal_.live().pca_osc_hz)).text(FlashText{text::kSpTrims});
+        for (uint8_t i = 0; i < kMaxServoJoints; ++i) {
+          if (i) w.ch(',');
+          w.tenths(cal_.live().trim_decideg[i]);
+        }
+        return;
+      case CommandKind::kCalSave: {
+        if (!cal_.active()) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
+        if (cal_.save(store_, settings_) != CalStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
+        settings_ = cal_.saved();
+        mode_ = RobotMode::kStanding;
+        w.text(FlashText{text::kOkCalSaved});
+        return;
+      }
+      case CommandKind::kCalAbort:
+        if (!cal_.active()) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
+        cal_.abort();
+        sink_.apply_settings(cal_.live());
+        mode_ = RobotMode::kStanding;
+        w.text(FlashText{text::kOkCalAborted});
+        return;
+      case CommandKind::kSave: {
+        Settings s = settings_;
+        s.speed_pct = speed_pct_;
+        if (save_settings(store_, s) != SettingsStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
+        settings_ = s;
+        w.text(FlashText{text::kOkSaved});
+        return;
+      }
+      case CommandKind::kStatus: return status(w);
+      case CommandKind::kHelp:
+        w.text(FlashText{text::kOkHelp});
+        return;
+      case CommandKind::kLight: w.text(FlashText{text::kOkLightIgnored}); return;
+      case CommandKind::kRcEcho: w.text(FlashText{text::kOkRc_}).ch(char(c.arg[0])); return;
+      default: w.text(FlashText{text::kOk}); return;
+    }
+  }
+
+  void status(ReplyWriter& w) {
+    w.text(FlashText{text::kOkStatus}).field_text(FlashText{text::kMode}, to_string(mode_)).field(FlashText{text::kSpeed}, speed_pct_);
+    w.field_tenths(FlashText{text::kVx}, out_.vx).field_tenths(FlashText{text::kVy}, out_.vy).field_tenths(FlashText{text::kWz}, out_.wz);
+    if (settings_.avoid_enabled) w.field_text(FlashText{text::kAvoid}, to_string(avoid_.state()));
+    else w.field_text(FlashText{text::kAvoid}, FlashText{text::kOff});
+    const FlashText sonar = sonar_.status == SonarStatus::kOk ? FlashText{text::kOk}
+                        : sonar_.status == SonarStatus::kFailed ? FlashText{text::kFailed}
+                        : sonar_.status == SonarStatus::kStale ? FlashText{text::kStale} : FlashText{text::kNone};
+    w.field_text(FlashText{text::kSonar}, sonar);
+    if (sonar_.status == SonarStatus::kOk && sonar_.distance_mm != kSonarFarMm) w.field(FlashText{text::kDistMm}, sonar_.distance_mm);
+    w.field(FlashText{text::kDeadmanMs}, settings_.deadman_ms).field_text(FlashText{text::kEeprom}, to_string(load_status_));
+  }
+
+  Sink& sink_;
+  Store& store_;
+  Settings settings_;
+  Calibration cal_;
+  SettingsStatus load_status_;
+  CommandParser parser_;
+  Deadman deadman_;
+  Avoidance avoid_;
+  SonarReading sonar_{SonarStatus::kNoData, kSonarFarMm};
+  Twist cmd_{0, 0, 0};
+  Twist out_{0, 0, 0};
+  RobotMode mode_ = RobotMode::kStanding;
+  uint8_t speed_pct_ = 50;
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_CONTROLLER_H

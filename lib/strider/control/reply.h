@@ -1,0 +1,124 @@
+//! ReplyWriter: builds one reply line (`ok ...` / `err <code> <reason>`) in a
+//! caller's buffer without printf: text, integers and tenths. Output is
+//! always NUL-terminated and truncated, never overrun, when the buffer is full.
+#ifndef STRIDER_CONTROL_REPLY_H
+#define STRIDER_CONTROL_REPLY_H
+
+#include <stdint.h>
+
+#include "command.h"
+
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+#define STRIDER_PROGMEM PROGMEM
+#else
+#define STRIDER_PROGMEM
+#endif
+
+namespace strider {
+
+//! Text in program memory on the AVR (a namespace-scope array declared with
+//! STRIDER_PROGMEM, see reply_texts.h), in ordinary memory elsewhere.
+struct FlashText {
+  const char* p;
+};
+
+//! One character of a FlashText.
+inline char flash_char(const char* p) {
+#if defined(__AVR__)
+  return char(pgm_read_byte(p));
+#else
+  return *p;
+#endif
+}
+
+constexpr uint8_t kMaxReplyBytes = 160;  //!< suggested buffer: longest reply (cal show) + "\r\n" + NUL
+
+class ReplyWriter {
+ public:
+  //! buf must hold capacity >= 1 bytes.
+  ReplyWriter(char* buf, uint8_t capacity) : buf_(buf), cap_(capacity), len_(0) { buf_[0] = 0; }
+
+  ReplyWriter& text(const char* s) {
+    while (*s) put(*s++);
+    return *this;
+  }
+  ReplyWriter& text(FlashText s) {
+    for (const char* p = s.p;; ++p) {
+      const char c = flash_char(p);
+      if (c == 0) break;
+      put(c);
+    }
+    return *this;
+  }
+  ReplyWriter& ch(char c) { put(c); return *this; }
+
+  //! Signed decimal integer.
+  ReplyWriter& integer(int32_t v) {
+    uint32_t u = v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v);
+    if (v < 0) put('-');
+    char digits[10];
+    uint8_t n = 0;
+    do {
+      digits[n++] = char('0' + u % 10u);
+      u /= 10u;
+    } while (u != 0);
+    while (n > 0) put(digits[--n]);
+    return *this;
+  }
+
+  //! Value given in tenths, printed with one decimal (-125 -> "-12.5").
+  ReplyWriter& tenths(int32_t v) {
+    const uint32_t u = v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v);
+    if (v < 0) put('-');
+    integer(int32_t(u / 10u));
+    put('.');
+    put(char('0' + u % 10u));
+    return *this;
+  }
+
+  //! `key=value` preceded by a space: the fields of ok and status lines.
+  ReplyWriter& field(const char* key, int32_t v) { return ch(' ').text(key).ch('=').integer(v); }
+  ReplyWriter& field_tenths(const char* key, int32_t v) { return ch(' ').text(key).ch('=').tenths(v); }
+  ReplyWriter& field_text(const char* key, const char* v) { return ch(' ').text(key).ch('=').text(v); }
+  ReplyWriter& field(FlashText key, int32_t v) { return ch(' ').text(key).ch('=').integer(v); }
+  ReplyWriter& field_tenths(FlashText key, int32_t v) { return ch(' ').text(key).ch('=').tenths(v); }
+  ReplyWriter& field_text(FlashText key, const char* v) { return ch(' ').text(key).ch('=').text(v); }
+  ReplyWriter& field_text(FlashText key, FlashText v) { return ch(' ').text(key).ch('=').text(v); }
+
+  //! Appends CR LF (the HC-05 terminals show lines either way).
+  ReplyWriter& end_line() { return text("\r\n"); }
+
+  const char* c_str() const { return buf_; }
+  uint8_t length() const { return len_; }
+  bool truncated() const { return truncated_; }
+
+ private:
+  void put(char c) {
+    if (uint16_t(len_) + 1 >= cap_) { truncated_ = true; return; }
+    buf_[len_++] = c;
+    buf_[len_] = 0;
+  }
+
+  char* buf_;
+  uint8_t cap_;
+  uint8_t len_;
+  bool truncated_ = false;
+};
+
+//! `err <code> <reason>` for any numeric code (parser: 1-19, controller: 20+).
+inline void write_error(ReplyWriter& w, uint8_t code, const char* reason) {
+  w.text("err ").integer(code).ch(' ').text(reason);
+}
+
+//! `err <code> <reason>` with the reason in flash.
+inline void write_error(ReplyWriter& w, uint8_t code, FlashText reason) {
+  w.text("err ").integer(code).ch(' ').text(reason);
+}
+
+//! `err <code> <reason>` for a parser error.
+inline void write_parse_error(ReplyWriter& w, ParseError e) { write_error(w, uint8_t(e), error_reason(e)); }
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_REPLY_H

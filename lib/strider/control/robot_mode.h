@@ -1,0 +1,40 @@
+//! RobotMode, ControlError and RcLimits: the controller's modes, its reply
+//! error codes (20+, after the parser's; docs/protocol.md) and the speeds the
+//! RC app's buttons map to.
+#ifndef STRIDER_CONTROL_ROBOT_MODE_H
+#define STRIDER_CONTROL_ROBOT_MODE_H
+
+#include <stdint.h>
+
+namespace strider {
+
+//! Controller error codes (after the parser's 1-19; see docs/protocol.md).
+enum class ControlError : uint8_t {
+  kNotCalibrating = 20,  //!< cal trim/osc/pwm/save/abort without `cal start`
+  kBusy = 21,            //!< not allowed in this mode (e.g. walking during calibration)
+  kStoreFailed = 22,     //!< EEPROM write failed
+  kUnknownGait = 23,     //!< the robot has no gait of that name
+  kRefused = 24          //!< pose/height outside what the robot can do
+};
+
+enum class RobotMode : uint8_t { kStanding = 0, kWalking = 1, kRelaxed = 2, kCalibrating = 3 };
+
+inline const char* to_string(RobotMode m) {
+  switch (m) {
+    case RobotMode::kStanding: return "standing";
+    case RobotMode::kWalking: return "walking";
+    case RobotMode::kRelaxed: return "relaxed";
+    case RobotMode::kCalibrating: return "calibrating";
+  }
+  return "unknown";
+}
+
+//! Speeds the RC buttons map to at 100 %: seed 000's 155 mm/s and 360 deg in 6 s.
+struct RcLimits {
+  int32_t linear = 1550;  //!< [0.1 mm/s]
+  int32_t turn = 600;     //!< [0.1 deg/s]
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_ROBOT_MODE_H

@@ -1,0 +1,100 @@
+//! Settings: everything the firmware keeps across power cycles (trims, the
+//! PCA9685 oscillator, link and avoidance settings), its defaults, its valid
+//! ranges, and its byte layout. Integers only, so the record is identical on
+//! the AVR and the host and needs no float parsing.
+#ifndef STRIDER_CONTROL_SETTINGS_H
+#define STRIDER_CONTROL_SETTINGS_H
+
+#include <stdint.h>
+
+#include "pca9685_timing.h"
+
+namespace strider {
+
+constexpr uint8_t kMaxServoJoints = 18;     //!< hexapod18 has the most joints
+constexpr int16_t kMaxTrimDecideg = 300;    //!< |trim| <= 30.0 deg
+constexpr uint8_t kSettingsVersion = 1;     //!< bump when the layout changes
+
+//! Settings record (values, not bytes; see encode/decode for the layout).
+struct Settings {
+  uint32_t pca_osc_hz;                   //!< measured PCA9685 oscillator [Hz], 20-30 MHz
+  uint16_t pwm_hz;                       //!< servo PWM frequency [Hz], 40-400 (digital servos)
+  uint32_t baud;                         //!< Bluetooth UART rate [baud]
+  uint16_t deadman_ms;                   //!< stop when no command for this long while moving [ms], 0 = off
+  uint16_t avoid_stop_mm;                //!< obstacle nearer than this ahead -> sidestep [mm]
+  uint16_t avoid_slow_mm;                //!< obstacle nearer than this -> slow down [mm]
+  uint8_t avoid_enabled;                 //!< 1 = obstacle avoidance on
+  uint8_t speed_pct;                     //!< speed at power-up [%], 0-100
+  int16_t trim_decideg[kMaxServoJoints]; //!< per-joint trim [0.1 deg], +-300
+};
+
+//! Factory settings: nominal oscillator, 50 Hz, 9600 baud (HC-05 default),
+//! 1 s deadman, seed 000's 20 cm avoidance distance with a 40 cm slow band.
+constexpr Settings default_settings() {
+  return Settings{kPca9685NominalOscHz, 50, 9600, 1000, 200, 400, 1, 50,
+                  {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}};
+}
+
+//! True for the UART rates the HC-05 AT+UART command accepts that the Mega
+//! can run reliably at 16 MHz.
+constexpr bool valid_baud(uint32_t baud) {
+  return baud == 9600ul || baud == 19200ul || baud == 38400ul || baud == 57600ul || baud == 115200ul;
+}
+
+//! Range check of every field: a record that decodes but fails this is
+//! treated like a corrupt one.
+inline bool settings_valid(const Settings& s) {
+  if (s.pca_osc_hz < kPca9685MinOscHz || s.pca_osc_hz > kPca9685MaxOscHz) return false;
+  if (s.pwm_hz < 40 || s.pwm_hz > 400) return false;
+  if (!valid_baud(s.baud)) return false;
+  if (s.deadman_ms > 60000u) return false;
+  if (s.avoid_stop_mm < 20 || s.avoid_stop_mm > 3000) return false;
+  if (s.avoid_slow_mm < s.avoid_stop_mm || s.avoid_slow_mm > 3000) return false;
+  if (s.avoid_enabled > 1 || s.speed_pct > 100) return false;
+  for (uint8_t i = 0; i < kMaxServoJoints; ++i) {
+    if (s.trim_decideg[i] > kMaxTrimDecideg || s.trim_decideg[i] < -kMaxTrimDecideg) return false;
+  }
+  return true;
+}
+
+//! Payload size [bytes]: little-endian fields in declaration order.
+constexpr uint8_t kSettingsPayloadBytes = 4 + 2 + 4 + 2 + 2 + 2 + 1 + 1 + 2 * kMaxServoJoints;
+
+namespace detail {
+inline void put_u16(uint8_t*& p, uint16_t v) { *p++ = uint8_t(v); *p++ = uint8_t(v >> 8); }
+inline void put_u32(uint8_t*& p, uint32_t v) { put_u16(p, uint16_t(v)); put_u16(p, uint16_t(v >> 16)); }
+inline uint16_t get_u16(const uint8_t*& p) { const uint16_t v = uint16_t(p[0] | (uint16_t(p[1]) << 8)); p += 2; return v; }
+inline uint32_t get_u32(const uint8_t*& p) { const uint32_t lo = get_u16(p); return lo | (uint32_t(get_u16(p)) << 16); }
+}  // namespace detail
+
+//! Writes the payload (kSettingsPayloadBytes) of s into out.
+inline void encode_settings(const Settings& s, uint8_t* out) {
+  uint8_t* p = out;
+  detail::put_u32(p, s.pca_osc_hz);
+  detail::put_u16(p, s.pwm_hz);
+  detail::put_u32(p, s.baud);
+  detail::put_u16(p, s.deadman_ms);
+  detail::put_u16(p, s.avoid_stop_mm);
+  detail::put_u16(p, s.avoid_slow_mm);
+  *p++ = s.avoid_enabled;
+  *p++ = s.speed_pct;
+  for (uint8_t i = 0; i < kMaxServoJoints; ++i) detail::put_u16(p, uint16_t(s.trim_decideg[i]));
+}
+
+//! Reads a payload written by encode_settings (no validation).
+inline void decode_settings(const uint8_t* in, Settings* s) {
+  const uint8_t* p = in;
+  s->pca_osc_hz = detail::get_u32(p);
+  s->pwm_hz = detail::get_u16(p);
+  s->baud = detail::get_u32(p);
+  s->deadman_ms = detail::get_u16(p);
+  s->avoid_stop_mm = detail::get_u16(p);
+  s->avoid_slow_mm = detail::get_u16(p);
+  s->avoid_enabled = *p++;
+  s->speed_pct = *p++;
+  for (uint8_t i = 0; i < kMaxServoJoints; ++i) s->trim_decideg[i] = int16_t(detail::get_u16(p));
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_SETTINGS_H

@@ -1,0 +1,197 @@
+//! GaitEngine's set-up and ramps: configuration, gait tables, planning a
+//! command and ramping to it (in stride per cycle, see replan()), placing
+//! the feet that land during the ramp, starting to walk, changing gaits,
+//! stand-up / sit-down and the body offsets' rate limit (kept apart from the
+//! class declaration in gait_engine.h; include gait_engine.h).
+#ifndef STRIDER_GAIT_GAIT_ENGINE_RAMP_H
+#define STRIDER_GAIT_GAIT_ENGINE_RAMP_H
+
+#include "gait_engine.h"
+
+namespace strider {
+
+//! Takes the configuration and a gait; the robot stands (or sits).
+template <typename S>
+void GaitEngine<S>::configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting) {
+  cfg_ = config;
+  base_ = gait;
+  load_table(gait);
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
+    foot_[i] = cfg_.home[i];
+    contact_[i] = true;
+    pending_[i] = false;
+  }
+  state_ = sitting ? GaitState::kSitting : GaitState::kStanding;
+  progress_ = sitting ? S(0) : S(1);
+  vx_ = vy_ = wz_ = S(0);
+  hz_ = cfg_.limits.min_hz;
+  to_ = VelocityPlan<S>{S(0), S(0), S(0), hz_, false};
+  from_s_ = to_s_ = now_s_ = land_s_ = Stride{S(0), S(0), S(0), hz_};
+  ramp_ = S(1);
+  shift_.reset();
+  pose_ = goal_pose_ = BodyOffsets<S>::zero();
+  odo_x_ = odo_y_ = odo_yaw_ = S(0);
+  odo_c_ = S(1);
+  odo_s_ = S(0);
+  support_.build(foot_, contact_, cfg_.leg_count, cfg_.foot_radius_mm, cfg_.unit_shift);
+  margin_fresh_ = false;
+  step_cache_.dt = S(0);
+  td_fresh_ = false;
+}
+
+template <typename S>
+void GaitEngine<S>::step_transition(S dt) {
+  const S d = dt / cfg_.transition_s;
+  if (state_ == GaitState::kStandingUp) {
+    progress_ = min_of(progress_ + d, S(1));
+    if (progress_ >= S(1)) state_ = GaitState::kStanding;
+  } else {
+    progress_ = max_of(progress_ - d, S(0));
+    if (progress_ <= S(0)) state_ = GaitState::kSitting;
+  }
+}
+
+template <typename S>
+void GaitEngine<S>::step_pose(S dt) {
+  const S dp = cfg_.pose_speed_mm_s * dt, da = cfg_.pose_rate_rad_s * dt;
+  pose_.translation_mm.x += clamp(goal_pose_.translation_mm.x - pose_.translation_mm.x, -dp, dp);
+  pose_.translation_mm.y += clamp(goal_pose_.translation_mm.y - pose_.translation_mm.y, -dp, dp);
+  pose_.translation_mm.z += clamp(goal_pose_.translation_mm.z - pose_.translation_mm.z, -dp, dp);
+  pose_.roll_rad += clamp(goal_pose_.roll_rad - pose_.roll_rad, -da, da);
+  pose_.pitch_rad += clamp(goal_pose_.pitch_rad - pose_.pitch_rad, -da, da);
+  pose_.yaw_rad += clamp(goal_pose_.yaw_rad - pose_.yaw_rad, -da, da);
+}
+
+template <typename S>
+void GaitEngine<S>::set_gait(const GaitTable& gait) {
+  const S old_duty = duty_;
+  base_ = gait;
+  load_table(relabel_ ? gait_table::relabeled(gait, quarter_) : gait);
+  // Keep each stance's travel (stride per cycle x duty): with a longer
+  // duty the body slows at once, with a shorter one the step rate drops;
+  // either way nothing moves faster, then the ramp goes to the new plan.
+  const S r = old_duty / duty_;
+  now_s_.x = now_s_.x * r;
+  now_s_.y = now_s_.y * r;
+  now_s_.yaw = now_s_.yaw * r;
+  if (r > S(1)) now_s_.hz = now_s_.hz / r;
+  step_command(S(0));
+  replan();
+}
+
+template <typename S>
+void GaitEngine<S>::load_table(const GaitTable& t) {
+  table_ = t;
+  swing_len_ = phase_span(1.0 - double(t.duty));
+  duty_ = scalar<S>(double(t.duty));
+  inv_swing_ = scalar<S>(1.0 / (1.0 - double(t.duty)));
+  inv_stance_ = scalar<S>(1.0 / double(t.duty));
+  td_fresh_ = false;
+  uint32_t latest_end = 0;
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
+    offset_[i] = phase16(double(t.offset[i]));
+    const uint32_t end = uint32_t(offset_[i]) + swing_len_;
+    if (end <= kPhaseOne && end > latest_end) latest_end = end;
+  }
+  // Start just before the first lift-off, or at the four-foot window
+  // before it when the body must shift first.
+  start_phase_ =
+      t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
+}
+
+//! Plans the command and starts the ramp to it. The ramp runs in phase,
+//! linearly in the stride per cycle and the rate: at least one cycle, and
+//! no faster than the acceleration limits at the faster of the two rates.
+template <typename S>
+void GaitEngine<S>::replan() {
+  to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), table_.shift_body);
+  const S inv = S(1) / to_.step_hz;
+  to_s_ = Stride{to_.vx_mm_s * inv, to_.vy_mm_s * inv, to_.wz_rad_s * inv, to_.step_hz};
+  from_s_ = now_s_;
+  const S dv = max_of(abs(to_.vx_mm_s - vx_), abs(to_.vy_mm_s - vy_));
+  const S dw = abs(to_.wz_rad_s - wz_);
+  const S time = max_of(dv / cfg_.accel_mm_s2, dw / cfg_.yaw_accel_rad_s2);
+  const S cycles = max_of(time * max_of(to_s_.hz, from_s_.hz), S(1));
+  ramp_per_cycle_ = S(1) / cycles;
+  ramp_ = S(0);
+}
+
+template <typename S>
+void GaitEngine<S>::start_walking() {
+  relabel_ = base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
+  quarter_ = 0;
+  if (relabel_) {
+    // The quadrant of the direction of travel (seed 000 section 3.3).
+    const S ax = abs(to_.vx_mm_s), ay = abs(to_.vy_mm_s);
+    quarter_ = ax >= ay ? (to_.vx_mm_s >= S(0) ? 0 : 2) : (to_.vy_mm_s > S(0) ? 1 : 3);
+    load_table(gait_table::relabeled(base_, quarter_));
+  } else {
+    load_table(base_);
+  }
+  clock_.reset(start_phase_);
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
+    pending_[i] = false;
+    // Each foot starts as if it had been down since its last touch-down
+    // in the table (negative for a foot the table has in the air: its
+    // first stance runs to its offset), so none looks overdue.
+    stance_elapsed_[i] = int32_t(kPhaseOne - swing_len_) - int32_t(Phase16(offset_[i] - start_phase_));
+  }
+  in_window_ = false;
+  window_group_ = kNoGroup;
+  state_ = GaitState::kWalking;
+}
+
+//! Moves the ramp on by this tick's phase; the velocity is stride x rate.
+template <typename S>
+void GaitEngine<S>::step_command(S dt) {
+  if (ramp_ < S(1)) {
+    ramp_ = min_of(ramp_ + dt * hz_ * ramp_per_cycle_, S(1));
+    now_s_ = lerp(from_s_, to_s_, ramp_);
+    if (ramp_ >= S(1)) now_s_ = to_s_;
+  }
+  hz_ = now_s_.hz;
+  vx_ = now_s_.x * hz_;
+  vy_ = now_s_.y * hz_;
+  wz_ = now_s_.yaw * hz_;
+}
+
+//! Where foot i lands: centred on home for the travel of its coming stance
+//! (duty cycles, stride-per-cycle units): stance.h's touchdown_point, its
+//! leg-independent terms computed once per change of the landing stride.
+template <typename S>
+Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
+  if (!td_fresh_) {
+    // touchdown_point() of a home at the origin and of (1, 0) give the
+    // offset and the rotation's cosine and sine.
+    const Vec3<S> o = touchdown_point(Vec3<S>(), land_s_.x, land_s_.y, land_s_.yaw, duty_);
+    const Vec3<S> e = touchdown_point(Vec3<S>(S(1), S(0), S(0)), land_s_.x, land_s_.y, land_s_.yaw, duty_);
+    td_dx_ = o.x;
+    td_dy_ = o.y;
+    td_cos_ = e.x - o.x;
+    td_sin_ = e.y - o.y;
+    td_fresh_ = true;
+  }
+  const Vec3<S>& h = cfg_.home[i];
+  return Vec3<S>(td_cos_ * h.x - td_sin_ * h.y + td_dx_, td_sin_ * h.x + td_cos_ * h.y + td_dy_, h.z);
+}
+
+//! The mean stride per cycle over the next stance (duty cycles) along the
+//! ramp: a foot landing now is placed for it.
+template <typename S>
+void GaitEngine<S>::update_landing() {
+  const Stride was = land_s_;
+  land_s_ = now_s_;
+  if (ramp_ < S(1)) {
+    const S left = S(1) - ramp_;              // ramp still to go
+    const S finish = left / ramp_per_cycle_;  // its length [cycles]
+    // lag = (integral over the stance of (1 - ramp)) / stance
+    constexpr S half = scalar<S>(0.5);
+    const S lag = finish >= duty_ ? left - ramp_per_cycle_ * duty_ * half : left * finish * half / duty_;
+    land_s_ = lerp(from_s_, to_s_, S(1) - lag);
+  }
+  if (!(land_s_.x == was.x && land_s_.y == was.y && land_s_.yaw == was.yaw)) td_fresh_ = false;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_GAIT_ENGINE_RAMP_H

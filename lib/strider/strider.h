@@ -1,0 +1,34 @@
+//! Strider: kinematics and gaits for small hobby-servo legged robots.
+//! The umbrella header; each header below also compiles on its own.
+//! Header-only C++14, no heap, no standard library: the same code runs on an
+//! ATmega2560 (avr-gcc, -std=gnu++14) and on the host.
+#ifndef STRIDER_H
+#define STRIDER_H
+
+// math: scalars (float, Fixed Q16.16), vectors, rotations, DH transforms
+#include "math/scalar.h"
+#include "math/vec3.h"
+#include "math/mat3.h"
+#include "math/transform.h"
+#include "math/rotation.h"
+#include "math/dh.h"
+#include "math/prng.h"
+
+// kinematics: leg types, mounts, body pose, generic chains, optimisers
+#include "kinematics/ik_status.h"
+#include "kinematics/joints.h"
+#include "kinematics/sprawl_leg.h"
+#include "kinematics/planar_leg.h"
+#include "kinematics/coxa_femur_tibia_leg.h"
+#include "kinematics/abduction_leg.h"
+#include "kinematics/leg_mount.h"
+#include "kinematics/body_pose.h"
+#include "kinematics/dh_chain.h"
+#include "kinematics/dls_ik.h"
+#include "kinematics/pso.h"
+
+// robots: the built-in models and a leg of any kind built from one
+#include "robots/all_robots.h"
+#include "kinematics/any_leg.h"
+
+#endif  // STRIDER_H

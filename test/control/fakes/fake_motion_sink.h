@@ -1,0 +1,53 @@
+// A MotionSink that records what the controller asked for.
+#ifndef STRIDER_TEST_CONTROL_FAKE_MOTION_SINK_H
+#define STRIDER_TEST_CONTROL_FAKE_MOTION_SINK_H
+
+#include <stdint.h>
+
+#include <string>
+#include <vector>
+
+#include "control/avoidance.h"
+#include "control/settings.h"
+
+namespace strider_test {
+
+struct FakeMotionSink {
+  strider::Twist velocity{0, 0, 0};
+  int stands = 0;
+  int relaxes = 0;
+  std::string gait = "walk";
+  int32_t pose[3] = {0, 0, 0};
+  int32_t height = 0;
+  strider::Settings applied{};
+  int settings_applied = 0;
+
+  void set_velocity(const strider::Twist& v) { velocity = v; }
+  void stand() { velocity = strider::Twist{0, 0, 0}; ++stands; }
+  void relax() { velocity = strider::Twist{0, 0, 0}; ++relaxes; }
+  bool set_gait(const char* name) {
+    const std::string n(name);
+    if (n != "walk" && n != "trot" && n != "pace" && n != "crawl") return false;
+    gait = n;
+    return true;
+  }
+  bool set_body_pose(int32_t r, int32_t p, int32_t y) {
+    pose[0] = r;
+    pose[1] = p;
+    pose[2] = y;
+    return true;
+  }
+  bool set_body_height(int32_t h) {
+    if (h > 1500) return false;  // pretend 150 mm is the most this robot reaches
+    height = h;
+    return true;
+  }
+  void apply_settings(const strider::Settings& s) {
+    applied = s;
+    ++settings_applied;
+  }
+};
+
+}  // namespace strider_test
+
+#endif

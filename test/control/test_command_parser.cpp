@@ -1,0 +1,379 @@
+// Command protocol: table-driven text lines, every RC byte, line endings,
+// overlong and binary input, and seeded random byte streams.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "control/command_parser.h"
+#include "control/decimal.h"
+#include "control/reply.h"
+#include "fakes/parser_driver.h"
+
+using strider::Command;
+using strider::CommandKind;
+using strider::CommandParser;
+using strider::ParseError;
+using strider::ParseResult;
+using strider_test::feed_all;
+
+namespace {
+
+struct LineCase {
+  const char* line;
+  CommandKind kind;
+  int32_t a0, a1, a2;
+  const char* word;
+};
+
+// Every command with its argument scaling (tenths for mm, mm/s, deg, deg/s).
+const LineCase kGoodLines[] = {
+    {"walk 100", CommandKind::kMove, 1000, 0, 0, ""},
+    {"walk -12.5", CommandKind::kMove, -125, 0, 0, ""},
+    {"walk +0.05", CommandKind::kMove, 1, 0, 0, ""},
+    {"walk 500", CommandKind::kMove, 5000, 0, 0, ""},
+    {"strafe 80", CommandKind::kMove, 0, 800, 0, ""},
+    {"strafe -80", CommandKind::kMove, 0, -800, 0, ""},
+    {"turn 60", CommandKind::kMove, 0, 0, 600, ""},
+    {"turn -60", CommandKind::kMove, 0, 0, -600, ""},
+    {"turn .5", CommandKind::kMove, 0, 0, 5, ""},
+    {"vel 100 -20 15", CommandKind::kMove, 1000, -200, 150, ""},
+    {"velocity 400 0 -360", CommandKind::kMove, 4000, 0, -3600, ""},
+    {"stop", CommandKind::kStop, 0, 0, 0, ""},
+    {"relax", CommandKind::kRelax, 0, 0, 0, ""},
+    {"speed 0", CommandKind::kSpeed, 0, 0, 0, ""},
+    {"speed 100", CommandKind::kSpeed, 100, 0, 0, ""},
+    {"gait trot", CommandKind::kGait, 0, 0, 0, "trot"},
+    {"gait tripod", CommandKind::kGait, 0, 0, 0, "tripod"},
+    {"pose 5 -3.5 0", CommandKind::kPose, 50, -35, 0, ""},
+    {"height 80", CommandKind::kHeight, 800, 0, 0, ""},
+    {"avoid on", CommandKind::kAvoidEnable, 1, 0, 0, ""},
+    {"avoid off", CommandKind::kAvoidEnable, 0, 0, 0, ""},
+    {"avoid 200 400", CommandKind::kAvoidLimits, 200, 400, 0, ""},
+    {"avoid 150 150", CommandKind::kAvoidLimits, 150, 150, 0, ""},
+    {"deadman 1500", CommandKind::kDeadman, 1500, 0, 0, ""},
+    {"deadman 0", CommandKind::kDeadman, 0, 0, 0, ""},
+    {"baud 115200", CommandKind::kBaud, 115200, 0, 0, ""},
+    {"cal start", CommandKind::kCalStart, 0, 0, 0, ""},
+    {"cal trim 3 -2.5", CommandKind::kCalTrim, 3, -25, 0, ""},
+    {"cal trim 17 30", CommandKind::kCalTrim, 17, 300, 0, ""},
+    {"cal osc 26075000", CommandKind::kCalOsc, 26075000, 0, 0, ""},
+    {"cal pwm 330", CommandKind::kCalPwm, 330, 0, 0, ""},
+    {"cal show", CommandKind::kCalShow, 0, 0, 0, ""},
+    {"cal save", CommandKind::kCalSave, 0, 0, 0, ""},
+    {"cal abort", CommandKind::kCalAbort, 0, 0, 0, ""},
+    {"save", CommandKind::kSave, 0, 0, 0, ""},
+    {"status", CommandKind::kStatus, 0, 0, 0, ""},
+    {"help", CommandKind::kHelp, 0, 0, 0, ""},
+    {"  walk\t 10  ", CommandKind::kMove, 100, 0, 0, ""},
+    {"w", CommandKind::kLight, 'w', 0, 0, ""},
+    {"v", CommandKind::kLight, 'v', 0, 0, ""},
+};
+
+struct BadCase {
+  const char* line;
+  ParseError error;
+};
+
+const BadCase kBadLines[] = {
+    {"jump", ParseError::kUnknownCommand},
+    {"walkx 10", ParseError::kUnknownCommand},
+    {"wal 10", ParseError::kUnknownCommand},
+    {"walk", ParseError::kMissingArgument},
+    {"walk 10 20", ParseError::kExtraArgument},
+    {"walk ten", ParseError::kBadArgument},
+    {"walk 1e3", ParseError::kBadArgument},
+    {"walk 1.2.3", ParseError::kBadArgument},
+    {"walk -", ParseError::kBadArgument},
+    {"walk .", ParseError::kBadArgument},
+    {"walk 500.1", ParseError::kOutOfRange},
+    {"walk -99999999999", ParseError::kOutOfRange},
+    {"turn 361", ParseError::kOutOfRange},
+    {"vel 1 2", ParseError::kMissingArgument},
+    {"vel 1 2 3 4", ParseError::kExtraArgument},
+    {"vel 501 0 0", ParseError::kOutOfRange},
+    {"vel 0 0 400", ParseError::kOutOfRange},
+    {"stop now", ParseError::kExtraArgument},
+    {"speed 101", ParseError::kOutOfRange},
+    {"speed -1", ParseError::kOutOfRange},
+    {"speed 5.5x", ParseError::kBadArgument},
+    {"gait", ParseError::kMissingArgument},
+    {"gait Trot", ParseError::kBadArgument},
+    {"gait verylongname", ParseError::kBadArgument},
+    {"gait trot walk", ParseError::kExtraArgument},
+    {"pose 31 0 0", ParseError::kOutOfRange},
+    {"pose 1 2", ParseError::kMissingArgument},
+    {"height 5", ParseError::kOutOfRange},
+    {"avoid", ParseError::kMissingArgument},
+    {"avoid maybe", ParseError::kBadArgument},
+    {"avoid on off", ParseError::kExtraArgument},
+    {"avoid 400 200", ParseError::kOutOfRange},
+    {"avoid 10 200", ParseError::kOutOfRange},
+    {"deadman 60001", ParseError::kOutOfRange},
+    {"baud 12345", ParseError::kOutOfRange},
+    {"cal", ParseError::kMissingArgument},
+    {"cal dance", ParseError::kBadArgument},
+    {"cal trim 18 0", ParseError::kOutOfRange},
+    {"cal trim 1 30.1", ParseError::kOutOfRange},
+    {"cal trim 1", ParseError::kMissingArgument},
+    {"cal trim 1 2 3", ParseError::kExtraArgument},
+    {"cal osc 19999999", ParseError::kOutOfRange},
+    {"cal pwm 39", ParseError::kOutOfRange},
+    {"cal start now", ParseError::kExtraArgument},
+    {"a b c d e f", ParseError::kExtraArgument},
+    {"status!", ParseError::kUnknownCommand},
+};
+
+std::vector<strider_test::ParseEvent> one_line(const std::string& s) {
+  CommandParser p;
+  return feed_all(p, s);
+}
+
+TEST(CommandParser, EveryCommandParses) {
+  for (const LineCase& c : kGoodLines) {
+    const auto ev = one_line(std::string(c.line) + "\n");
+    ASSERT_EQ(ev.size(), 1u) << c.line;
+    EXPECT_EQ(ev[0].result, ParseResult::kCommand) << c.line;
+    const Command& cmd = ev[0].command;
+    EXPECT_EQ(cmd.kind, c.kind) << c.line;
+    EXPECT_EQ(cmd.source, strider::CommandSource::kLine) << c.line;
+    EXPECT_EQ(cmd.arg[0], c.a0) << c.line;
+    EXPECT_EQ(cmd.arg[1], c.a1) << c.line;
+    EXPECT_EQ(cmd.arg[2], c.a2) << c.line;
+    EXPECT_STREQ(cmd.word, c.word) << c.line;
+  }
+}
+
+TEST(CommandParser, EveryErrorIsReportedOnce) {
+  for (const BadCase& c : kBadLines) {
+    const auto ev = one_line(std::string(c.line) + "\r\n");
+    ASSERT_EQ(ev.size(), 1u) << c.line;
+    EXPECT_EQ(ev[0].result, ParseResult::kError) << c.line;
+    EXPECT_EQ(int(ev[0].command.error), int(c.error)) << c.line;
+  }
+}
+
+TEST(CommandParser, LineEndingsCrLfCrlf) {
+  for (const char* end : {"\r", "\n", "\r\n"}) {
+    CommandParser p;
+    const auto ev = feed_all(p, std::string("walk 10") + end + "turn 5" + end + end);
+    ASSERT_EQ(ev.size(), 2u) << int(end[0]);
+    EXPECT_EQ(ev[0].command.arg[0], 100);
+    EXPECT_EQ(ev[1].command.arg[2], 50);
+  }
+  // No ending at all: nothing happens until one arrives or the idle timeout.
+  CommandParser p;
+  EXPECT_TRUE(feed_all(p, "walk 10").empty());
+  Command c{};
+  EXPECT_EQ(p.idle_timeout(&c), ParseResult::kError);
+  EXPECT_EQ(c.error, ParseError::kIncomplete);
+  EXPECT_EQ(feed_all(p, "stop\n").size(), 1u);
+  // LF CR (reversed) yields two line ends: still one command, no blank-line reply.
+  CommandParser q;
+  EXPECT_EQ(feed_all(q, "stop\n\rstop\n\r").size(), 2u);
+}
+
+TEST(CommandParser, EveryRcByte) {
+  struct Rc {
+    char b;
+    CommandKind kind;
+    int32_t a0, a1, a2;
+  };
+  const Rc table[] = {
+      {'F', CommandKind::kDrive, 1, 0, 0},   {'B', CommandKind::kDrive, -1, 0, 0},
+      {'L', CommandKind::kDrive, 0, 1, 0},   {'R', CommandKind::kDrive, 0, -1, 0},
+      {'G', CommandKind::kDrive, 0, 0, 1},   {'I', CommandKind::kDrive, 0, 0, -1},
+      {'H', CommandKind::kDrive, -1, 1, 0},  {'J', CommandKind::kDrive, -1, -1, 0},
+      {'S', CommandKind::kStop, 0, 0, 0},    {'q', CommandKind::kSpeed, 100, 0, 0},
+      {'W', CommandKind::kLight, 'W', 0, 0}, {'U', CommandKind::kLight, 'U', 0, 0},
+      {'u', CommandKind::kLight, 'u', 0, 0}, {'V', CommandKind::kLight, 'V', 0, 0},
+      {'X', CommandKind::kLight, 'X', 0, 0}, {'x', CommandKind::kLight, 'x', 0, 0},
+  };
+  for (const Rc& rc : table) {
+    const auto ev = one_line(std::string(1, rc.b));
+    ASSERT_EQ(ev.size(), 1u) << rc.b;
+    EXPECT_EQ(ev[0].command.kind, rc.kind) << rc.b;
+    EXPECT_EQ(ev[0].command.source, strider::CommandSource::kBareByte) << rc.b;
+    EXPECT_EQ(ev[0].command.arg[0], rc.a0) << rc.b;
+    EXPECT_EQ(ev[0].command.arg[1], rc.a1) << rc.b;
+    EXPECT_EQ(ev[0].command.arg[2], rc.a2) << rc.b;
+  }
+  for (int d = 0; d <= 9; ++d) {
+    const auto ev = one_line(std::string(1, char('0' + d)));
+    ASSERT_EQ(ev.size(), 1u);
+    EXPECT_EQ(ev[0].command.kind, CommandKind::kSpeed);
+    EXPECT_EQ(ev[0].command.arg[0], d * 10);
+  }
+}
+
+TEST(CommandParser, SeedSixMotionsFromAppAndText) {
+  // Seed 000: front, back, left, right, clockwise, anticlockwise.
+  const char* app = "FBLRIG";
+  const char* text[] = {"walk 100", "walk -100", "strafe 100", "strafe -100", "turn -60", "turn 60"};
+  for (int i = 0; i < 6; ++i) {
+    const auto a = one_line(std::string(1, app[i]));
+    const auto t = one_line(std::string(text[i]) + "\n");
+    ASSERT_EQ(a.size(), 1u);
+    ASSERT_EQ(t.size(), 1u);
+    for (int k = 0; k < 3; ++k) {
+      const int32_t sa = a[0].command.arg[k], st = t[0].command.arg[k];
+      EXPECT_EQ((sa > 0) - (sa < 0), (st > 0) - (st < 0)) << text[i];
+    }
+  }
+}
+
+TEST(CommandParser, AppStreamWithoutLineEndings) {
+  CommandParser p;
+  // Held button repeats, speed slider, lights on/off, release: all bare.
+  const auto ev = feed_all(p, "FFF5FFwWvVSq0uUxXLLS");
+  std::vector<CommandKind> kinds;
+  for (const auto& e : ev) {
+    EXPECT_EQ(e.result, ParseResult::kCommand);
+    kinds.push_back(e.command.kind);
+  }
+  // w and v are dropped by the lookahead (lights are ignored anyway); 18 others remain.
+  EXPECT_EQ(ev.size(), 18u);
+  EXPECT_EQ(ev[3].command.kind, CommandKind::kSpeed);
+  EXPECT_EQ(ev[3].command.arg[0], 50);
+  EXPECT_EQ(ev.back().command.kind, CommandKind::kStop);
+  EXPECT_FALSE(p.collecting());
+}
+
+TEST(CommandParser, RcByteOnItsOwnLineIsEchoed) {
+  CommandParser p;
+  const auto ev = feed_all(p, "F\r\n");
+  ASSERT_EQ(ev.size(), 2u);
+  EXPECT_EQ(ev[0].command.kind, CommandKind::kDrive);
+  EXPECT_EQ(ev[1].command.kind, CommandKind::kRcEcho);
+  EXPECT_EQ(ev[1].command.arg[0], 'F');
+  EXPECT_EQ(ev[1].command.source, strider::CommandSource::kLine);
+}
+
+TEST(CommandParser, OverlongLineOneErrorThenResync) {
+  CommandParser p;
+  const std::string longline = "walk " + std::string(200, '1');
+  auto ev = feed_all(p, longline + "\nstop\n");
+  ASSERT_EQ(ev.size(), 2u);
+  EXPECT_EQ(ev[0].command.error, ParseError::kLineTooLong);
+  EXPECT_EQ(ev[1].command.kind, CommandKind::kStop);
+  // Exactly kMaxLineBytes is still accepted.
+  std::string max = "help" + std::string(strider::kMaxLineBytes - 4, ' ');
+  ev = feed_all(p, max + "\n");
+  ASSERT_EQ(ev.size(), 1u);
+  EXPECT_EQ(ev[0].command.kind, CommandKind::kHelp);
+  ev = feed_all(p, max + " \n");
+  ASSERT_EQ(ev.size(), 1u);
+  EXPECT_EQ(ev[0].command.error, ParseError::kLineTooLong);
+}
+
+TEST(CommandParser, BinaryInsideLineAndBetweenLines) {
+  CommandParser p;
+  auto ev = feed_all(p, std::string("walk \x01\xff 10\nstop\n"));
+  ASSERT_EQ(ev.size(), 2u);
+  EXPECT_EQ(ev[0].command.error, ParseError::kBadByte);
+  EXPECT_EQ(ev[1].command.kind, CommandKind::kStop);
+  // Junk between lines: one error, then skipped until a valid start byte.
+  ev = feed_all(p, std::string("\x00\x80\xfe\x7f#!F", 7));
+  ASSERT_EQ(ev.size(), 2u);
+  EXPECT_EQ(ev[0].command.error, ParseError::kBadByte);
+  EXPECT_EQ(ev[1].command.kind, CommandKind::kDrive);
+}
+
+TEST(CommandParser, LightLookaheadKeepsWords) {
+  CommandParser p;
+  auto ev = feed_all(p, "wF");
+  ASSERT_EQ(ev.size(), 1u);
+  EXPECT_EQ(ev[0].command.kind, CommandKind::kDrive);
+  ev = feed_all(p, "walk 20\n");
+  ASSERT_EQ(ev.size(), 1u);
+  EXPECT_EQ(ev[0].command.kind, CommandKind::kMove);
+  ev = feed_all(p, "v7");
+  ASSERT_EQ(ev.size(), 1u);
+  EXPECT_EQ(ev[0].command.arg[0], 70);
+  Command c{};
+  feed_all(p, "w");
+  EXPECT_EQ(p.idle_timeout(&c), ParseResult::kNothing);  // a lone light byte is no error
+}
+
+TEST(Decimal, ScalesAndRounds) {
+  struct D {
+    const char* s;
+    uint8_t dec;
+    strider::DecimalStatus st;
+    int32_t v;
+  };
+  const D table[] = {{"0", 1, strider::DecimalStatus::kOk, 0},
+                     {"12.34", 1, strider::DecimalStatus::kOk, 123},
+                     {"12.35", 1, strider::DecimalStatus::kOk, 124},
+                     {"-12.35", 1, strider::DecimalStatus::kOk, -124},
+                     {"7.", 2, strider::DecimalStatus::kOk, 700},
+                     {".25", 0, strider::DecimalStatus::kOk, 0},
+                     {".5", 0, strider::DecimalStatus::kOk, 1},
+                     {"2000000000", 0, strider::DecimalStatus::kOk, 2000000000},
+                     {"2000000001", 0, strider::DecimalStatus::kOverflow, 0},
+                     {"300000000", 1, strider::DecimalStatus::kOverflow, 0},
+                     {"", 0, strider::DecimalStatus::kSyntax, 0},
+                     {"+", 0, strider::DecimalStatus::kSyntax, 0},
+                     {"1-", 0, strider::DecimalStatus::kSyntax, 0},
+                     {"--1", 0, strider::DecimalStatus::kSyntax, 0}};
+  for (const D& d : table) {
+    int32_t v = -777;
+    const auto st = strider::parse_decimal(d.s, uint8_t(std::string(d.s).size()), d.dec, &v);
+    EXPECT_EQ(st, d.st) << d.s;
+    EXPECT_EQ(v, st == strider::DecimalStatus::kOk ? d.v : -777) << d.s;
+  }
+}
+
+TEST(Reply, FormatsWithoutOverrun) {
+  char buf[strider::kMaxReplyBytes];
+  strider::ReplyWriter w(buf, sizeof buf);
+  w.text("ok move").field_tenths("vx", -125).field("speed", 50).field_text("gait", "trot");
+  EXPECT_STREQ(w.c_str(), "ok move vx=-12.5 speed=50 gait=trot");
+  char small[8];
+  strider::ReplyWriter s(small, sizeof small);
+  strider::write_parse_error(s, ParseError::kOutOfRange);
+  EXPECT_STREQ(s.c_str(), "err 5 o");
+  EXPECT_TRUE(s.truncated());
+  char b2[32];
+  strider::ReplyWriter m(b2, sizeof b2);
+  m.integer(INT32_MIN);
+  EXPECT_STREQ(m.c_str(), "-2147483648");
+}
+
+// Random byte streams (fixed seed): never more than one event per byte, the
+// partial line stays bounded, and a newline always brings the parser back.
+TEST(CommandParser, RandomStreamsResynchronise) {
+  std::mt19937 rng(20240601u);
+  std::uniform_int_distribution<int> len_dist(1, 200);
+  std::uniform_int_distribution<int> byte_dist(0, 255);
+  std::uniform_int_distribution<int> mix(0, 3);
+  const char* alphabet = "walk strafe turn vel 0123456789.-+ \t\r\nFBLRSGIHJqwvWV";
+  const std::string alpha(alphabet);
+  std::uniform_int_distribution<size_t> alpha_dist(0, alpha.size() - 1);
+  for (int i = 0; i < STRIDER_RANDOM_CASES; ++i) {
+    CommandParser p;
+    const int n = len_dist(rng);
+    const bool textish = mix(rng) != 0;
+    for (int k = 0; k < n; ++k) {
+      const uint8_t b = textish ? uint8_t(alpha[alpha_dist(rng)]) : uint8_t(byte_dist(rng));
+      Command c{};
+      const ParseResult r = p.feed(b, &c);
+      ASSERT_LE(p.line_length(), strider::kMaxLineBytes);
+      if (r == ParseResult::kError) {
+        ASSERT_NE(c.error, ParseError::kNone);
+      }
+      if (r == ParseResult::kCommand) {
+        ASSERT_NE(c.kind, CommandKind::kNone);
+      }
+    }
+    // Resync: after a line end, a valid line is understood.
+    auto ev = feed_all(p, "\nstatus\n");
+    ASSERT_FALSE(ev.empty());
+    EXPECT_EQ(ev.back().result, ParseResult::kCommand) << "case " << i;
+    EXPECT_EQ(ev.back().command.kind, CommandKind::kStatus) << "case " << i;
+  }
+}
+
+}  // namespace
