@@ -31,4 +31,19 @@
 #include "robots/all_robots.h"
 #include "kinematics/any_leg.h"
 
+// gait: gait tables, phase, swing/stance trajectories, engine, walker, stability
+#include "gait/gait.h"
+
+// control: command protocol, servo map, settings, sonar, avoidance, controller
+#include "control/command_parser.h"
+#include "control/reply.h"
+#include "control/servo_map.h"
+#include "control/pca9685_timing.h"
+#include "control/settings_store.h"
+#include "control/calibration.h"
+#include "control/sonar_filter.h"
+#include "control/avoidance.h"
+#include "control/deadman.h"
+#include "control/controller.h"
+
 #endif  // STRIDER_H
