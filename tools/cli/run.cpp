@@ -26,7 +26,7 @@ std::string usage_text() {
          "Legs are numbered from 0, counter-clockwise seen from above, starting front left.\n"
          "Joint angles are in the leg type's seed convention (docs/kinematics.md), not servo\n"
          "angles. --frame defaults to leg, --scalar to float.\n"
-         "Output: one JSON object per line on stdout. Exit status 0, also for an unreachable\n"
+         "Output: one JSON object per line on stdout (gait: CSV). Exit status 0, also for an unreachable\n"
          "point; 2 for bad usage, with a message on stderr.\n";
 }
 
