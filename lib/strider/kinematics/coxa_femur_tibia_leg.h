@@ -38,13 +38,14 @@ namespace leg_ik {
 //! The integer fast path of CoxaFemurTibiaLeg<Fixed>::ik() for the common
 //! case: target off the yaw axis, in front of it and strictly inside the
 //! femur-tibia annulus (a kOk solve of the target itself). Float, and every
-//! other case, returns false and takes the general path.
+//! other case, returns false and takes the general path. Writes sol only
+//! when it returns true.
 template <typename Leg, typename S>
 bool cft_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 3>&) {
   return false;
 }
 template <typename Leg>
-bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 3>& sol) {
+STRIDER_ALWAYS_INLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 3>& sol) {
   int32_t x, y, v;
   if (!wide::from_mm(target.x, leg.unit_shift, x) || !wide::from_mm(target.y, leg.unit_shift, y) ||
       !wide::from_mm(target.z - leg.d1_mm, leg.unit_shift, v) || leg.coxa_unit.raw() >= (int32_t(8) << 16))
@@ -54,7 +55,7 @@ bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed
   if (rho2 < 0x10000UL || rho2 >= 0x40000000UL) return false;
   const int32_t h = wide::sqrt_sq(rho2) - wide::from_unit(leg.coxa_unit);  // eq 11, row 1
   if (!solve_wide(leg.link, h, v, leg.branch, sol[1], sol[2])) return false;
-  sol[0] = wide::atan2_raw(target.y.raw(), target.x.raw());  // eq 12
+  sol[0] = Fixed::from_raw(detail::atan2_lean_raw(target.y.raw(), target.x.raw()));  // eq 12
   return true;
 }
 
@@ -96,15 +97,28 @@ struct CoxaFemurTibiaLeg {
   //! joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
-    Joints sol;
     // Fixed's fast path: strictly inside the annulus is within the bounds
-    // below while max_clamp >= 0 (always false for float).
-    if (leg_ik::cft_solve_fast(*this, target, sol) && !(opt.max_clamp_mm < S(0))) {
-      if (!limits.contains(sol)) return leg_ik::finish(*this, target, sol, false, opt, q, reached);
-      q = sol;  // what finish() does for an exact solve inside the limits
-      reached = target;
+    // of ik_general() while max_clamp >= 0 (always false for float). It
+    // writes q only when it succeeds, and every exit below then writes q
+    // anyway, so it solves into q directly (no zeroed copy to fill and move).
+    if (!(opt.max_clamp_mm < S(0)) && leg_ik::cft_solve_fast(*this, target, q)) {
+      if (!limits.contains(q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
+      // What finish() does for an exact solve inside the limits; field by
+      // field, as avr-gcc copies a whole Vec3 with a byte loop.
+      reached.x = target.x;
+      reached.y = target.y;
+      reached.z = target.z;
       return IkStatus::kOk;
     }
+    return ik_general(target, q, reached, opt);
+  }
+
+ private:
+  // Every case the fast path leaves; out of line, so that ik()'s common case
+  // does not pay for this path's registers and stack frame.
+  STRIDER_NOINLINE IkStatus ik_general(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+                                       const IkOptions<S>& opt) const {
+    Joints sol;
     const S bound_z = reach_mm + opt.max_clamp_mm;
     const S bound_xy = coxa_mm + bound_z;
     if (!leg_ik::within(target.x, bound_xy) || !leg_ik::within(target.y, bound_xy) ||
@@ -137,7 +151,6 @@ struct CoxaFemurTibiaLeg {
     return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);
   }
 
- private:
   // The target is inside the hole of the femur-tibia annulus on the near side
   // (h = rho - l1, D^2 = d2). Facing away (h = -rho - l1), is it nearer the
   // annulus? [unit^2]

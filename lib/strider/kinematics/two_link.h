@@ -98,16 +98,15 @@ STRIDER_ALWAYS_INLINE uint32_t shl(uint32_t u, uint8_t k) {
   return u;
 }
 
-//! Fixed [mm] to wide units of a leg with unit shift n; false when |v| is
-//! 8 units or more (then the caller takes the general path).
-inline bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
+//! from_mm() for any shift: out of line, as only short legs (below 128 mm),
+//! very long ones and coordinates of 256 mm or more need it.
+inline bool from_mm_general(Fixed v_mm, int8_t shift, int32_t& out) {
   uint32_t m = Fixed::abs_raw(v_mm.raw());
   const int8_t k = int8_t(12 - shift);  // wide = raw 2^(12 - n)
   if (k >= 0) {
     if (k > 15) return false;
-    // m 2^k < 2^31; a variable 32-bit shift is a loop, so test the common
-    // case (k <= 7, m < 2^24) first.
-    if ((k > 7 || m >= 0x1000000UL) && m >= (uint32_t(0x80000000UL) >> k)) return false;
+    // m 2^k < 2^31; a variable 32-bit shift is a loop.
+    if (m >= (uint32_t(0x80000000UL) >> k)) return false;
     m = shl(m, uint8_t(k));
   } else {
     if (k < -24) return false;
@@ -116,6 +115,23 @@ inline bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
   }
   out = v_mm.raw() < 0 ? -int32_t(m) : int32_t(m);
   return true;
+}
+
+//! Fixed [mm] to wide units of a leg with unit shift n; false when |v| is
+//! 8 units or more (then the caller takes the general path).
+STRIDER_ALWAYS_INLINE bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
+  const uint8_t down = uint8_t(shift - 4);  // 8 - k for wide = raw 2^k, k = 12 - n
+  uint32_t m = Fixed::abs_raw(v_mm.raw());
+  // The common case, inline: |v| < 256 mm and k in [1, 7] (legs of 128 mm
+  // and more). raw 2^k is a whole-byte shift, then 8 - k single-bit steps
+  // back (one for a 128-255 mm leg), instead of k steps; it stays below 2^31.
+  if (down - 1U < 7U && m < 0x1000000UL) {
+    m <<= 8;
+    for (uint8_t r = down; r != 0; --r) m >>= 1;
+    out = v_mm.raw() < 0 ? -int32_t(m) : int32_t(m);
+    return true;
+  }
+  return from_mm_general(v_mm, shift, out);
 }
 
 //! A Fixed length [unit] below 8 units in wide units (exact).
@@ -142,8 +158,9 @@ STRIDER_ALWAYS_INLINE uint32_t shift_signed(uint32_t root, int8_t e) {
   return e >= 0 ? shl(root, uint8_t(e)) : detail::shr_round(root, uint8_t(-e));
 }
 
-//! sqrt(x) for x in Q6.24 (0 < x < 2^30): wide units.
-inline int32_t sqrt_sq(uint32_t x) {
+//! sqrt(x) for x in Q6.24 (0 < x < 2^30): wide units. Inline: one call
+//! site per solver, where a call costs more in register saves.
+STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
   const uint8_t s = detail::normalize_even(x);
   // isqrt_q22 ~ sqrt(x 2^(22 + s)); the wide root is sqrt(x) 2^16.
   return int32_t(shift_signed(detail::isqrt_q22(x), int8_t(5 - s / 2)));
@@ -152,7 +169,8 @@ inline int32_t sqrt_sq(uint32_t x) {
 //! sqrt(p q) for p, q > 0 in Q6.24 (a product of up to 60 bits), relative
 //! error < 2^-14: both are normalised to 16 significant bits, multiplied,
 //! and the root comes from the interpolated table alone. Q6.24.
-inline uint32_t sqrt_product(uint32_t p, uint32_t q) {
+//! Inline for the same reason as sqrt_sq().
+STRIDER_ALWAYS_INLINE uint32_t sqrt_product(uint32_t p, uint32_t q) {
   uint8_t k = uint8_t(normalize_top(p) + normalize_top(q));
   uint32_t m = detail::mul_u16(detail::hi16(p), detail::hi16(q));  // p q = m 2^(32 - k), m >= 2^30
   if (k & 1) {
@@ -163,24 +181,6 @@ inline uint32_t sqrt_product(uint32_t p, uint32_t q) {
   // sqrt(m) in [2^15, 2^16]; sqrt(p q) = sqrt(m) 2^(16 - k/2).
   return shift_signed(detail::isqrt_table_estimate(m), int8_t(16 - k / 2));
 }
-
-//! The top 16 bits of a and b after one common shift, the larger magnitude
-//! in [2^14, 2^15): a pair with the same angle and ~15 significant bits.
-inline void to_q15_pair(int32_t a, int32_t b, int16_t& a16, int16_t& b16) {
-  uint32_t ua = detail::abs_u32(a), ub = detail::abs_u32(b);
-  uint32_t mx = ua | ub;  // same top bit as the larger one
-  if (mx == 0) { a16 = b16 = 0; return; }
-  const uint8_t k = normalize_top(mx);
-  const int16_t ha = int16_t(detail::hi16(shl(ua, k)) >> 1), hb = int16_t(detail::hi16(shl(ub, k)) >> 1);
-  a16 = a < 0 ? int16_t(-ha) : ha;
-  b16 = b < 0 ? int16_t(-hb) : hb;
-}
-
-//! Signed 16x16 -> 32 product.
-STRIDER_ALWAYS_INLINE int32_t mul_s16(int16_t a, int16_t b) { return int32_t(a) * int32_t(b); }
-
-//! atan2(y, x) [rad] as Fixed for int32 y, x of any common scale.
-STRIDER_ALWAYS_INLINE Fixed atan2_raw(int32_t y, int32_t x) { return Fixed::from_raw(detail::atan2_lean_raw(y, x)); }
 
 }  // namespace wide
 
@@ -196,13 +196,21 @@ inline bool solve_wide(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBra
   const int32_t c = int32_t(d2) - (link.sum_sq.raw() << 8);            // 2 a1 a2 cos tb [Q6.24]
   int32_t s = int32_t(wide::sqrt_product(outer2 - d2, d2 - inner2));  // 2 a1 a2 |sin tb|
   if (branch == KneeBranch::kNegative) s = -s;
-  tb = wide::atan2_raw(s, c);
   const int32_t k1 = int32_t(d2) + (link.diff_sq.raw() << 8);  // 2 a1 (a1 + a2 cos tb)
-  int16_t k1s, k2s, hs, vs;
-  wide::to_q15_pair(k1, s, k1s, k2s);
-  wide::to_q15_pair(h, v, hs, vs);
-  ta = wide::atan2_raw(wide::mul_s16(vs, k1s) - wide::mul_s16(hs, k2s),
-                       wide::mul_s16(hs, k1s) + wide::mul_s16(vs, k2s));
+  // tb = atan2(s, c); ta = atan2(v, h) - atan2(s, k1), two lean atan2s
+  // being cheaper on the AVR than scaling both pairs to 16 bits for the
+  // angle-difference identity; their errors (< 1.2e-4 rad together) stay far
+  // inside the bounds. The bodies are inlined: a call costs ~100 cycles of
+  // register saves each, for ~0.7 KB of flash per copy.
+  tb = Fixed::from_raw(detail::atan2_lean_raw(s, c));
+  int32_t a = detail::atan2_lean_raw(v, h) - detail::atan2_lean_raw(s, k1);
+  const int32_t pi_raw = int32_t((detail::kPiQ24 + 128) >> 8);
+  if (a > pi_raw) {
+    a -= 2 * pi_raw;
+  } else if (a <= -pi_raw) {
+    a += 2 * pi_raw;
+  }
+  ta = Fixed::from_raw(a);
   return true;
 }
 

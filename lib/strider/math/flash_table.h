@@ -27,6 +27,14 @@
 #define STRIDER_ALWAYS_INLINE inline
 #endif
 
+// Rare, large paths kept out of a hot caller, so that the caller's
+// prologue saves only the registers its common case needs.
+#if defined(__GNUC__)
+#define STRIDER_NOINLINE __attribute__((noinline))
+#else
+#define STRIDER_NOINLINE
+#endif
+
 namespace strider {
 
 //! table[i] of a uint16_t table declared with STRIDER_PROGMEM.
