@@ -6,14 +6,8 @@
 
 #include <stdint.h>
 
+#include "../math/flash_table.h"
 #include "command.h"
-
-#if defined(__AVR__)
-#include <avr/pgmspace.h>
-#define STRIDER_PROGMEM PROGMEM
-#else
-#define STRIDER_PROGMEM
-#endif
 
 namespace strider {
 
@@ -24,13 +18,7 @@ struct FlashText {
 };
 
 //! One character of a FlashText.
-inline char flash_char(const char* p) {
-#if defined(__AVR__)
-  return char(pgm_read_byte(p));
-#else
-  return *p;
-#endif
-}
+inline char flash_char(const char* p) { return char(flash_u8(p)); }
 
 constexpr uint8_t kMaxReplyBytes = 160;  //!< suggested buffer: longest reply (cal show) + "\r\n" + NUL
 

@@ -12,9 +12,11 @@
 
 #include <stdint.h>
 
+// lib/ includes no hardware header, so this is what avr-libc's PROGMEM and
+// pgm_read_byte/word expand to: gcc's progmem attribute and the LPM
+// instruction (with post-increment, which every ATmega with a multiplier has).
 #if defined(__AVR__)
-#include <avr/pgmspace.h>
-#define STRIDER_PROGMEM PROGMEM
+#define STRIDER_PROGMEM __attribute__((__progmem__))
 #else
 #define STRIDER_PROGMEM
 #endif
@@ -40,9 +42,23 @@ namespace strider {
 //! table[i] of a uint16_t table declared with STRIDER_PROGMEM.
 STRIDER_ALWAYS_INLINE uint16_t flash_u16(const uint16_t* table, uint16_t i) {
 #if defined(__AVR__)
-  return pgm_read_word(table + i);
+  uint16_t v;
+  const uint16_t* p = table + i;
+  asm("lpm %A0, Z+" "\n\t" "lpm %B0, Z" : "=r"(v), "+z"(p));
+  return v;
 #else
   return table[i];
+#endif
+}
+
+//! The byte at p, an address declared with STRIDER_PROGMEM.
+STRIDER_ALWAYS_INLINE uint8_t flash_u8(const void* p) {
+#if defined(__AVR__)
+  uint8_t v;
+  asm("lpm %0, Z" : "=r"(v) : "z"(p));
+  return v;
+#else
+  return *static_cast<const uint8_t*>(p);
 #endif
 }
 
