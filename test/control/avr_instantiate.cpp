@@ -48,6 +48,7 @@ struct NullSink {
   bool set_body_pose(int32_t, int32_t, int32_t) { return true; }
   bool set_body_height(int32_t h) { return h < 1000; }
   void apply_settings(const strider::Settings& s) { g_sink = uint16_t(s.pwm_hz); }
+  void write_status(strider::ReplyWriter& w) { w.text(" sink=null"); }
 };
 
 template <typename S>

@@ -12,6 +12,7 @@
 //!   bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw);  // [0.1 deg]; false: refused
 //!   bool set_body_height(int32_t height); // [0.1 mm]; false: out of the robot's range
 //!   void apply_settings(const Settings& s);  // trims, oscillator, PWM frequency
+//!   void write_status(ReplyWriter& w);    // appends its own ` key=value` fields to `status`
 #ifndef STRIDER_CONTROL_CONTROLLER_H
 #define STRIDER_CONTROL_CONTROLLER_H
 
@@ -49,6 +50,12 @@ class Controller {
   bool on_idle(uint32_t now_ms, ReplyWriter& w) {
     Command c;
     return handle(parser_.idle_timeout(&c), c, now_ms, w);
+  }
+
+  //! A parse result from a parser of the caller's (one per serial port, so
+  //! two links never mix their bytes). Returns true when *w holds a reply.
+  bool on_parsed(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
+    return handle(r, c, now_ms, w);
   }
 
   //! One control tick: deadman and avoidance; sends the walking command.
@@ -239,6 +246,7 @@ class Controller {
     w.field_text(FlashText{text::kSonar}, sonar);
     if (sonar_.status == SonarStatus::kOk && sonar_.distance_mm != kSonarFarMm) w.field(FlashText{text::kDistMm}, sonar_.distance_mm);
     w.field(FlashText{text::kDeadmanMs}, settings_.deadman_ms).field_text(FlashText{text::kEeprom}, to_string(load_status_));
+    sink_.write_status(w);
   }
 
   Sink& sink_;

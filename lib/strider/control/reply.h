@@ -20,7 +20,7 @@ struct FlashText {
 //! One character of a FlashText.
 inline char flash_char(const char* p) { return char(flash_u8(p)); }
 
-constexpr uint8_t kMaxReplyBytes = 160;  //!< suggested buffer: longest reply (cal show) + "\r\n" + NUL
+constexpr uint8_t kMaxReplyBytes = 200;  //!< suggested buffer: longest reply (status, cal show) + "\r\n" + NUL
 
 class ReplyWriter {
  public:

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "control/avoidance.h"
+#include "control/reply.h"
 #include "control/settings.h"
 
 namespace strider_test {
@@ -42,6 +43,7 @@ struct FakeMotionSink {
     height = h;
     return true;
   }
+  void write_status(strider::ReplyWriter& w) { w.text(" sink=fake"); }
   void apply_settings(const strider::Settings& s) {
     applied = s;
     ++settings_applied;

@@ -1,0 +1,225 @@
+//! RobotApp: the whole robot behind its hardware seams. The firmware's main
+//! loop and the simulator's library mode both run exactly this:
+//!
+//!   link bytes -> one CommandParser per port -> Controller (deadman, avoidance)
+//!   -> WalkerMotion (gait engine, body pose, IK) -> ServoStage (servo map,
+//!   slew limit, soft start) -> ServoOutput
+//!
+//! The caller owns the hardware: it passes bytes in, pings the sonar when
+//! sonar().ping_due() says so and hands the echo samples back, calls tick()
+//! every kTickPeriodUs and reports how long the tick took. Time comes in as
+//! now_us (wrapping micros()).
+//!
+//! Template parameters: S the scalar (float or Fixed); Output a ServoOutput
+//! (hal_interfaces.h) with `void flush()` ending a frame; Store a ByteStore.
+//! Link (per call): `void send_line(uint8_t port, const char* line)`, line
+//! without its ending; port kAllPorts means every port (notices).
+#ifndef STRIDER_CONTROL_ROBOT_APP_H
+#define STRIDER_CONTROL_ROBOT_APP_H
+
+#include <stdint.h>
+
+#include "controller.h"
+#include "servo_stage.h"
+#include "settings_store.h"
+#include "sonar_filter.h"
+#include "walker_motion.h"
+
+namespace strider {
+
+constexpr uint32_t kTickPeriodUs = 20000;  //!< control tick, 50 Hz [us]
+constexpr uint8_t kLinkPorts = 2;          //!< 0 = USB serial, 1 = Bluetooth (HC-05)
+constexpr uint8_t kAllPorts = 0xFF;        //!< send_line(): every port
+constexpr uint16_t kLineIdleMs = 300;      //!< a partial line older than this is dropped [ms]
+
+namespace app_text {
+constexpr char kInfoStrider[] STRIDER_PROGMEM = "info strider ";
+constexpr char kReady[] STRIDER_PROGMEM = " ready";
+constexpr char kJoints[] STRIDER_PROGMEM = "joints";
+constexpr char kBoards[] STRIDER_PROGMEM = "boards";
+constexpr char kInfoEeprom[] STRIDER_PROGMEM = "info eeprom ";
+constexpr char kDefaults[] STRIDER_PROGMEM = ", defaults";
+constexpr char kErrModel[] STRIDER_PROGMEM = "err 30 model does not fit the firmware";
+constexpr char kGait[] STRIDER_PROGMEM = "gait";
+constexpr char kState[] STRIDER_PROGMEM = "state";
+constexpr char kIk[] STRIDER_PROGMEM = "ik";
+constexpr char kServos[] STRIDER_PROGMEM = "servos";
+constexpr char kOn[] STRIDER_PROGMEM = "on";
+constexpr char kOff[] STRIDER_PROGMEM = "off";
+constexpr char kStarting[] STRIDER_PROGMEM = "starting";
+constexpr char kLimited[] STRIDER_PROGMEM = "limited";
+constexpr char kOverruns[] STRIDER_PROGMEM = "overruns";
+constexpr char kTickMaxUs[] STRIDER_PROGMEM = "tick_max_us";
+}  // namespace app_text
+
+//! Microseconds (<= 1e6) -> seconds, without a division.
+inline void to_seconds(uint32_t us, float* s) { *s = float(us) * 1e-6f; }
+inline void to_seconds(uint32_t us, Fixed* s) { *s = Fixed::from_raw(int32_t((us * 4295ul) >> 16)); }  // 2^16 / 1e6 = 4295 / 2^16 (+1e-5)
+
+template <typename S, typename Output, typename Store>
+class RobotApp {
+  class Sink;
+
+ public:
+  //! Reads the settings from store (EEPROM) but touches no other hardware.
+  RobotApp(const RobotModel& model, Output& out, Store& store)
+      : model_(model),
+        out_(out),
+        load_status_(load_settings(store, &loaded_)),
+        sink_(*this),
+        controller_(sink_, store, loaded_, load_status_) {}
+
+  //! Power-up: walker (sitting), servo map, boot notices; the soft start
+  //! begins with the first tick. False (and an `err` notice) when the model
+  //! does not fit. Takes the velocity-limit search's time (gait_config.h).
+  template <typename Link>
+  bool begin(uint32_t now_us, Link& link) {
+    char buf[kMaxReplyBytes];
+    ReplyWriter w(buf, sizeof buf);
+    ok_ = motion_.configure(model_) && stage_.configure(model_);
+    if (!ok_) {
+      w.text(FlashText{app_text::kErrModel});
+      link.send_line(kAllPorts, buf);
+      return false;
+    }
+    stage_.set_settings(controller_.settings());
+    stage_.begin_soft_start(now_us / 1000u);
+    w.text(FlashText{app_text::kInfoStrider}).text(model_.name).text(FlashText{app_text::kReady});
+    w.field(FlashText{app_text::kJoints}, stage_.joint_count()).field(FlashText{app_text::kBoards}, pca_board_count(model_));
+    link.send_line(kAllPorts, buf);
+    ReplyWriter e(buf, sizeof buf);
+    e.text(FlashText{app_text::kInfoEeprom}).text(to_string(load_status_));
+    if (load_status_ != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
+    link.send_line(kAllPorts, buf);
+    last_tick_us_ = now_us;
+    return true;
+  }
+
+  //! One byte from link `port` (0 or 1) at now_us; a reply goes back to that port.
+  template <typename Link>
+  void on_byte(uint8_t port, uint8_t b, uint32_t now_us, Link& link) {
+    if (port >= kLinkPorts) return;
+    const uint32_t now_ms = now_us / 1000u;
+    last_byte_ms_[port] = now_ms;
+    Command c;
+    const ParseResult r = parsers_[port].feed(b, &c);
+    reply(port, r, c, now_ms, link);
+  }
+
+  //! One control tick (call every kTickPeriodUs): partial lines time out,
+  //! controller (deadman, avoidance), walker, servo frame.
+  template <typename Link>
+  void tick(uint32_t now_us, Link& link) {
+    if (!ok_) return;
+    const uint32_t now_ms = now_us / 1000u;
+    for (uint8_t p = 0; p < kLinkPorts; ++p) {
+      if (elapsed(now_ms, last_byte_ms_[p]) < kLineIdleMs) continue;
+      Command c;
+      reply(p, parsers_[p].idle_timeout(&c), c, now_ms, link);
+    }
+    char buf[kMaxReplyBytes];
+    ReplyWriter w(buf, sizeof buf);
+    if (controller_.tick(now_ms, sonar_.reading(now_us), w)) link.send_line(kAllPorts, buf);
+    // Elapsed time, at most five ticks: a stalled loop must not make the gait leap.
+    uint32_t dt_us = elapsed(now_us, last_tick_us_);
+    last_tick_us_ = now_us;
+    if (dt_us > 5 * kTickPeriodUs) dt_us = 5 * kTickPeriodUs;
+    if (stage_.all_on() && motion_.sitting() && controller_.mode() != RobotMode::kRelaxed) motion_.stand_up();
+    S dt_s;
+    to_seconds(dt_us, &dt_s);
+    motion_.walker().tick(dt_s);
+    stage_.frame(motion_.walker(), now_ms, out_);
+  }
+
+  //! How long the last tick took [us] (the caller measures); longer than a
+  //! period counts as an overrun (reported by `status`).
+  void record_tick_time(uint32_t took_us) {
+    if (took_us > tick_max_us_) tick_max_us_ = took_us;
+    if (took_us > kTickPeriodUs && overruns_ < 0xFFFF) ++overruns_;
+  }
+  //! Ticks the caller had to skip (it fell behind by whole periods).
+  void record_missed_ticks(uint16_t n) {
+    const uint32_t sum = uint32_t(overruns_) + n;
+    overruns_ = sum > 0xFFFFu ? uint16_t(0xFFFF) : uint16_t(sum);
+  }
+
+  SonarFilter& sonar() { return sonar_; }
+  const Controller<Sink, Store>& controller() const { return controller_; }
+  const WalkerMotion<S>& motion() const { return motion_; }
+  const ServoStage<S>& servos() const { return stage_; }
+  SettingsStatus load_status() const { return load_status_; }
+  uint16_t overruns() const { return overruns_; }
+  uint32_t tick_max_us() const { return tick_max_us_; }
+
+ private:
+  //! The controller's MotionSink: motion commands to the walker, servo power
+  //! and settings to the stage.
+  class Sink {
+   public:
+    explicit Sink(RobotApp& app) : app_(app) {}
+    void set_velocity(const Twist& v) {
+      app_.wake();
+      app_.motion_.set_velocity(v);
+    }
+    void stand() {
+      app_.wake();
+      app_.motion_.stand();
+    }
+    void relax() {
+      app_.stage_.relax_all();
+      app_.motion_.sit_now();
+    }
+    bool set_gait(const char* name) { return app_.motion_.set_gait(name); }
+    bool set_body_pose(int32_t r, int32_t p, int32_t y) { return app_.motion_.set_body_pose(r, p, y); }
+    bool set_body_height(int32_t h) { return app_.motion_.set_body_height(h); }
+    void apply_settings(const Settings& s) { app_.stage_.set_settings(s); }
+    void write_status(ReplyWriter& w) { app_.write_status(w); }
+
+   private:
+    RobotApp& app_;
+  };
+
+  //! After relax, the next motion command switches the servos on again.
+  void wake() {
+    if (!stage_.all_on() && !stage_.starting()) stage_.begin_soft_start(last_tick_us_ / 1000u);
+  }
+
+  template <typename Link>
+  void reply(uint8_t port, ParseResult r, const Command& c, uint32_t now_ms, Link& link) {
+    if (r == ParseResult::kNothing) return;
+    char buf[kMaxReplyBytes];
+    ReplyWriter w(buf, sizeof buf);
+    if (controller_.on_parsed(r, c, now_ms, w)) link.send_line(port, buf);
+  }
+
+  void write_status(ReplyWriter& w) {
+    const FlashText servos = stage_.all_on() ? FlashText{app_text::kOn}
+                             : stage_.starting() ? FlashText{app_text::kStarting} : FlashText{app_text::kOff};
+    w.field_text(FlashText{app_text::kGait}, motion_.gait().name)
+        .field_text(FlashText{app_text::kState}, to_string(motion_.walker().engine().state()))
+        .field_text(FlashText{app_text::kIk}, to_string(motion_.walker().worst_status()))
+        .field_text(FlashText{app_text::kServos}, servos);
+    if (stage_.last_status() != ServoStatus::kOk) w.field_text(FlashText{app_text::kServos}, FlashText{app_text::kLimited});
+    w.field(FlashText{app_text::kOverruns}, overruns_).field(FlashText{app_text::kTickMaxUs}, int32_t(tick_max_us_));
+  }
+
+  const RobotModel& model_;
+  Output& out_;
+  Settings loaded_;
+  SettingsStatus load_status_;
+  WalkerMotion<S> motion_;
+  ServoStage<S> stage_;
+  Sink sink_;
+  Controller<Sink, Store> controller_;
+  CommandParser parsers_[kLinkPorts];
+  uint32_t last_byte_ms_[kLinkPorts] = {0, 0};
+  SonarFilter sonar_;
+  uint32_t last_tick_us_ = 0;
+  uint32_t tick_max_us_ = 0;
+  uint16_t overruns_ = 0;
+  bool ok_ = false;
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_ROBOT_APP_H

@@ -1,0 +1,156 @@
+//! ServoStage: the last step before the servo boards. Every frame it maps the
+//! walker's joints to PCA9685 ticks (servo_map.h, with the live trims), moves
+//! each output towards its target by at most what the servo can turn in one
+//! frame (so a new gait, pose or trim never makes the PCA9685 jump: the
+//! board switches to a new width at once, the servo would slam), and writes
+//! only the channels that changed. Output::flush() ends the frame (the driver
+//! sends its changed channels in auto-increment bursts).
+//!
+//! Soft start: after power-up or relax every output is off (no pulse, servo
+//! limp); the legs are switched on one at a time, kSoftStartStepMs apart, so
+//! the servos do not all draw their start-up current at once and brown out
+//! the supply (ANCHORS: the most common complaint). A servo's first pulse
+//! cannot be interpolated (its position is unknown): that is what the
+//! staging is for.
+#ifndef STRIDER_CONTROL_SERVO_STAGE_H
+#define STRIDER_CONTROL_SERVO_STAGE_H
+
+#include <stdint.h>
+
+#include "../gait/walker.h"
+#include "channel_map.h"
+#include "servo_frame.h"
+
+namespace strider {
+
+constexpr uint16_t kSoftStartStepMs = 250;   //!< one leg's servos switched on per step [ms]
+constexpr uint16_t kFramePeriodMs = 20;      //!< nominal frame period for the slew limit [ms] (50 Hz)
+
+template <typename S>
+class ServoStage {
+ public:
+  //! Channel map of `model`; every output off. False when the model does not fit.
+  bool configure(const RobotModel& model) {
+    count_ = make_channel_map<S>(model, channels_);
+    dof_ = model.dof();
+    legs_ = model.leg_count;
+    for (uint8_t j = 0; j < dof_; ++j) speed_deg_s_[j] = servo_speed_deg_s(model.servo[j]);
+    for (uint8_t k = 0; k < kMaxServoJoints; ++k) { on_[k] = false; ticks_[k] = 0; }
+    enabled_legs_ = 0;
+    relax_pending_ = true;
+    return count_ != 0;
+  }
+
+  //! Trims now; oscillator and PWM frequency at the next frame (the bus may not
+  //! be up yet when settings are loaded).
+  void set_settings(const Settings& s) {
+    settings_ = s;
+    pwm_pending_ = true;
+  }
+
+  //! Every output off at the next frame; the soft start must run again.
+  void relax_all() {
+    enabled_legs_ = 0;
+    relax_pending_ = true;
+    soft_start_ = false;
+  }
+
+  //! Starts switching legs on, the first at now_ms.
+  void begin_soft_start(uint32_t now_ms) {
+    soft_start_ = true;
+    next_leg_ms_ = now_ms;
+  }
+
+  bool all_on() const { return enabled_legs_ == legs_; }
+  bool starting() const { return soft_start_ && !all_on(); }
+  uint8_t joint_count() const { return count_; }
+  const ServoChannel<S>& channel(uint8_t k) const { return channels_[k]; }
+  uint16_t ticks(uint8_t k) const { return ticks_[k]; }   //!< last written [PCA9685 ticks]
+  bool on(uint8_t k) const { return on_[k]; }
+  const Pca9685Timing& timing() const { return timing_; }
+  ServoStatus last_status() const { return status_; }
+
+  //! One frame at now_ms: soft start, map, slew, write; ends with out.flush().
+  template <typename Output>
+  ServoStatus frame(const Walker<S>& walker, uint32_t now_ms, Output& out) {
+    if (pwm_pending_) apply_pwm(out);
+    if (relax_pending_) {
+      for (uint8_t k = 0; k < count_; ++k) {
+        out.relax(channels_[k].channel);
+        on_[k] = false;
+      }
+      relax_pending_ = false;
+    }
+    if (soft_start_ && enabled_legs_ < legs_ && int32_t(now_ms - next_leg_ms_) >= 0) {
+      ++enabled_legs_;
+      next_leg_ms_ = now_ms + kSoftStartStepMs;
+    }
+    ServoStatus worst_status = ServoStatus::kOk;
+    for (uint8_t leg = 0; leg < enabled_legs_; ++leg) {
+      const LegResult<S>& r = walker.leg(leg);
+      for (uint8_t j = 0; j < dof_; ++j) {
+        const uint8_t k = uint8_t(leg * dof_ + j);
+        const S trim = trim_from_decideg<S>(settings_.trim_decideg[k]);
+        const ServoCommand cmd = map_joint(channels_[k], r.q[j], trim, timing_);
+        worst_status = worst(worst_status, cmd.status);
+        uint16_t next = cmd.ticks;
+        if (on_[k]) {
+          const uint16_t now = ticks_[k];
+          if (next > now + step_[j]) next = uint16_t(now + step_[j]);
+          else if (now > next + step_[j]) next = uint16_t(now - step_[j]);
+          if (next == now) continue;
+        }
+        ticks_[k] = next;
+        on_[k] = true;
+        out.write_ticks(channels_[k].channel, next);
+      }
+    }
+    out.flush();
+    status_ = worst_status;
+    return worst_status;
+  }
+
+ private:
+  //! New oscillator or PWM frequency: prescale to the boards, the outputs that
+  //! are on rescaled to keep their pulse widths, new slew steps.
+  template <typename Output>
+  void apply_pwm(Output& out) {
+    pwm_pending_ = false;
+    const uint32_t old_period = timing_.period_x64();
+    if (configure_servo_pwm(out, timing_, settings_) == PwmTimingStatus::kBadOscillator) return;
+    for (uint8_t k = 0; k < count_; ++k) {
+      if (!on_[k]) continue;
+      // ticks * old / new period, in two 16-bit halves of the period (no 64-bit).
+      const uint32_t us_x64 = uint32_t(ticks_[k]) * (old_period >> 12);
+      ticks_[k] = timing_.pulse_ticks(uint16_t(us_x64 >> 6));
+      out.write_ticks(channels_[k].channel, ticks_[k]);
+    }
+    for (uint8_t j = 0; j < dof_; ++j) {
+      // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
+      const float us = speed_deg_s_[j] * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f);
+      const uint16_t t = timing_.pulse_ticks(uint16_t(us + 0.5f));
+      step_[j] = t == 0 ? uint16_t(1) : t;
+    }
+  }
+
+  ServoChannel<S> channels_[kMaxServoJoints];
+  uint16_t ticks_[kMaxServoJoints];
+  bool on_[kMaxServoJoints];
+  uint16_t step_[kMaxLegDof] = {1, 1, 1};
+  float speed_deg_s_[kMaxLegDof] = {0.0f, 0.0f, 0.0f};
+  Pca9685Timing timing_;
+  Settings settings_ = default_settings();
+  uint32_t next_leg_ms_ = 0;
+  uint8_t count_ = 0;
+  uint8_t dof_ = 0;
+  uint8_t legs_ = 0;
+  uint8_t enabled_legs_ = 0;
+  bool soft_start_ = false;
+  bool relax_pending_ = true;
+  bool pwm_pending_ = true;
+  ServoStatus status_ = ServoStatus::kOk;
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_SERVO_STAGE_H

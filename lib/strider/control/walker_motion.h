@@ -1,0 +1,132 @@
+//! WalkerMotion: the controller's motion commands in protocol units applied
+//! to a Walker (gait engine -> body pose -> IK). Velocities arrive in
+//! [0.1 mm/s] and [0.1 deg/s], the body pose in [0.1 deg], the height in
+//! [0.1 mm] (the protocol's integers, control/command.h); a pose or height
+//! that a leg cannot reach from its standing foot position is refused and
+//! changes nothing.
+//!
+//! Power-up and relax leave the robot sitting (body lowered, feet down):
+//! stand_up() raises it once the servos are on (servo_stage.h's soft start).
+#ifndef STRIDER_CONTROL_WALKER_MOTION_H
+#define STRIDER_CONTROL_WALKER_MOTION_H
+
+#include <stdint.h>
+#include <string.h>
+
+#include "../gait/gait_library.h"
+#include "../gait/gait_params.h"
+#include "../gait/walker.h"
+#include "avoidance.h"
+
+namespace strider {
+
+template <typename S>
+class WalkerMotion {
+ public:
+  //! Builds the walker for `model` with its default gait and swing shape,
+  //! sitting. Costs the velocity-limit search (gait_config.h): start-up only.
+  bool configure(const RobotModel& model) {
+    const GaitParams* params = gait_params_for(model);
+    if (params == nullptr) return false;
+    const GaitTable* gait = find_gait(model, params->default_gait);
+    if (gait == nullptr || !walker_.configure(model, *gait, *params, params->shape, true)) return false;
+    model_ = &model;
+    gait_ = gait;
+    offsets_ = BodyOffsets<S>::zero();
+    stand_height_mm_ = -walker_.engine().config().home[0].z;
+    return true;
+  }
+
+  Walker<S>& walker() { return walker_; }
+  const Walker<S>& walker() const { return walker_; }
+  const GaitTable& gait() const { return *gait_; }
+
+  //! Protocol velocity -> engine command (the controller applied the speed %).
+  void set_velocity(const Twist& v) {
+    constexpr S tenth = scalar<S>(0.1);
+    constexpr S decideg_to_rad = scalar<S>(kDegToRad / 10.0);
+    walker_.engine().set_command(S(int32_t(v.vx)) * tenth, S(int32_t(v.vy)) * tenth,
+                                 S(int32_t(v.wz)) * decideg_to_rad);
+  }
+
+  //! Stop stepping; the feet finish their swing and the robot stands.
+  void stand() { walker_.engine().set_command(S(0), S(0), S(0)); }
+
+  //! The servos went limp: the robot is (physically) down. Starts over sitting,
+  //! keeping gait, body pose and height, so that re-enabled servos meet the pose
+  //! the legs are nearest to and stand up from there.
+  void sit_now() {
+    walker_.configure(*model_, *gait_, walker_.engine().config(), true);
+    walker_.engine().set_body_offsets(offsets_);
+  }
+
+  //! Rises from sitting (no effect unless sitting).
+  void stand_up() { walker_.engine().stand_up(); }
+  bool sitting() const { return walker_.engine().state() == GaitState::kSitting; }
+
+  //! Switches gait by name, also while walking; false: no such gait here.
+  bool set_gait(const char* name) {
+    const GaitTable* g = find_gait(*model_, name);
+    if (g == nullptr) return false;
+    gait_ = g;
+    walker_.engine().set_gait(*g);
+    return true;
+  }
+
+  //! Body rotation [0.1 deg]; refused when a standing foot would be out of reach.
+  bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw) {
+    constexpr S decideg_to_rad = scalar<S>(kDegToRad / 10.0);
+    BodyOffsets<S> o = offsets_;
+    o.roll_rad = S(int32_t(roll)) * decideg_to_rad;
+    o.pitch_rad = S(int32_t(pitch)) * decideg_to_rad;
+    o.yaw_rad = S(int32_t(yaw)) * decideg_to_rad;
+    return try_offsets(o);
+  }
+
+  //! Body height above the ground [0.1 mm]; refused when out of reach.
+  bool set_body_height(int32_t decimm) {
+    if (decimm <= 0) return false;
+    BodyOffsets<S> o = offsets_;
+    o.translation_mm.z = S(int32_t(decimm)) * scalar<S>(0.1) - stand_height_mm_;
+    return try_offsets(o);
+  }
+
+  S stand_height_mm() const { return stand_height_mm_; }
+  const BodyOffsets<S>& offsets() const { return offsets_; }
+
+ private:
+  //! Every leg's standing foot, seen from a body at offsets o, must be within
+  //! the joint limits: exactly for 3-DOF legs; a 2-DOF leg reaches only a
+  //! surface, so its nearest point (kClamped) is what the walker uses too.
+  bool try_offsets(const BodyOffsets<S>& o) {
+    BodyPose<S> pose = BodyPose<S>::zero();
+    pose.translation_mm = o.translation_mm;
+    pose.roll_rad = o.roll_rad;
+    pose.pitch_rad = o.pitch_rad;
+    pose.yaw_rad = o.yaw_rad;
+    const Transform<S> body = body_transform(pose);
+    const GaitConfig<S>& cfg = walker_.engine().config();
+    for (uint8_t i = 0; i < walker_.leg_count(); ++i) {
+      const AnyLeg<S>& leg = walker_.leg_model(i);
+      const Vec3<S> target = leg.mount().body_to_leg(foot_in_body(body, cfg.home[i]));
+      typename AnyLeg<S>::Joints q;
+      Vec3<S> reached;
+      const IkStatus st = leg.ik(target, q, reached);
+      const bool two_dof = walker_.dof() == 2;
+      if (!(st == IkStatus::kOk || (two_dof && st == IkStatus::kClamped))) return false;
+    }
+    offsets_ = o;
+    walker_.engine().set_body_offsets(o);
+    return true;
+  }
+
+  Walker<S> walker_;
+  const RobotModel* model_ = nullptr;
+  const GaitTable* gait_ = nullptr;
+  BodyOffsets<S> offsets_ = BodyOffsets<S>::zero();
+  S stand_height_mm_ = S(0);
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_WALKER_MOTION_H

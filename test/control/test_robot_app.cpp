@@ -1,0 +1,242 @@
+// RobotApp, the firmware's whole loop with fakes: boot notices, soft start
+// one leg at a time, the standing pose's pulses equal an independent IK +
+// servo map, slew-limited outputs within every channel's limits while
+// walking, relax and wake-up, two ports that never mix their lines, and
+// pose/height refusals that change nothing. Every model, float and Fixed.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "control/robot_app.h"
+#include "fakes/fake_store.h"
+#include "fakes/recording_servo.h"
+#include "math/fixed.h"
+#include "math/prng.h"
+#include "robots/all_robots.h"
+
+namespace {
+
+struct Lines {
+  std::vector<std::pair<uint8_t, std::string>> sent;
+  void send_line(uint8_t port, const char* line) { sent.emplace_back(port, line); }
+  std::vector<std::string> on(uint8_t port) const {
+    std::vector<std::string> out;
+    for (const auto& l : sent)
+      if (l.first == port || l.first == strider::kAllPorts) out.push_back(l.second);
+    return out;
+  }
+};
+
+template <typename S>
+struct Rig {
+  using App = strider::RobotApp<S, strider_test::RecordingServo, strider_test::FakeStore>;
+  const strider::RobotModel& model;
+  strider_test::RecordingServo out;
+  strider_test::FakeStore store;
+  Lines lines;
+  App* app = nullptr;
+  uint32_t now_us = 1000;
+  std::map<uint8_t, uint16_t> ticks;  // last written per channel
+  std::map<uint8_t, int> max_jump;    // largest change between writes per channel
+  std::map<uint8_t, std::pair<uint16_t, uint16_t>> range;  // lowest, highest written per channel
+
+  explicit Rig(const strider::RobotModel& m) : model(m) {
+    app = new App(model, out, store);
+    EXPECT_TRUE(app->begin(now_us, lines));
+  }
+  ~Rig() { delete app; }
+
+  void collect() {
+    for (uint8_t ch : out.relaxed) ticks.erase(ch);  // a frame relaxes before it writes
+    for (const auto& w : out.writes) {
+      auto it = ticks.find(w.channel);
+      if (it != ticks.end()) {
+        const int jump = std::abs(int(w.ticks) - int(it->second));
+        max_jump[w.channel] = std::max(max_jump[w.channel], jump);
+      }
+      ticks[w.channel] = w.ticks;
+      auto r = range.emplace(w.channel, std::make_pair(w.ticks, w.ticks)).first;
+      r->second.first = std::min(r->second.first, w.ticks);
+      r->second.second = std::max(r->second.second, w.ticks);
+    }
+    out.writes.clear();
+    out.relaxed.clear();
+  }
+  void run_ms(uint32_t ms) {
+    for (uint32_t t = 0; t < ms; t += 20) {
+      now_us += strider::kTickPeriodUs;
+      app->tick(now_us, lines);
+      collect();
+    }
+  }
+  void send(uint8_t port, const std::string& text) {
+    for (unsigned char b : text) app->on_byte(port, b, now_us, lines);
+  }
+};
+
+// The standing pulses from the model alone: the library's IK of each leg's
+// standing foot and the channel map, computed here step by step.
+template <typename S>
+std::map<uint8_t, uint16_t> expected_standing(const strider::RobotModel& m, const strider::Pca9685Timing& timing) {
+  std::map<uint8_t, uint16_t> out;
+  strider::ServoChannel<S> ch[strider::kMaxServoJoints];
+  EXPECT_EQ(strider::make_channel_map<S>(m, ch), m.joint_count());
+  for (uint8_t i = 0; i < m.leg_count; ++i) {
+    strider::AnyLeg<S> leg;
+    EXPECT_TRUE(strider::AnyLeg<S>::from_model(m, i, leg));
+    typename strider::AnyLeg<S>::Joints q;
+    strider::Vec3<S> reached;
+    const auto target = leg.mount().body_to_leg(strider::Vec3<S>::from(m.legs[i].stand_mm));
+    EXPECT_NE(leg.ik(target, q, reached), strider::IkStatus::kUnreachable);
+    for (uint8_t j = 0; j < m.dof(); ++j) {
+      const auto& c = ch[i * m.dof() + j];
+      out[c.channel] = strider::map_joint(c, q[j], S(0), timing).ticks;
+    }
+  }
+  return out;
+}
+
+template <typename S>
+class RobotAppTest : public ::testing::Test {};
+using Scalars = ::testing::Types<float, strider::Fixed>;
+TYPED_TEST_SUITE(RobotAppTest, Scalars);
+
+TYPED_TEST(RobotAppTest, BootsSoftStartsAndStandsOnTheIkPose) {
+  using S = TypeParam;
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    SCOPED_TRACE(m->name);
+    Rig<S> r(*m);
+    const auto boot = r.lines.on(1);
+    ASSERT_EQ(boot.size(), 2u);
+    EXPECT_EQ(boot[0].rfind(std::string("info strider ") + m->name + " ready", 0), 0u) << boot[0];
+    EXPECT_EQ(boot[1], "info eeprom empty, defaults");
+    // First tick: every output off, then the first leg only.
+    r.now_us += strider::kTickPeriodUs;
+    r.app->tick(r.now_us, r.lines);
+    EXPECT_EQ(r.out.relaxed.size(), m->joint_count());
+    EXPECT_EQ(r.out.writes.size(), m->dof());
+    r.collect();
+    // One more leg every soft-start step.
+    r.run_ms(strider::kSoftStartStepMs);
+    EXPECT_EQ(r.ticks.size(), 2u * m->dof());
+    r.run_ms(strider::kSoftStartStepMs * m->leg_count + 3000);
+    ASSERT_EQ(r.ticks.size(), m->joint_count());
+    EXPECT_EQ(r.app->motion().walker().engine().state(), strider::GaitState::kStanding);
+    const auto expected = expected_standing<S>(*m, r.app->servos().timing());
+    for (const auto& e : expected) {
+      // Fixed: the walker's feet come from the gait engine, the expectation
+      // from the model directly: allow one tick (~0.09 deg at 50 Hz).
+      EXPECT_NEAR(r.ticks[e.first], e.second, 1) << "channel " << int(e.first);
+    }
+    EXPECT_GT(r.out.flushes, 0);
+  }
+}
+
+TYPED_TEST(RobotAppTest, WalksWithinLimitsAndNeverJumps) {
+  using S = TypeParam;
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    SCOPED_TRACE(m->name);
+    Rig<S> r(*m);
+    r.run_ms(strider::kSoftStartStepMs * m->leg_count + 3000);
+    r.max_jump.clear();
+    r.range.clear();
+    r.send(1, "speed 100\nwalk 60\n");
+    const auto replies = r.lines.on(1);
+    ASSERT_GE(replies.size(), 4u);
+    EXPECT_EQ(replies[replies.size() - 1].rfind("ok move", 0), 0u) << replies.back();
+    for (int k = 0; k < 40; ++k) {
+      r.send(1, "F");  // the RC app repeats a held button: the deadman stays fed
+      r.run_ms(100);
+    }
+    EXPECT_EQ(r.app->controller().mode(), strider::RobotMode::kWalking);
+    int moved = 0;
+    const auto& stage = r.app->servos();
+    for (uint8_t k = 0; k < stage.joint_count(); ++k) {
+      const auto& c = stage.channel(k);
+      const uint16_t lo = stage.timing().pulse_ticks(strider::servo_pulse_us(c, c.min_rad));
+      const uint16_t hi = stage.timing().pulse_ticks(strider::servo_pulse_us(c, c.max_rad));
+      EXPECT_GE(r.ticks[c.channel], lo);
+      EXPECT_LE(r.ticks[c.channel], hi);
+      if (r.range.count(c.channel) == 0) continue;  // not written while walking (a joint at rest)
+      EXPECT_GE(r.range[c.channel].first, lo);
+      EXPECT_LE(r.range[c.channel].second, hi);
+      if (r.range[c.channel].second - r.range[c.channel].first > 5) ++moved;
+      // Never more per frame than the servo turns in 20 ms (+1 tick rounding).
+      const double us = strider::servo_speed_deg_s(m->servo[k % m->dof()]) * 0.02 * 2000.0 / 180.0;
+      EXPECT_LE(r.max_jump[c.channel], int(us * 4096.0 / 20000.0 * 1.02) + 1) << "channel " << int(c.channel);
+    }
+    EXPECT_GT(moved, m->joint_count() / 2);
+  }
+}
+
+TYPED_TEST(RobotAppTest, RelaxThenWakeSoftStartsAgain) {
+  using S = TypeParam;
+  Rig<S> r(strider::kHexapod18);
+  r.run_ms(5000);
+  r.send(0, "relax\r\n");
+  EXPECT_EQ(r.lines.on(0).back(), "ok relax");
+  r.run_ms(20);
+  EXPECT_TRUE(r.ticks.empty());  // every channel full-off
+  r.run_ms(1000);
+  EXPECT_TRUE(r.ticks.empty());  // stays limp
+  r.send(0, "stop\r\n");
+  r.run_ms(20);
+  EXPECT_EQ(r.ticks.size(), 3u);  // one leg back on
+  r.run_ms(6000);
+  EXPECT_EQ(r.ticks.size(), 18u);
+  EXPECT_EQ(r.app->motion().walker().engine().state(), strider::GaitState::kStanding);
+}
+
+TYPED_TEST(RobotAppTest, PortsKeepTheirOwnLines) {
+  using S = TypeParam;
+  Rig<S> r(strider::kSprawl8);
+  const std::string a = "status\n", b = "gait trot\n";
+  for (size_t i = 0; i < std::max(a.size(), b.size()); ++i) {
+    if (i < a.size()) r.app->on_byte(0, uint8_t(a[i]), r.now_us, r.lines);
+    if (i < b.size()) r.app->on_byte(1, uint8_t(b[i]), r.now_us, r.lines);
+  }
+  ASSERT_EQ(r.lines.sent.size(), 4u);  // two boot notices, two replies
+  EXPECT_EQ(r.lines.sent[2].first, 0);
+  EXPECT_EQ(r.lines.sent[2].second.rfind("ok status mode=standing", 0), 0u) << r.lines.sent[2].second;
+  EXPECT_NE(r.lines.sent[2].second.find(" gait=crawl"), std::string::npos);
+  EXPECT_NE(r.lines.sent[2].second.find(" overruns=0"), std::string::npos);
+  EXPECT_EQ(r.lines.sent[3].first, 1);
+  EXPECT_EQ(r.lines.sent[3].second, "ok gait trot");
+}
+
+TYPED_TEST(RobotAppTest, RefusedPoseAndGarbageChangeNothing) {
+  using S = TypeParam;
+  Rig<S> r(strider::kHexapod18);
+  r.run_ms(5000);
+  r.send(1, "pose 0 0 5\nheight 300\nheight 120\n");
+  const auto replies = r.lines.on(1);
+  ASSERT_GE(replies.size(), 3u);
+  EXPECT_EQ(replies[replies.size() - 3].rfind("ok pose", 0), 0u) << replies[replies.size() - 3];
+  EXPECT_EQ(replies[replies.size() - 2].rfind("err 24", 0), 0u) << replies[replies.size() - 2];
+  EXPECT_EQ(replies[replies.size() - 1].rfind("ok height", 0), 0u) << replies[replies.size() - 1];
+  const S z = r.app->motion().offsets().translation_mm.z;
+  EXPECT_NEAR(strider::to_double(z), 10.0, 0.01);  // 120 mm over a 110 mm standing height
+  strider::Prng rng(7);
+  for (int i = 0; i < 2000; ++i) {
+    const uint8_t b = uint8_t(rng.next_u32() & 0xFF);
+    if (b == 'F' || b == 'B' || b == 'L' || b == 'R' || b == 'G' || b == 'I' || b == 'H' || b == 'J') continue;
+    r.app->on_byte(1, b, r.now_us, r.lines);
+  }
+  r.send(1, "\nstop\n");
+  r.run_ms(2000);
+  EXPECT_EQ(r.app->controller().mode(), strider::RobotMode::kStanding);
+  EXPECT_EQ(r.app->overruns(), 0);
+}
+
+TEST(RobotAppTiming, RecordsOverruns) {
+  Rig<float> r(strider::kMammal8);
+  r.app->record_tick_time(5000);
+  r.app->record_tick_time(25000);
+  r.app->record_missed_ticks(3);
+  EXPECT_EQ(r.app->overruns(), 4);
+  EXPECT_EQ(r.app->tick_max_us(), 25000u);
+}
+
+}  // namespace
