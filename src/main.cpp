@@ -1,0 +1,103 @@
+// Strider firmware for the Arduino Mega 2560: binds the portable robot
+// (lib/strider/control/robot_app.h) to the board: PCA9685 servo boards on
+// I2C, the HC-05 on Serial1 and USB on Serial, the HC-SR04 on D2/D3, the
+// EEPROM, the watchdog, and a 50 Hz tick.
+// Library headers before Arduino.h, which defines min, max, abs and
+// constrain as macros that would rewrite the library's own names.
+#include "control/robot_app.h"
+#include "eeprom_store.h"
+#include "firmware_model.h"
+#include "hcsr04_sonar.h"
+#include "pca9685_output.h"
+#include "serial_link.h"
+
+#include <Arduino.h>
+#include <avr/wdt.h>
+
+#include "board_pins.h"
+
+namespace {
+
+// Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.
+using Scalar = strider::Fixed;
+using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore>;
+
+Pca9685Output g_servos;
+EepromStore g_eeprom;
+SerialLink g_link;
+App g_app(firmware_model(), g_servos, g_eeprom);  // reads the settings from EEPROM
+uint32_t g_next_tick_us = 0;
+uint32_t g_led_ms = 0;
+
+// The reset cause, saved before anything else runs. A watchdog reset leaves
+// the watchdog running (with its shortest timeout), so it is disabled at once
+// or the board would reset again during start-up.
+uint8_t g_reset_flags __attribute__((section(".noinit")));
+void save_reset_flags() __attribute__((naked, used, section(".init3")));
+void save_reset_flags() {
+  g_reset_flags = MCUSR;
+  MCUSR = 0;
+  wdt_disable();
+}
+
+constexpr char kInfoWatchdog[] PROGMEM = "info reset watchdog";
+constexpr char kInfoBrownOut[] PROGMEM = "info reset brown-out";
+constexpr char kInfoNoBoard[] PROGMEM = "info pca9685 not answering";
+
+void notice(const char* flash_text) {
+  char buf[32];
+  strncpy_P(buf, flash_text, sizeof buf - 1);
+  buf[sizeof buf - 1] = 0;
+  g_link.send_line(strider::kAllPorts, buf);
+}
+
+void read_links(uint32_t now_us) {
+  while (Serial.available() > 0) g_app.on_byte(0, uint8_t(Serial.read()), now_us, g_link);
+  while (Serial1.available() > 0) g_app.on_byte(1, uint8_t(Serial1.read()), now_us, g_link);
+}
+
+void run_sonar(uint32_t now_us) {
+  strider::EchoSample sample;
+  if (hcsr04::poll(now_us, &sample)) g_app.sonar().add(sample, now_us);
+  if (!hcsr04::busy() && g_app.sonar().ping_due(now_us)) hcsr04::trigger(now_us);
+}
+
+}  // namespace
+
+void setup() {
+  pinMode(pins::kHeartbeatLed, OUTPUT);
+  Serial.begin(pins::kUsbBaud);
+  Serial1.begin(g_app.controller().settings().baud);
+  hcsr04::begin();
+  const bool boards_ok = g_servos.begin(strider::pca_board_count(firmware_model()));
+  if (g_reset_flags & _BV(WDRF)) notice(kInfoWatchdog);
+  if (g_reset_flags & _BV(BORF)) notice(kInfoBrownOut);
+  if (!boards_ok) notice(kInfoNoBoard);
+  g_app.begin(micros(), g_link);  // the velocity-limit search runs here, before the watchdog
+  wdt_enable(WDTO_500MS);
+  g_next_tick_us = micros();
+}
+
+void loop() {
+  wdt_reset();
+  const uint32_t now_us = micros();
+  read_links(now_us);
+  run_sonar(now_us);
+  if (int32_t(now_us - g_next_tick_us) >= 0) {
+    g_app.tick(now_us, g_link);
+    const uint32_t took = micros() - now_us;
+    g_app.record_tick_time(took);
+    g_next_tick_us += strider::kTickPeriodUs;
+    const int32_t late = int32_t(micros() - g_next_tick_us);
+    if (late > int32_t(strider::kTickPeriodUs)) {  // fell behind by whole ticks: skip them
+      const uint32_t missed = uint32_t(late) / strider::kTickPeriodUs;
+      g_app.record_missed_ticks(uint16_t(missed > 0xFFFF ? 0xFFFF : missed));
+      g_next_tick_us += missed * strider::kTickPeriodUs;
+    }
+  }
+  const uint32_t now_ms = now_us / 1000u;
+  if (now_ms - g_led_ms >= 500u) {  // heartbeat: the loop is alive
+    g_led_ms = now_ms;
+    digitalWrite(pins::kHeartbeatLed, !digitalRead(pins::kHeartbeatLed));
+  }
+}
