@@ -5,6 +5,26 @@
 #ifndef STRIDER_H
 #define STRIDER_H
 
+// Arduino.h (included first in every sketch) defines min, max, abs, round,
+// constrain, sq, radians and degrees as function-like macros that would rewrite the library's own
+// names; they are set aside here and restored at the end.
+#pragma push_macro("min")
+#pragma push_macro("max")
+#pragma push_macro("abs")
+#pragma push_macro("round")
+#pragma push_macro("constrain")
+#pragma push_macro("sq")
+#pragma push_macro("radians")
+#pragma push_macro("degrees")
+#undef min
+#undef max
+#undef abs
+#undef round
+#undef constrain
+#undef sq
+#undef radians
+#undef degrees
+
 // math: scalars (float, Fixed Q16.16), vectors, rotations, DH transforms
 #include "math/scalar.h"
 #include "math/vec3.h"
@@ -45,5 +65,18 @@
 #include "control/avoidance.h"
 #include "control/deadman.h"
 #include "control/controller.h"
+#include "control/channel_map.h"
+#include "control/walker_motion.h"
+#include "control/servo_stage.h"
+#include "control/robot_app.h"
+
+#pragma pop_macro("degrees")
+#pragma pop_macro("radians")
+#pragma pop_macro("sq")
+#pragma pop_macro("constrain")
+#pragma pop_macro("round")
+#pragma pop_macro("abs")
+#pragma pop_macro("max")
+#pragma pop_macro("min")
 
 #endif  // STRIDER_H
