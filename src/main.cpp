@@ -84,8 +84,9 @@ void loop() {
   read_links(now_us);
   run_sonar(now_us);
   if (int32_t(now_us - g_next_tick_us) >= 0) {
-    g_app.tick(now_us, g_link);
-    const uint32_t took = micros() - now_us;
+    const uint32_t start_us = micros();
+    g_app.tick(start_us, g_link);
+    const uint32_t took = micros() - start_us;
     g_app.record_tick_time(took);
     g_next_tick_us += strider::kTickPeriodUs;
     const int32_t late = int32_t(micros() - g_next_tick_us);

@@ -18,14 +18,8 @@ namespace {
 
 bool write_reg(uint8_t board, uint8_t reg, uint8_t value) { return write(board, reg, &value, 1); }
 
-uint8_t read_reg(uint8_t board, uint8_t reg) {
-  const uint8_t addr = uint8_t(strider::kPcaFirstAddress + board);
-  Wire.beginTransmission(addr);
-  Wire.write(reg);
-  if (Wire.endTransmission(false) != 0) return 0xFF;
-  if (Wire.requestFrom(addr, uint8_t(1)) != 1) return 0xFF;
-  return uint8_t(Wire.read());
-}
+// MODE1 as begin() sets it: register auto-increment, answers the all-call address.
+constexpr uint8_t kMode1Awake = kMode1AutoIncrement | kMode1AllCall;
 
 }  // namespace
 
@@ -42,7 +36,7 @@ bool begin(uint8_t boards) {
   bool ok = true;
   static const uint8_t kAllOff[4] = {0x00, 0x00, 0x00, 0x10};  // ALL_LED_OFF_H bit 4: full off
   for (uint8_t b = 0; b < boards; ++b) {
-    ok = write_reg(b, kMode1, kMode1Sleep | kMode1AutoIncrement | kMode1AllCall) && ok;
+    ok = write_reg(b, kMode1, kMode1Awake | kMode1Sleep) && ok;
     ok = write_reg(b, kMode2, kMode2OutDrv) && ok;
     ok = write(b, 0xFA, kAllOff, 4) && ok;  // ALL_LED_ON_L..ALL_LED_OFF_H
   }
@@ -50,13 +44,13 @@ bool begin(uint8_t boards) {
 }
 
 void set_prescale(uint8_t boards, uint8_t prescale) {
+  // MODE1 is known (begin() wrote it), so no register is read back: writes only.
   for (uint8_t b = 0; b < boards; ++b) {
-    const uint8_t mode = uint8_t(read_reg(b, kMode1) & ~kMode1Restart);
-    write_reg(b, kMode1, uint8_t((mode & ~kMode1Restart) | kMode1Sleep));  // PRE_SCALE is writable only asleep
+    write_reg(b, kMode1, kMode1Awake | kMode1Sleep);  // PRE_SCALE is writable only asleep
     write_reg(b, kPrescale, prescale);
-    write_reg(b, kMode1, uint8_t(mode & ~kMode1Sleep));
-    delayMicroseconds(500);  // oscillator start-up
-    write_reg(b, kMode1, uint8_t((mode & ~kMode1Sleep) | kMode1Restart | kMode1AutoIncrement));
+    write_reg(b, kMode1, kMode1Awake);
+    delayMicroseconds(500);  // oscillator start-up (datasheet: 500 us)
+    write_reg(b, kMode1, kMode1Awake | kMode1Restart);
   }
 }
 

@@ -74,23 +74,13 @@ class RobotApp {
   //! does not fit. Takes the velocity-limit search's time (gait_config.h).
   template <typename Link>
   bool begin(uint32_t now_us, Link& link) {
-    char buf[kMaxReplyBytes];
-    ReplyWriter w(buf, sizeof buf);
+    // The walker's configuration needs the deepest stack of the whole
+    // firmware: nothing else (no line buffer) is on the stack meanwhile.
     ok_ = motion_.configure(model_) && stage_.configure(model_);
-    if (!ok_) {
-      w.text(FlashText{app_text::kErrModel});
-      link.send_line(kAllPorts, buf);
-      return false;
-    }
+    announce(link);
+    if (!ok_) return false;
     stage_.set_settings(controller_.settings());
     stage_.begin_soft_start(now_us / 1000u);
-    w.text(FlashText{app_text::kInfoStrider}).text(model_.name).text(FlashText{app_text::kReady});
-    w.field(FlashText{app_text::kJoints}, stage_.joint_count()).field(FlashText{app_text::kBoards}, pca_board_count(model_));
-    link.send_line(kAllPorts, buf);
-    ReplyWriter e(buf, sizeof buf);
-    e.text(FlashText{app_text::kInfoEeprom}).text(to_string(load_status_));
-    if (load_status_ != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
-    link.send_line(kAllPorts, buf);
     last_tick_us_ = now_us;
     return true;
   }
@@ -178,6 +168,25 @@ class RobotApp {
    private:
     RobotApp& app_;
   };
+
+  //! The boot notices: model and boards, how the settings loaded.
+  template <typename Link>
+  STRIDER_NOINLINE void announce(Link& link) {
+    char buf[kMaxReplyBytes];
+    ReplyWriter w(buf, sizeof buf);
+    if (!ok_) {
+      w.text(FlashText{app_text::kErrModel});
+      link.send_line(kAllPorts, buf);
+      return;
+    }
+    w.text(FlashText{app_text::kInfoStrider}).text(model_.name).text(FlashText{app_text::kReady});
+    w.field(FlashText{app_text::kJoints}, stage_.joint_count()).field(FlashText{app_text::kBoards}, pca_board_count(model_));
+    link.send_line(kAllPorts, buf);
+    ReplyWriter e(buf, sizeof buf);
+    e.text(FlashText{app_text::kInfoEeprom}).text(to_string(load_status_));
+    if (load_status_ != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
+    link.send_line(kAllPorts, buf);
+  }
 
   //! After relax, the next motion command switches the servos on again.
   void wake() {

@@ -42,7 +42,12 @@ class WalkerMotion {
   const GaitTable& gait() const { return *gait_; }
 
   //! Protocol velocity -> engine command (the controller applied the speed %).
+  //! The controller repeats its command every tick: an unchanged one is not
+  //! planned again (planning costs more than a tick's gait step).
   void set_velocity(const Twist& v) {
+    if (have_command_ && v.vx == last_.vx && v.vy == last_.vy && v.wz == last_.wz) return;
+    have_command_ = true;
+    last_ = v;
     constexpr S tenth = scalar<S>(0.1);
     constexpr S decideg_to_rad = scalar<S>(kDegToRad / 10.0);
     walker_.engine().set_command(S(int32_t(v.vx)) * tenth, S(int32_t(v.vy)) * tenth,
@@ -50,12 +55,13 @@ class WalkerMotion {
   }
 
   //! Stop stepping; the feet finish their swing and the robot stands.
-  void stand() { walker_.engine().set_command(S(0), S(0), S(0)); }
+  void stand() { set_velocity(Twist{0, 0, 0}); }
 
   //! The servos went limp: the robot is (physically) down. Starts over sitting,
   //! keeping gait, body pose and height, so that re-enabled servos meet the pose
   //! the legs are nearest to and stand up from there.
   void sit_now() {
+    have_command_ = false;
     walker_.configure(*model_, *gait_, walker_.engine().config(), true);
     walker_.engine().set_body_offsets(offsets_);
   }
@@ -125,6 +131,8 @@ class WalkerMotion {
   const GaitTable* gait_ = nullptr;
   BodyOffsets<S> offsets_ = BodyOffsets<S>::zero();
   S stand_height_mm_ = S(0);
+  Twist last_{0, 0, 0};
+  bool have_command_ = false;
 };
 
 }  // namespace strider
