@@ -29,15 +29,30 @@ App g_app(firmware_model(), g_servos, g_eeprom);  // reads the settings from EEP
 uint32_t g_next_tick_us = 0;
 uint32_t g_led_ms = 0;
 
-// The reset cause, saved before anything else runs. A watchdog reset leaves
-// the watchdog running (with its shortest timeout), so it is disabled at once
-// or the board would reset again during start-up.
+// Before anything else runs (.init3: the stack pointer and the zero register
+// are set, no constructor has run yet):
+// - the reset cause is saved; a watchdog reset leaves the watchdog running
+//   with its shortest timeout, so it is disabled at once or the board would
+//   reset again during start-up;
+// - the free RAM between the static data and the stack is painted, so that
+//   `status` can tell how deep the stack has ever reached (stack_peak).
+constexpr uint8_t kStackPaint = 0xC5;
+extern "C" uint8_t __heap_start;  // avr-libc: first byte after .data, .bss and .noinit
 uint8_t g_reset_flags __attribute__((section(".noinit")));
-void save_reset_flags() __attribute__((naked, used, section(".init3")));
-void save_reset_flags() {
+void early_init() __attribute__((naked, used, section(".init3")));
+void early_init() {
   g_reset_flags = MCUSR;
   MCUSR = 0;
   wdt_disable();
+  for (uint8_t* p = &__heap_start; p < reinterpret_cast<uint8_t*>(SP) - 2; ++p) *p = kStackPaint;
+}
+
+// Deepest stack use since power-up [bytes]: RAMEND down to the lowest byte
+// that lost its paint.
+uint16_t stack_peak() {
+  const uint8_t* p = &__heap_start;
+  while (p <= reinterpret_cast<const uint8_t*>(RAMEND) && *p == kStackPaint) ++p;
+  return uint16_t(RAMEND + 1 - reinterpret_cast<uintptr_t>(p));
 }
 
 constexpr char kInfoWatchdog[] PROGMEM = "info reset watchdog";
@@ -73,6 +88,7 @@ void setup() {
   if (g_reset_flags & _BV(WDRF)) notice(kInfoWatchdog);
   if (g_reset_flags & _BV(BORF)) notice(kInfoBrownOut);
   if (!boards_ok) notice(kInfoNoBoard);
+  g_app.set_stack_probe(stack_peak);
   g_app.begin(micros(), g_link);  // the velocity-limit search runs here, before the watchdog
   wdt_enable(WDTO_500MS);
   g_next_tick_us = micros();

@@ -50,6 +50,7 @@ constexpr char kStarting[] STRIDER_PROGMEM = "starting";
 constexpr char kLimited[] STRIDER_PROGMEM = "limited";
 constexpr char kOverruns[] STRIDER_PROGMEM = "overruns";
 constexpr char kTickMaxUs[] STRIDER_PROGMEM = "tick_max_us";
+constexpr char kStackPeak[] STRIDER_PROGMEM = "stack_peak";
 }  // namespace app_text
 
 //! Microseconds (<= 1e6) -> seconds, without a division.
@@ -133,6 +134,11 @@ class RobotApp {
     overruns_ = sum > 0xFFFFu ? uint16_t(0xFFFF) : uint16_t(sum);
   }
 
+  //! A board-specific probe for `status`: the deepest stack use since
+  //! power-up [bytes] (the firmware paints the free RAM at start-up and
+  //! counts what was overwritten; the scan runs only when status is asked).
+  void set_stack_probe(uint16_t (*probe)()) { stack_probe_ = probe; }
+
   SonarFilter& sonar() { return sonar_; }
   const Controller<Sink, Store>& controller() const { return controller_; }
   const WalkerMotion<S>& motion() const { return motion_; }
@@ -210,6 +216,7 @@ class RobotApp {
         .field_text(FlashText{app_text::kServos}, servos);
     if (stage_.last_status() != ServoStatus::kOk) w.field_text(FlashText{app_text::kServos}, FlashText{app_text::kLimited});
     w.field(FlashText{app_text::kOverruns}, overruns_).field(FlashText{app_text::kTickMaxUs}, int32_t(tick_max_us_));
+    if (stack_probe_ != nullptr) w.field(FlashText{app_text::kStackPeak}, stack_probe_());
   }
 
   const RobotModel& model_;
@@ -226,6 +233,7 @@ class RobotApp {
   uint32_t last_tick_us_ = 0;
   uint32_t tick_max_us_ = 0;
   uint16_t overruns_ = 0;
+  uint16_t (*stack_probe_)() = nullptr;
   bool ok_ = false;
 };
 
