@@ -240,3 +240,25 @@ TEST(RobotAppTiming, RecordsOverruns) {
 }
 
 }  // namespace
+
+namespace {
+
+// The flash copies of the state names equal the host-side to_string().
+TEST(FlashNames, EqualToString) {
+  for (uint8_t i = 0; i < 6; ++i)
+    EXPECT_STREQ(strider::to_flash(strider::AvoidState(i)).p, strider::to_string(strider::AvoidState(i)));
+  for (uint8_t i = 0; i < 4; ++i)
+    EXPECT_STREQ(strider::to_flash(strider::RobotMode(i)).p, strider::to_string(strider::RobotMode(i)));
+  for (uint8_t i = 0; i < 7; ++i)
+    EXPECT_STREQ(strider::to_flash(strider::SettingsStatus(i)).p, strider::to_string(strider::SettingsStatus(i)));
+  for (uint8_t i = 0; i < 6; ++i)
+    EXPECT_STREQ(strider::app_text::to_flash(strider::GaitState(i)).p, strider::to_string(strider::GaitState(i)));
+  for (uint8_t i = 0; i < 4; ++i)
+    EXPECT_STREQ(strider::app_text::to_flash(strider::IkStatus(i)).p, strider::to_string(strider::IkStatus(i)));
+  for (uint8_t i = 0; i < 9; ++i)
+    EXPECT_STREQ(strider::flash_name(strider::kParseErrorNames, strider::kParseErrorCount, i).p,
+                 strider::error_reason(strider::ParseError(i)));
+  EXPECT_STREQ(strider::to_flash(strider::AvoidState(6)).p, "?");
+}
+
+}  // namespace

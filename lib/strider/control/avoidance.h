@@ -13,6 +13,7 @@
 #include <stdint.h>
 
 #include "hal_interfaces.h"
+#include "reply.h"
 #include "sonar_filter.h"
 
 namespace strider {
@@ -57,6 +58,10 @@ inline const char* to_string(AvoidState s) {
   }
   return "unknown";
 }
+
+constexpr char kAvoidStateNames[] STRIDER_PROGMEM = "pass\0forward\0sidestep\0clearing\0blocked\0sensor_fault";
+//! to_string() with the text in flash (for replies on the AVR).
+inline FlashText to_flash(AvoidState s) { return flash_name(kAvoidStateNames, 6, uint8_t(s)); }
 
 class Avoidance {
  public:

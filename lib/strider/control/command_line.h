@@ -7,6 +7,8 @@
 
 #include <stdint.h>
 
+#include "../math/flash_table.h"
+
 #include "command.h"
 #include "decimal.h"
 #include "settings.h"
@@ -22,12 +24,43 @@ struct Token {
   uint8_t len;
 };
 
+//! The command words, in flash on the AVR (flash_table.h): about 150 bytes of RAM saved.
+namespace words {
+constexpr char kAbort[] STRIDER_PROGMEM = "abort";
+constexpr char kAvoid[] STRIDER_PROGMEM = "avoid";
+constexpr char kBaud[] STRIDER_PROGMEM = "baud";
+constexpr char kCal[] STRIDER_PROGMEM = "cal";
+constexpr char kDeadman[] STRIDER_PROGMEM = "deadman";
+constexpr char kGait[] STRIDER_PROGMEM = "gait";
+constexpr char kHeight[] STRIDER_PROGMEM = "height";
+constexpr char kHelp[] STRIDER_PROGMEM = "help";
+constexpr char kOff[] STRIDER_PROGMEM = "off";
+constexpr char kOn[] STRIDER_PROGMEM = "on";
+constexpr char kOsc[] STRIDER_PROGMEM = "osc";
+constexpr char kPose[] STRIDER_PROGMEM = "pose";
+constexpr char kPwm[] STRIDER_PROGMEM = "pwm";
+constexpr char kRelax[] STRIDER_PROGMEM = "relax";
+constexpr char kSave[] STRIDER_PROGMEM = "save";
+constexpr char kShow[] STRIDER_PROGMEM = "show";
+constexpr char kSpeed[] STRIDER_PROGMEM = "speed";
+constexpr char kStart[] STRIDER_PROGMEM = "start";
+constexpr char kStatus[] STRIDER_PROGMEM = "status";
+constexpr char kStop[] STRIDER_PROGMEM = "stop";
+constexpr char kStrafe[] STRIDER_PROGMEM = "strafe";
+constexpr char kTrim[] STRIDER_PROGMEM = "trim";
+constexpr char kTurn[] STRIDER_PROGMEM = "turn";
+constexpr char kVel[] STRIDER_PROGMEM = "vel";
+constexpr char kVelocity[] STRIDER_PROGMEM = "velocity";
+constexpr char kWalk[] STRIDER_PROGMEM = "walk";
+}  // namespace words
+
+//! True when the token is `word`, a NUL-terminated word in flash (words::).
 inline bool token_is(const Token& t, const char* word) {
   uint8_t i = 0;
   for (; i < t.len; ++i) {
-    if (word[i] != t.text[i]) return false;
+    if (char(flash_u8(word + i)) != t.text[i]) return false;
   }
-  return word[i] == 0;
+  return flash_u8(word + i) == 0;
 }
 
 //! Splits line into tokens; returns the count, or kMaxLineTokens + 1 when there are more.
@@ -76,19 +109,19 @@ inline ParseError no_args(uint8_t ntokens, uint8_t first) {
 inline ParseError parse_cal(const Token* t, uint8_t n, Command* cmd) {
   if (n < 2) return ParseError::kMissingArgument;
   const Token& sub = t[1];
-  if (token_is(sub, "start")) { cmd->kind = CommandKind::kCalStart; return no_args(n, 2); }
-  if (token_is(sub, "save")) { cmd->kind = CommandKind::kCalSave; return no_args(n, 2); }
-  if (token_is(sub, "abort")) { cmd->kind = CommandKind::kCalAbort; return no_args(n, 2); }
-  if (token_is(sub, "show")) { cmd->kind = CommandKind::kCalShow; return no_args(n, 2); }
-  if (token_is(sub, "osc")) {
+  if (token_is(sub, words::kStart)) { cmd->kind = CommandKind::kCalStart; return no_args(n, 2); }
+  if (token_is(sub, words::kSave)) { cmd->kind = CommandKind::kCalSave; return no_args(n, 2); }
+  if (token_is(sub, words::kAbort)) { cmd->kind = CommandKind::kCalAbort; return no_args(n, 2); }
+  if (token_is(sub, words::kShow)) { cmd->kind = CommandKind::kCalShow; return no_args(n, 2); }
+  if (token_is(sub, words::kOsc)) {
     cmd->kind = CommandKind::kCalOsc;
     return number_args(t, n, 2, 1, 0, 0, int32_t(kPca9685MinOscHz), int32_t(kPca9685MaxOscHz), cmd);
   }
-  if (token_is(sub, "pwm")) {
+  if (token_is(sub, words::kPwm)) {
     cmd->kind = CommandKind::kCalPwm;
     return number_args(t, n, 2, 1, 0, 0, 40, 400, cmd);
   }
-  if (token_is(sub, "trim")) {
+  if (token_is(sub, words::kTrim)) {
     cmd->kind = CommandKind::kCalTrim;
     if (n < 4) return ParseError::kMissingArgument;
     if (n > 4) return ParseError::kExtraArgument;
@@ -101,9 +134,9 @@ inline ParseError parse_cal(const Token* t, uint8_t n, Command* cmd) {
 
 inline ParseError parse_avoid(const Token* t, uint8_t n, Command* cmd) {
   if (n < 2) return ParseError::kMissingArgument;
-  if (token_is(t[1], "on") || token_is(t[1], "off")) {
+  if (token_is(t[1], words::kOn) || token_is(t[1], words::kOff)) {
     cmd->kind = CommandKind::kAvoidEnable;
-    cmd->arg[0] = token_is(t[1], "on") ? 1 : 0;
+    cmd->arg[0] = token_is(t[1], words::kOn) ? 1 : 0;
     return no_args(n, 2);
   }
   cmd->kind = CommandKind::kAvoidLimits;
@@ -144,10 +177,10 @@ inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd
   if (n == 0) return ParseError::kNone;  // blank line: nothing to do, no reply
   if (n > kMaxLineTokens) return ParseError::kExtraArgument;
   const Token& w = t[0];
-  if (token_is(w, "walk")) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd); }
-  if (token_is(w, "strafe")) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 1, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd); }
-  if (token_is(w, "turn")) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 2, 1, -kMaxTurnDecideg_s, kMaxTurnDecideg_s, cmd); }
-  if (token_is(w, "vel") || token_is(w, "velocity")) {
+  if (token_is(w, words::kWalk)) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd); }
+  if (token_is(w, words::kStrafe)) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 1, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd); }
+  if (token_is(w, words::kTurn)) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 2, 1, -kMaxTurnDecideg_s, kMaxTurnDecideg_s, cmd); }
+  if (token_is(w, words::kVel) || token_is(w, words::kVelocity)) {
     cmd->kind = CommandKind::kMove;
     ParseError e = number_args(t, n, 1, 3, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd);
     if (e == ParseError::kNone && (cmd->arg[2] < -kMaxTurnDecideg_s || cmd->arg[2] > kMaxTurnDecideg_s)) {
@@ -155,24 +188,24 @@ inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd
     }
     return e;
   }
-  if (token_is(w, "stop")) { cmd->kind = CommandKind::kStop; return no_args(n, 1); }
-  if (token_is(w, "relax")) { cmd->kind = CommandKind::kRelax; return no_args(n, 1); }
-  if (token_is(w, "speed")) { cmd->kind = CommandKind::kSpeed; return number_args(t, n, 1, 1, 0, 0, 0, 100, cmd); }
-  if (token_is(w, "gait")) return parse_gait(t, n, cmd);
-  if (token_is(w, "pose")) { cmd->kind = CommandKind::kPose; return number_args(t, n, 1, 3, 0, 1, -kMaxPoseDecideg, kMaxPoseDecideg, cmd); }
-  if (token_is(w, "height")) { cmd->kind = CommandKind::kHeight; return number_args(t, n, 1, 1, 0, 1, 100, 4000, cmd); }
-  if (token_is(w, "avoid")) return parse_avoid(t, n, cmd);
-  if (token_is(w, "deadman")) { cmd->kind = CommandKind::kDeadman; return number_args(t, n, 1, 1, 0, 0, 0, 60000, cmd); }
-  if (token_is(w, "baud")) {
+  if (token_is(w, words::kStop)) { cmd->kind = CommandKind::kStop; return no_args(n, 1); }
+  if (token_is(w, words::kRelax)) { cmd->kind = CommandKind::kRelax; return no_args(n, 1); }
+  if (token_is(w, words::kSpeed)) { cmd->kind = CommandKind::kSpeed; return number_args(t, n, 1, 1, 0, 0, 0, 100, cmd); }
+  if (token_is(w, words::kGait)) return parse_gait(t, n, cmd);
+  if (token_is(w, words::kPose)) { cmd->kind = CommandKind::kPose; return number_args(t, n, 1, 3, 0, 1, -kMaxPoseDecideg, kMaxPoseDecideg, cmd); }
+  if (token_is(w, words::kHeight)) { cmd->kind = CommandKind::kHeight; return number_args(t, n, 1, 1, 0, 1, 100, 4000, cmd); }
+  if (token_is(w, words::kAvoid)) return parse_avoid(t, n, cmd);
+  if (token_is(w, words::kDeadman)) { cmd->kind = CommandKind::kDeadman; return number_args(t, n, 1, 1, 0, 0, 0, 60000, cmd); }
+  if (token_is(w, words::kBaud)) {
     cmd->kind = CommandKind::kBaud;
     const ParseError e = number_args(t, n, 1, 1, 0, 0, 0, 2000000, cmd);
     if (e != ParseError::kNone) return e;
     return valid_baud(uint32_t(cmd->arg[0])) ? ParseError::kNone : ParseError::kOutOfRange;
   }
-  if (token_is(w, "cal")) return parse_cal(t, n, cmd);
-  if (token_is(w, "save")) { cmd->kind = CommandKind::kSave; return no_args(n, 1); }
-  if (token_is(w, "status")) { cmd->kind = CommandKind::kStatus; return no_args(n, 1); }
-  if (token_is(w, "help")) { cmd->kind = CommandKind::kHelp; return no_args(n, 1); }
+  if (token_is(w, words::kCal)) return parse_cal(t, n, cmd);
+  if (token_is(w, words::kSave)) { cmd->kind = CommandKind::kSave; return no_args(n, 1); }
+  if (token_is(w, words::kStatus)) { cmd->kind = CommandKind::kStatus; return no_args(n, 1); }
+  if (token_is(w, words::kHelp)) { cmd->kind = CommandKind::kHelp; return no_args(n, 1); }
   if (len == 1) {  // a light button's lowercase byte typed on its own line
     const char c = line[0];
     if (c == 'w' || c == 'u' || c == 'v' || c == 'x') { cmd->kind = CommandKind::kLight; cmd->arg[0] = c; return ParseError::kNone; }

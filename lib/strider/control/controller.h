@@ -76,7 +76,7 @@ class Controller {
     out_ = avoid_.update(cmd_, sonar, now_ms, cfg);
     sink_.set_velocity(out_);
     if (avoid_.state() != before && avoid_.state() != AvoidState::kPassThrough) {
-      w.text(FlashText{text::kInfoAvoid_}).text(to_string(avoid_.state()));
+      w.text(FlashText{text::kInfoAvoid_}).text(to_flash(avoid_.state()));
       return true;
     }
     return false;
@@ -236,16 +236,16 @@ class Controller {
   }
 
   void status(ReplyWriter& w) {
-    w.text(FlashText{text::kOkStatus}).field_text(FlashText{text::kMode}, to_string(mode_)).field(FlashText{text::kSpeed}, speed_pct_);
+    w.text(FlashText{text::kOkStatus}).field_text(FlashText{text::kMode}, to_flash(mode_)).field(FlashText{text::kSpeed}, speed_pct_);
     w.field_tenths(FlashText{text::kVx}, out_.vx).field_tenths(FlashText{text::kVy}, out_.vy).field_tenths(FlashText{text::kWz}, out_.wz);
-    if (settings_.avoid_enabled) w.field_text(FlashText{text::kAvoid}, to_string(avoid_.state()));
+    if (settings_.avoid_enabled) w.field_text(FlashText{text::kAvoid}, to_flash(avoid_.state()));
     else w.field_text(FlashText{text::kAvoid}, FlashText{text::kOff});
     const FlashText sonar = sonar_.status == SonarStatus::kOk ? FlashText{text::kOk}
                         : sonar_.status == SonarStatus::kFailed ? FlashText{text::kFailed}
                         : sonar_.status == SonarStatus::kStale ? FlashText{text::kStale} : FlashText{text::kNone};
     w.field_text(FlashText{text::kSonar}, sonar);
     if (sonar_.status == SonarStatus::kOk && sonar_.distance_mm != kSonarFarMm) w.field(FlashText{text::kDistMm}, sonar_.distance_mm);
-    w.field(FlashText{text::kDeadmanMs}, settings_.deadman_ms).field_text(FlashText{text::kEeprom}, to_string(load_status_));
+    w.field(FlashText{text::kDeadmanMs}, settings_.deadman_ms).field_text(FlashText{text::kEeprom}, to_flash(load_status_));
     sink_.write_status(w);
   }
 

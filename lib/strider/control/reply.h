@@ -20,6 +20,20 @@ struct FlashText {
 //! One character of a FlashText.
 inline char flash_char(const char* p) { return char(flash_u8(p)); }
 
+constexpr char kUnknownName[] STRIDER_PROGMEM = "?";
+
+//! Entry `index` of `count` NUL-separated names kept in one flash string
+//! (an enum's names in value order); "?" past the end.
+inline FlashText flash_name(const char* names, uint8_t count, uint8_t index) {
+  if (index >= count) return FlashText{kUnknownName};
+  const char* p = names;
+  for (; index > 0; --index) {
+    while (flash_u8(p) != 0) ++p;
+    ++p;
+  }
+  return FlashText{p};
+}
+
 constexpr uint8_t kMaxReplyBytes = 200;  //!< suggested buffer: longest reply (status, cal show) + "\r\n" + NUL
 
 class ReplyWriter {
@@ -104,8 +118,17 @@ inline void write_error(ReplyWriter& w, uint8_t code, FlashText reason) {
   w.text("err ").integer(code).ch(' ').text(reason);
 }
 
+//! The parser's error reasons in flash, in ParseError order (command.h's
+//! error_reason() has the same texts for host code).
+constexpr char kParseErrorNames[] STRIDER_PROGMEM =
+    "none\0unknown command\0bad argument\0missing argument\0too many arguments\0out of range\0"
+    "line too long\0bad byte\0incomplete line";
+constexpr uint8_t kParseErrorCount = 9;
+
 //! `err <code> <reason>` for a parser error.
-inline void write_parse_error(ReplyWriter& w, ParseError e) { write_error(w, uint8_t(e), error_reason(e)); }
+inline void write_parse_error(ReplyWriter& w, ParseError e) {
+  write_error(w, uint8_t(e), flash_name(kParseErrorNames, kParseErrorCount, uint8_t(e)));
+}
 
 }  // namespace strider
 

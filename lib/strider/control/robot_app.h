@@ -51,6 +51,12 @@ constexpr char kLimited[] STRIDER_PROGMEM = "limited";
 constexpr char kOverruns[] STRIDER_PROGMEM = "overruns";
 constexpr char kTickMaxUs[] STRIDER_PROGMEM = "tick_max_us";
 constexpr char kStackPeak[] STRIDER_PROGMEM = "stack_peak";
+// The names of the gait engine's and the IK's states (to_string() in
+// gait_engine.h and ik_status.h), in flash; a test keeps them equal.
+constexpr char kGaitStateNames[] STRIDER_PROGMEM = "sitting\0standing_up\0standing\0walking\0stopping\0sitting_down";
+constexpr char kIkStatusNames[] STRIDER_PROGMEM = "ok\0clamped\0joint_limit\0unreachable";
+inline FlashText to_flash(GaitState s) { return flash_name(kGaitStateNames, 6, uint8_t(s)); }
+inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uint8_t(s)); }
 }  // namespace app_text
 
 //! Microseconds (<= 1e6) -> seconds, without a division.
@@ -189,7 +195,7 @@ class RobotApp {
     w.field(FlashText{app_text::kJoints}, stage_.joint_count()).field(FlashText{app_text::kBoards}, pca_board_count(model_));
     link.send_line(kAllPorts, buf);
     ReplyWriter e(buf, sizeof buf);
-    e.text(FlashText{app_text::kInfoEeprom}).text(to_string(load_status_));
+    e.text(FlashText{app_text::kInfoEeprom}).text(to_flash(load_status_));
     if (load_status_ != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
     link.send_line(kAllPorts, buf);
   }
@@ -211,8 +217,8 @@ class RobotApp {
     const FlashText servos = stage_.all_on() ? FlashText{app_text::kOn}
                              : stage_.starting() ? FlashText{app_text::kStarting} : FlashText{app_text::kOff};
     w.field_text(FlashText{app_text::kGait}, motion_.gait().name)
-        .field_text(FlashText{app_text::kState}, to_string(motion_.walker().engine().state()))
-        .field_text(FlashText{app_text::kIk}, to_string(motion_.walker().worst_status()))
+        .field_text(FlashText{app_text::kState}, app_text::to_flash(motion_.walker().engine().state()))
+        .field_text(FlashText{app_text::kIk}, app_text::to_flash(motion_.walker().worst_status()))
         .field_text(FlashText{app_text::kServos}, servos);
     if (stage_.last_status() != ServoStatus::kOk) w.field_text(FlashText{app_text::kServos}, FlashText{app_text::kLimited});
     w.field(FlashText{app_text::kOverruns}, overruns_).field(FlashText{app_text::kTickMaxUs}, int32_t(tick_max_us_));

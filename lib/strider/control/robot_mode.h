@@ -6,6 +6,8 @@
 
 #include <stdint.h>
 
+#include "reply.h"
+
 namespace strider {
 
 //! Controller error codes (after the parser's 1-19; see docs/protocol.md).
@@ -28,6 +30,10 @@ inline const char* to_string(RobotMode m) {
   }
   return "unknown";
 }
+
+constexpr char kRobotModeNames[] STRIDER_PROGMEM = "standing\0walking\0relaxed\0calibrating";
+//! to_string() with the text in flash (for replies on the AVR).
+inline FlashText to_flash(RobotMode m) { return flash_name(kRobotModeNames, 4, uint8_t(m)); }
 
 //! Speeds the RC buttons map to at 100 %: seed 000's 155 mm/s and 360 deg in 6 s.
 struct RcLimits {

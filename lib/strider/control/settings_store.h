@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 #include "crc.h"
+#include "reply.h"
 #include "settings.h"
 
 namespace strider {
@@ -35,6 +36,11 @@ inline const char* to_string(SettingsStatus s) {
   }
   return "unknown";
 }
+
+constexpr char kSettingsStatusNames[] STRIDER_PROGMEM =
+    "ok\0empty\0corrupt\0old_version\0invalid\0write_failed\0no_space";
+//! to_string() with the text in flash (for replies on the AVR).
+inline FlashText to_flash(SettingsStatus s) { return flash_name(kSettingsStatusNames, 7, uint8_t(s)); }
 
 constexpr uint8_t kSettingsMagic0 = 'S';
 constexpr uint8_t kSettingsMagic1 = 'T';
