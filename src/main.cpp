@@ -98,6 +98,7 @@ void loop() {
   wdt_reset();
   const uint32_t now_us = micros();
   read_links(now_us);
+  g_link.poll();
   run_sonar(now_us);
   if (int32_t(now_us - g_next_tick_us) >= 0) {
     const uint32_t start_us = micros();
