@@ -128,7 +128,7 @@ struct CoxaFemurTibiaLeg {
     const S y = leg_ik::to_unit(target.y, unit_shift);
     const S v = leg_ik::to_unit(target.z - d1_mm, unit_shift);  // eq 11, row 2
     S rho = S(0);  // [unit]
-    if (target.x == S(0) && target.y == S(0)) {
+    if (leg_ik::is_zero(target.x) && leg_ik::is_zero(target.y)) {
       sol[0] = leg_ik::free_angle(limits, 0, S(0));  // on the yaw axis
     } else {
       sol[0] = atan2(target.y, target.x);  // eq 12
@@ -138,7 +138,7 @@ struct CoxaFemurTibiaLeg {
     }
     S h = rho - coxa_unit;  // eq 11, row 1
     S d2 = h * h + v * v;
-    if (d2 < link.inner2 && coxa_unit > S(0) && rho > S(0)) {
+    if (leg_ik::lt(d2, link.inner2) && leg_ik::lt(S(0), coxa_unit) && leg_ik::lt(S(0), rho)) {
       const S h_far = -rho - coxa_unit;
       const S d2_far = h_far * h_far + v * v;
       if (far_side_is_nearer(d2, d2_far)) {

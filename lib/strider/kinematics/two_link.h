@@ -53,19 +53,20 @@ struct TwoLink {
   bool solve(S h, S v, KneeBranch branch, S& ta, S& tb) const { return solve(h, v, h * h + v * v, branch, ta, tb); }
   //! The same with d2 = h^2 + v^2 already at hand.
   bool solve(S h, S v, S d2, KneeBranch branch, S& ta, S& tb) const {
-    if (!(d2 < outer2)) {  // stretched; also catches a saturated d2
+    // Comparisons through lt(): a float comparison is a library call on the AVR.
+    if (!lt(d2, outer2)) {  // stretched; also catches a saturated d2
       ta = atan2(v, h);
       tb = S(0);
-      return d2 > outer2;
+      return lt(outer2, d2);
     }
-    if (!(d2 > inner2)) {  // folded: the foot sits at (a1 - a2)(cos ta, sin ta)
+    if (!lt(inner2, d2)) {  // folded: the foot sits at (a1 - a2)(cos ta, sin ta)
       tb = branch == KneeBranch::kNegative ? -pi<S>() : pi<S>();
-      if (h == S(0) && v == S(0)) {
+      if (is_zero(h) && is_zero(v)) {
         ta = S(0);  // any direction is as near
       } else {
-        ta = a2 > a1 ? atan2(-v, -h) : atan2(v, h);
+        ta = lt(a1, a2) ? atan2(-v, -h) : atan2(v, h);
       }
-      return d2 < inner2;
+      return lt(d2, inner2);
     }
     const S c = d2 - sum_sq;                          // 2 a1 a2 cos tb
     S s = sqrt((outer2 - d2) * (d2 - inner2));        // 2 a1 a2 |sin tb|
@@ -73,7 +74,7 @@ struct TwoLink {
     tb = atan2(s, c);
     S k1 = d2 + diff_sq;                              // 2 a1 (a1 + a2 cos tb)
     S k2 = s;                                         // 2 a1 (a2 sin tb)
-    if (d2 < S(1)) {  // only a short D makes both pairs small (folded, a1 ~ a2)
+    if (lt(d2, S(1))) {  // only a short D makes both pairs small (folded, a1 ~ a2)
       lift_pair(k1, k2);
       lift_pair(h, v);
     }
