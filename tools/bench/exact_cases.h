@@ -122,6 +122,22 @@ void exact_functions(Sink& out) {
     const Fixed y = Fixed::from_raw(rng.any_raw()), x = Fixed::from_raw(rng.any_raw());
     emit(out, y.raw(), x.raw(), strider::atan2(y, x).raw());
   }
+  // The leg solvers' atan2 (an AVR assembly kernel against the host's C):
+  // the edges, then pairs of every magnitude (a random shift of random
+  // bits), half of them near the diagonal, where the ratio nears 1.
+  out.section(STRIDER_BENCH_STR("fixed_atan2_lean"));
+  for (uint8_t i = 0; i < kEdgeCount; ++i)
+    for (uint8_t j = 0; j < kEdgeCount; ++j)
+      emit(out, edge_raw(i), edge_raw(j), strider::detail::atan2_lean_raw(edge_raw(i), edge_raw(j)));
+  for (uint8_t k = 0; k < 4 * kExactRandomCases; ++k) {
+    const uint8_t shift = uint8_t(rng.next() % 32u);
+    const uint32_t mx = uint32_t(rng.next()) >> 1 >> shift;
+    uint32_t my = uint32_t(rng.next()) >> 1 >> shift;
+    if (k & 1) my = mx + (rng.next() % 9u) - 4u;  // |y| ~ |x|, either side
+    const int32_t x = (k & 2) ? -int32_t(mx & 0x7FFFFFFFUL) : int32_t(mx & 0x7FFFFFFFUL);
+    const int32_t y = (k & 4) ? -int32_t(my & 0x7FFFFFFFUL) : int32_t(my & 0x7FFFFFFFUL);
+    emit(out, y, x, strider::detail::atan2_lean_raw(y, x));
+  }
 }
 
 //! IK of one target: target, status, joints, point reached (sentinels when
