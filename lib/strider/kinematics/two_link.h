@@ -135,8 +135,24 @@ STRIDER_ALWAYS_INLINE bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
   return from_mm_general(v_mm, shift, out);
 }
 
-//! A Fixed length [unit] below 8 units in wide units (exact).
-STRIDER_ALWAYS_INLINE int32_t from_unit(Fixed v) { return int32_t(uint32_t(v.raw()) << 12); }
+//! A Fixed length [unit] below 8 units in wide units (exact): raw 2^12,
+//! modulo 2^32, from one 16x16 product and a 16-bit shift (avr-gcc loops
+//! 12 times for a 32-bit shift by 12).
+STRIDER_ALWAYS_INLINE int32_t from_unit(Fixed v) {
+  const uint32_t u = uint32_t(v.raw());
+  return detail::to_signed(detail::mul_u16(uint16_t(u), 0x1000U) + (uint32_t(uint16_t(detail::hi16(u) << 12)) << 16));
+}
+
+//! The raw difference a - b of two Fixed values below 2^14 in magnitude
+//! (16384 mm), without the saturation test of Fixed's operator- (an
+//! out-of-line call on the AVR); false when either is larger.
+STRIDER_ALWAYS_INLINE bool sub_raw(Fixed a, Fixed b, Fixed& out) {
+  const uint32_t ua = uint32_t(a.raw()), ub = uint32_t(b.raw());
+  // uint32_t casts: unsigned long is 64 bits on some hosts.
+  if (uint32_t(ua + 0x40000000UL) >= 0x80000000UL || uint32_t(ub + 0x40000000UL) >= 0x80000000UL) return false;
+  out = Fixed::from_raw(detail::to_signed(ua - ub));
+  return true;
+}
 
 //! w^2 in Q6.24 for a wide w, within 2 LSB below (the low half's square is dropped).
 STRIDER_ALWAYS_INLINE uint32_t sq(int32_t w) {
