@@ -143,6 +143,22 @@ STRIDER_ALWAYS_INLINE int32_t from_unit(Fixed v) {
   return detail::to_signed(detail::mul_u16(uint16_t(u), 0x1000U) + (uint32_t(uint16_t(detail::hi16(u) << 12)) << 16));
 }
 
+//! A wide length w >= 0 as Fixed [mm] for a leg with unit shift n:
+//! round(w 2^(n - 12)) raw; false when it does not fit.
+inline bool to_mm(uint32_t w, int8_t shift, Fixed& out) {
+  const int8_t k = int8_t(12 - shift);
+  if (k > 0) {
+    if (k > 31) return false;
+    w = detail::shr_round(w, uint8_t(k));
+  } else if (k < 0) {
+    if (k < -15 || w >= (uint32_t(0x80000000UL) >> -k)) return false;
+    w = shl(w, uint8_t(-k));
+  }
+  if (w >= 0x80000000UL) return false;
+  out = Fixed::from_raw(int32_t(w));
+  return true;
+}
+
 //! The raw difference a - b of two Fixed values below 2^14 in magnitude
 //! (16384 mm), without the saturation test of Fixed's operator- (an
 //! out-of-line call on the AVR); false when either is larger.
