@@ -122,6 +122,38 @@ void exact_functions(Sink& out) {
     const Fixed y = Fixed::from_raw(rng.any_raw()), x = Fixed::from_raw(rng.any_raw());
     emit(out, y.raw(), x.raw(), strider::atan2(y, x).raw());
   }
+  // The square-root kernel every Fixed root goes through (AVR assembly
+  // against the host's C): both ends of its domain, squares and their
+  // neighbours, random radicands.
+  out.section(STRIDER_BENCH_STR("fixed_isqrt"));
+  for (uint8_t k = 0; k < 4 * kExactRandomCases; ++k) {
+    uint32_t m;
+    const uint32_t r = 0x8000UL + (rng.next() >> 17);  // a root in [2^15, 2^16)
+    switch (k & 3) {
+      case 0: m = 0x40000000UL + (rng.next() & 0xBFFFFFFFUL) % 0xC0000000UL; break;
+      case 1: m = r * r; break;
+      case 2: m = r * r - 1U; break;
+      default: m = k < 8 ? 0xFFFFFFFFUL - k : r * r + 2U * r; break;
+    }
+    if (m < 0x40000000UL) m = 0x40000000UL;
+    emit(out, int32_t(m), int32_t(strider::detail::isqrt_q22(m)));
+  }
+  // The leg solvers' atan2 (an AVR assembly kernel against the host's C):
+  // the edges, then pairs of every magnitude (a random shift of random
+  // bits), half of them near the diagonal, where the ratio nears 1.
+  out.section(STRIDER_BENCH_STR("fixed_atan2_lean"));
+  for (uint8_t i = 0; i < kEdgeCount; ++i)
+    for (uint8_t j = 0; j < kEdgeCount; ++j)
+      emit(out, edge_raw(i), edge_raw(j), strider::detail::atan2_lean_raw(edge_raw(i), edge_raw(j)));
+  for (uint8_t k = 0; k < 4 * kExactRandomCases; ++k) {
+    const uint8_t shift = uint8_t(rng.next() % 32u);
+    const uint32_t mx = uint32_t(rng.next()) >> 1 >> shift;
+    uint32_t my = uint32_t(rng.next()) >> 1 >> shift;
+    if (k & 1) my = mx + (rng.next() % 9u) - 4u;  // |y| ~ |x|, either side
+    const int32_t x = (k & 2) ? -int32_t(mx & 0x7FFFFFFFUL) : int32_t(mx & 0x7FFFFFFFUL);
+    const int32_t y = (k & 4) ? -int32_t(my & 0x7FFFFFFFUL) : int32_t(my & 0x7FFFFFFFUL);
+    emit(out, y, x, strider::detail::atan2_lean_raw(y, x));
+  }
 }
 
 //! IK of one target: target, status, joints, point reached (sentinels when

@@ -57,6 +57,55 @@ namespace strider {
 //! Which side of the body an abduction leg hangs on (mirrors the leg plane).
 enum class LegSide : uint8_t { kLeft = 0, kRight = 1 };
 
+namespace leg_ik {
+
+//! The integer fast path of AbductionLeg<Fixed>::ik() (docs/fixed-point.md,
+//! "Leg IK fast path") for the common case: the foot at least 1/16 working
+//! unit outside the abduction cylinder (A > La) and strictly inside the
+//! femur-tibia annulus of its leg plane, every length below 8 units. t1 is
+//! the angle of (y, z) turned by alpha3 = atan2(p, La), as the sum of two
+//! atan2s; the leg plane is the two-link problem of solve_wide(). Float, and
+//! every other case, returns false and takes the general path. Writes sol
+//! only when it returns true.
+template <typename Leg, typename S>
+bool abduction_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 3>&) {
+  return false;
+}
+template <typename Leg>
+STRIDER_ALWAYS_INLINE bool abduction_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 3>& sol) {
+  int32_t x, y, z;
+  // La in fine units (2^3 finer than working units) below 8 fine units.
+  if (!wide::from_mm(target.x, leg.unit_shift, x) || !wide::from_mm(target.y, leg.unit_shift, y) ||
+      !wide::from_mm(target.z, leg.unit_shift, z) || uint32_t(leg.la_fine.raw()) >= (uint32_t(8) << 16))
+    return false;
+  // A^2 and La^2 in Q6.24 (la_fine_sq is in fine units^2: 2^6 finer).
+  const uint32_t a2 = wide::sq(y) + wide::sq(z);
+  const uint32_t la2 = uint32_t(leg.la_fine_sq.raw()) << 2;
+  // p^2 = A^2 - La^2 keeps ~16 significant bits from 1/256 unit^2 (p = 1/16
+  // unit) up; p < 8 units fits wide units.
+  if (a2 <= la2) return false;
+  const uint32_t p2 = a2 - la2;
+  if (p2 < 0x10000UL || p2 >= 0x40000000UL) return false;
+  const int32_t p = wide::sqrt_sq(p2);
+  Fixed t2, t3;
+  if (!solve_wide(leg.link, -x, p, KneeBranch::kPositive, t2, t3)) return false;  // back = -x, down = p
+  // (y, z) turned by +alpha3 (left) or -alpha3 (right), alpha3 = atan2(p, La)
+  // in [0, pi/2]; then algorithm 1's range [0, 2 pi).
+  const int32_t la = wide::from_unit(leg.la_fine) >> 3;
+  const int32_t turn = detail::atan2_lean_raw(p, la);
+  int32_t t1 = detail::atan2_lean_raw(z, y);
+  t1 = leg.side == LegSide::kLeft ? t1 + turn : t1 - turn;
+  const int32_t two_pi_raw = two_pi<Fixed>().raw();
+  if (t1 < 0) t1 += two_pi_raw;
+  if (t1 >= two_pi_raw) t1 -= two_pi_raw;
+  sol[0] = Fixed::from_raw(t1);
+  sol[1] = t2;
+  sol[2] = t3;
+  return true;
+}
+
+}  // namespace leg_ik
+
 template <typename S>
 struct AbductionLeg {
   static constexpr uint8_t kDof = 3;
@@ -103,6 +152,21 @@ struct AbductionLeg {
   //! reachability and joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
+    // Fixed's fast path (always false for float): an exact solve, so q can
+    // take it directly; it writes q only when it succeeds.
+    if (!(opt.max_clamp_mm < S(0)) && leg_ik::abduction_solve_fast(*this, target, q)) {
+      if (!limits.contains(q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
+      leg_ik::copy_point(target, reached);  // what finish() does for an exact solve inside the limits
+      return IkStatus::kOk;
+    }
+    return ik_general(target, q, reached, opt);
+  }
+
+ private:
+  // Every case the fast path leaves; out of line, so that ik()'s common case
+  // does not pay for this path's registers and stack frame.
+  STRIDER_NOINLINE IkStatus ik_general(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+                                       const IkOptions<S>& opt) const {
     const S bound_x = lb_mm + lc_mm + opt.max_clamp_mm;
     const S bound_yz = la_mm + bound_x;
     if (!leg_ik::within(target.x, bound_x) || !leg_ik::within(target.y, bound_yz) ||

@@ -47,8 +47,10 @@ bool cft_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 3>&) {
 template <typename Leg>
 STRIDER_ALWAYS_INLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 3>& sol) {
   int32_t x, y, v;
+  Fixed dz;
   if (!wide::from_mm(target.x, leg.unit_shift, x) || !wide::from_mm(target.y, leg.unit_shift, y) ||
-      !wide::from_mm(target.z - leg.d1_mm, leg.unit_shift, v) || leg.coxa_unit.raw() >= (int32_t(8) << 16))
+      !wide::sub_raw(target.z, leg.d1_mm, dz) || !wide::from_mm(dz, leg.unit_shift, v) ||
+      leg.coxa_unit.raw() >= (int32_t(8) << 16))
     return false;
   const uint32_t rho2 = wide::sq(x) + wide::sq(y);  // [Q6.24]
   // rho >= 1/16 unit keeps ~16 significant bits; rho < 8 units fits wide units.
@@ -128,7 +130,7 @@ struct CoxaFemurTibiaLeg {
     const S y = leg_ik::to_unit(target.y, unit_shift);
     const S v = leg_ik::to_unit(target.z - d1_mm, unit_shift);  // eq 11, row 2
     S rho = S(0);  // [unit]
-    if (target.x == S(0) && target.y == S(0)) {
+    if (leg_ik::is_zero(target.x) && leg_ik::is_zero(target.y)) {
       sol[0] = leg_ik::free_angle(limits, 0, S(0));  // on the yaw axis
     } else {
       sol[0] = atan2(target.y, target.x);  // eq 12
@@ -138,7 +140,7 @@ struct CoxaFemurTibiaLeg {
     }
     S h = rho - coxa_unit;  // eq 11, row 1
     S d2 = h * h + v * v;
-    if (d2 < link.inner2 && coxa_unit > S(0) && rho > S(0)) {
+    if (leg_ik::lt(d2, link.inner2) && leg_ik::lt(S(0), coxa_unit) && leg_ik::lt(S(0), rho)) {
       const S h_far = -rho - coxa_unit;
       const S d2_far = h_far * h_far + v * v;
       if (far_side_is_nearer(d2, d2_far)) {

@@ -22,8 +22,64 @@
 #include "ik_status.h"
 #include "joints.h"
 #include "leg_ik_common.h"
+#include "two_link.h"
 
 namespace strider {
+
+namespace leg_ik {
+
+//! The integer fast path of SprawlLeg<Fixed>::ik() (docs/fixed-point.md,
+//! "Leg IK fast path"): eqs 7-8 in wide units with the lean atan2 for the
+//! common case, the target off the yaw axis (rho >= 1/16 unit) and off the
+//! knee circle, every length below 8 units, and the near half of the torus
+//! at least as near as the far half. Gives the joints and the miss distance
+//! [mm]; float, and every other case, returns false and takes the general
+//! path. Writes sol and miss_mm only when it returns true.
+//! For a target inside the knee circle (miss < 0) [wide units]: whether
+//! the near half of the torus is at least as near as the far half (t1 + pi,
+//! knee distance sqrt((rho + a1)^2 + z^2)); false also when that distance
+//! does not fit wide units. Out of line: it is the rarer case.
+STRIDER_NOINLINE inline bool sprawl_near_half_wins(int32_t rho, int32_t a1, int32_t a2, int32_t z, int32_t miss) {
+  const uint32_t far = uint32_t(rho) + uint32_t(a1);
+  if (far >= 0x80000000UL) return false;
+  const uint32_t far2 = wide::sq(int32_t(far)) + wide::sq(z);
+  if (far2 >= 0x40000000UL) return false;
+  const int32_t miss_far = wide::sqrt_sq(far2) - a2;
+  return !(miss_far < 0 ? -miss_far < -miss : miss_far < -miss);
+}
+
+template <typename Leg, typename S>
+bool sprawl_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 2>&, S&) {
+  return false;
+}
+template <typename Leg>
+STRIDER_ALWAYS_INLINE bool sprawl_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 2>& sol,
+                                             Fixed& miss_mm) {
+  // The aggregate caches nothing: working units per call. Lengths of 2^14 mm
+  // and more take the general path (their raw sum could overflow).
+  const uint32_t ra1 = uint32_t(leg.a1_mm.raw()), ra2 = uint32_t(leg.a2_mm.raw());
+  if (ra1 >= 0x40000000UL || ra2 >= 0x40000000UL) return false;
+  const int8_t n = unit_shift(Fixed::from_raw(int32_t(ra1 + ra2)));
+  int32_t x, y, z, a1, a2;
+  if (!wide::from_mm(target.x, n, x) || !wide::from_mm(target.y, n, y) || !wide::from_mm(target.z, n, z) ||
+      !wide::from_mm(leg.a1_mm, n, a1) || !wide::from_mm(leg.a2_mm, n, a2))
+    return false;
+  const uint32_t rho2 = wide::sq(x) + wide::sq(y);  // [Q6.24]
+  if (rho2 < 0x10000UL || rho2 >= 0x40000000UL) return false;
+  const int32_t rho = wide::sqrt_sq(rho2);
+  const int32_t dr = rho - a1;  // both in [0, 8) units
+  const uint32_t knee2 = wide::sq(dr) + wide::sq(z);
+  if (knee2 < 0x10000UL || knee2 >= 0x40000000UL) return false;  // on the knee circle, or far out
+  const int32_t knee = wide::sqrt_sq(knee2);
+  const int32_t miss = knee - a2;  // > 0: outside the torus
+  if (miss < 0 && !sprawl_near_half_wins(rho, a1, a2, z, miss)) return false;
+  if (!wide::to_mm(detail::abs_u32(miss), n, miss_mm)) return false;
+  sol[0] = Fixed::from_raw(detail::atan2_lean_raw(target.y.raw(), target.x.raw()));  // eq 7
+  sol[1] = Fixed::from_raw(detail::atan2_lean_raw(z, dr));                           // eq 8
+  return true;
+}
+
+}  // namespace leg_ik
 
 template <typename S>
 struct SprawlLeg {
@@ -49,6 +105,32 @@ struct SprawlLeg {
   //! reached unless the status is kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
+    {
+      Joints sol;
+      S miss;
+      if (leg_ik::sprawl_solve_fast(*this, target, sol, miss)) {  // Fixed only
+        const IkStatus status = leg_ik::miss_status(miss, opt);
+        if (status != IkStatus::kUnreachable) return finish_at_fk(target, sol, status, opt, q, reached);
+      }
+    }
+    return ik_general(target, q, reached, opt);
+  }
+
+ private:
+  // The end of both paths: the point reached is fk(sol), then the limits.
+  STRIDER_NOINLINE IkStatus finish_at_fk(const Vec3<S>& target, Joints& sol, IkStatus status, const IkOptions<S>& opt,
+                                         Joints& q, Vec3<S>& reached) const {
+    Vec3<S> at = fk(sol);
+    status = leg_ik::apply_limits(*this, target, sol, at, status, opt);
+    q = sol;
+    reached = at;
+    return status;
+  }
+
+  // Every case the fast path leaves; out of line, so that ik()'s common case
+  // does not pay for this path's registers and stack frame.
+  STRIDER_NOINLINE IkStatus ik_general(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+                                       const IkOptions<S>& opt) const {
     const S bound_xy = a1_mm + a2_mm + opt.max_clamp_mm;
     if (!leg_ik::within(target.x, bound_xy) || !leg_ik::within(target.y, bound_xy) ||
         !leg_ik::within(target.z, a2_mm + opt.max_clamp_mm))
@@ -86,11 +168,7 @@ struct SprawlLeg {
     miss = leg_ik::from_unit(miss, n);
     IkStatus status = leg_ik::miss_status(miss, opt);
     if (status == IkStatus::kUnreachable) return status;
-    Vec3<S> at = fk(sol);
-    status = leg_ik::apply_limits(*this, target, sol, at, status, opt);
-    q = sol;
-    reached = at;
-    return status;
+    return finish_at_fk(target, sol, status, opt, q, reached);
   }
 };
 

@@ -53,19 +53,20 @@ struct TwoLink {
   bool solve(S h, S v, KneeBranch branch, S& ta, S& tb) const { return solve(h, v, h * h + v * v, branch, ta, tb); }
   //! The same with d2 = h^2 + v^2 already at hand.
   bool solve(S h, S v, S d2, KneeBranch branch, S& ta, S& tb) const {
-    if (!(d2 < outer2)) {  // stretched; also catches a saturated d2
+    // Comparisons through lt(): a float comparison is a library call on the AVR.
+    if (!lt(d2, outer2)) {  // stretched; also catches a saturated d2
       ta = atan2(v, h);
       tb = S(0);
-      return d2 > outer2;
+      return lt(outer2, d2);
     }
-    if (!(d2 > inner2)) {  // folded: the foot sits at (a1 - a2)(cos ta, sin ta)
+    if (!lt(inner2, d2)) {  // folded: the foot sits at (a1 - a2)(cos ta, sin ta)
       tb = branch == KneeBranch::kNegative ? -pi<S>() : pi<S>();
-      if (h == S(0) && v == S(0)) {
+      if (is_zero(h) && is_zero(v)) {
         ta = S(0);  // any direction is as near
       } else {
-        ta = a2 > a1 ? atan2(-v, -h) : atan2(v, h);
+        ta = lt(a1, a2) ? atan2(-v, -h) : atan2(v, h);
       }
-      return d2 < inner2;
+      return lt(d2, inner2);
     }
     const S c = d2 - sum_sq;                          // 2 a1 a2 cos tb
     S s = sqrt((outer2 - d2) * (d2 - inner2));        // 2 a1 a2 |sin tb|
@@ -73,7 +74,7 @@ struct TwoLink {
     tb = atan2(s, c);
     S k1 = d2 + diff_sq;                              // 2 a1 (a1 + a2 cos tb)
     S k2 = s;                                         // 2 a1 (a2 sin tb)
-    if (d2 < S(1)) {  // only a short D makes both pairs small (folded, a1 ~ a2)
+    if (lt(d2, S(1))) {  // only a short D makes both pairs small (folded, a1 ~ a2)
       lift_pair(k1, k2);
       lift_pair(h, v);
     }
@@ -134,8 +135,40 @@ STRIDER_ALWAYS_INLINE bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
   return from_mm_general(v_mm, shift, out);
 }
 
-//! A Fixed length [unit] below 8 units in wide units (exact).
-STRIDER_ALWAYS_INLINE int32_t from_unit(Fixed v) { return int32_t(uint32_t(v.raw()) << 12); }
+//! A Fixed length [unit] below 8 units in wide units (exact): raw 2^12,
+//! modulo 2^32, from one 16x16 product and a 16-bit shift (avr-gcc loops
+//! 12 times for a 32-bit shift by 12).
+STRIDER_ALWAYS_INLINE int32_t from_unit(Fixed v) {
+  const uint32_t u = uint32_t(v.raw());
+  return detail::to_signed(detail::mul_u16(uint16_t(u), 0x1000U) + (uint32_t(uint16_t(detail::hi16(u) << 12)) << 16));
+}
+
+//! A wide length w >= 0 as Fixed [mm] for a leg with unit shift n:
+//! round(w 2^(n - 12)) raw; false when it does not fit.
+inline bool to_mm(uint32_t w, int8_t shift, Fixed& out) {
+  const int8_t k = int8_t(12 - shift);
+  if (k > 0) {
+    if (k > 31) return false;
+    w = detail::shr_round(w, uint8_t(k));
+  } else if (k < 0) {
+    if (k < -15 || w >= (uint32_t(0x80000000UL) >> -k)) return false;
+    w = shl(w, uint8_t(-k));
+  }
+  if (w >= 0x80000000UL) return false;
+  out = Fixed::from_raw(int32_t(w));
+  return true;
+}
+
+//! The raw difference a - b of two Fixed values below 2^14 in magnitude
+//! (16384 mm), without the saturation test of Fixed's operator- (an
+//! out-of-line call on the AVR); false when either is larger.
+STRIDER_ALWAYS_INLINE bool sub_raw(Fixed a, Fixed b, Fixed& out) {
+  const uint32_t ua = uint32_t(a.raw()), ub = uint32_t(b.raw());
+  // uint32_t casts: unsigned long is 64 bits on some hosts.
+  if (uint32_t(ua + 0x40000000UL) >= 0x80000000UL || uint32_t(ub + 0x40000000UL) >= 0x80000000UL) return false;
+  out = Fixed::from_raw(detail::to_signed(ua - ub));
+  return true;
+}
 
 //! w^2 in Q6.24 for a wide w, within 2 LSB below (the low half's square is dropped).
 STRIDER_ALWAYS_INLINE uint32_t sq(int32_t w) {

@@ -61,7 +61,106 @@ STRIDER_ALWAYS_INLINE NewtonRoot isqrt_newton(uint32_t m) {
 
 //! sqrt(m 2^22) for m in [2^30, 2^32): a 27-bit result within +-1 of the
 //! floor (the Newton estimate).
-STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) { return isqrt_newton(m).root; }
+STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
+#if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
+  // isqrt_newton(m).root in AVR assembly, step for step: gcc spills the C's
+  // 32-bit temporaries to the stack (~260 -> ~130 cycles). test_avr_exact
+  // checks it against the host's C bit for bit (fixed_isqrt and every
+  // function built on it).
+  uint32_t root;
+  uint16_t q, u, w, x;
+  uint8_t e;
+  __asm__(
+      // q = 32768 + t0 + hi16((t1 - t0) (m >> 8)), t0, t1 = kSqrt[k], [k + 1]
+      // for k = (m >> 24) - 64; q = 65536 wraps to 0 in 16 bits, as in C.
+      "mov r30, %D[m]\n\t"
+      "subi r30, 64\n\t"
+      "clr r31\n\t"
+      "lsl r30\n\t"
+      "rol r31\n\t"
+      "subi r30, lo8(-(%[sqrt_table]))\n\t"
+      "sbci r31, hi8(-(%[sqrt_table]))\n\t"
+      "lpm %A[q], Z+\n\t" "lpm %B[q], Z+\n\t"
+      "lpm %A[u], Z+\n\t" "lpm %B[u], Z\n\t"
+      "sub %A[u], %A[q]\n\t" "sbc %B[u], %B[q]\n\t"
+      "mul %A[u], %B[m]\n\t" "mov %A[w], r1\n\t"
+      "mul %B[u], %C[m]\n\t" "movw %[x], r0\n\t"
+      "mul %B[u], %B[m]\n\t" "add %A[w], r0\n\t" "adc %A[x], r1\n\t"
+      "clr __zero_reg__\n\t" "adc %B[x], __zero_reg__\n\t"
+      "mul %A[u], %C[m]\n\t" "add %A[w], r0\n\t" "adc %A[x], r1\n\t"
+      "clr __zero_reg__\n\t" "adc %B[x], __zero_reg__\n\t"
+      "add %A[q], %A[x]\n\t" "adc %B[q], %B[x]\n\t"
+      "subi %B[q], 0x80\n\t"
+      // rem = m - q^2 modulo 2^32, in m.
+      "mul %A[q], %A[q]\n\t" "movw %[u], r0\n\t"
+      "mul %B[q], %B[q]\n\t" "movw %[w], r0\n\t"
+      "mul %A[q], %B[q]\n\t" "movw %[x], r0\n\t"
+      "clr __zero_reg__\n\t"
+      "lsl %A[x]\n\t" "rol %B[x]\n\t" "adc %B[w], __zero_reg__\n\t"
+      "add %B[u], %A[x]\n\t" "adc %A[w], %B[x]\n\t" "adc %B[w], __zero_reg__\n\t"
+      "sub %A[m], %A[u]\n\t" "sbc %B[m], %B[u]\n\t" "sbc %C[m], %A[w]\n\t" "sbc %D[m], %B[w]\n\t"
+      // rem < 0: --q, rem += 2q + 1; rem > 2q: rem -= 2q + 1, ++q.
+      "sbrs %D[m], 7\n\t"
+      "rjmp 1f\n\t"
+      "subi %A[q], 1\n\t" "sbci %B[q], 0\n\t"
+      "movw %[x], %[q]\n\t"
+      "lsl %A[x]\n\t" "rol %B[x]\n\t" "clr %[e]\n\t" "rol %[e]\n\t" "inc %A[x]\n\t"
+      "add %A[m], %A[x]\n\t" "adc %B[m], %B[x]\n\t" "adc %C[m], %[e]\n\t" "adc %D[m], __zero_reg__\n\t"
+      "rjmp 2f\n\t"
+      "1:\n\t"
+      "movw %[x], %[q]\n\t"
+      "lsl %A[x]\n\t" "rol %B[x]\n\t" "clr %[e]\n\t" "rol %[e]\n\t"
+      "cp %A[x], %A[m]\n\t" "cpc %B[x], %B[m]\n\t" "cpc %[e], %C[m]\n\t" "cpc __zero_reg__, %D[m]\n\t"
+      "brcc 2f\n\t"
+      "inc %A[x]\n\t"
+      "sub %A[m], %A[x]\n\t" "sbc %B[m], %B[x]\n\t" "sbc %C[m], %[e]\n\t" "sbc %D[m], __zero_reg__\n\t"
+      "subi %A[q], lo8(-1)\n\t" "sbci %B[q], hi8(-1)\n\t"
+      "2:\n\t"
+      // rq = recip_q30(q, 0) = r0 - hi16((r0 - r1) (q & 0xFF) 2^8).
+      "mov r30, %B[q]\n\t"
+      "subi r30, 128\n\t"
+      "clr r31\n\t"
+      "lsl r30\n\t"
+      "rol r31\n\t"
+      "subi r30, lo8(-(%[recip]))\n\t"
+      "sbci r31, hi8(-(%[recip]))\n\t"
+      "lpm %A[u], Z+\n\t" "lpm %B[u], Z+\n\t"
+      "lpm %A[w], Z+\n\t" "lpm %B[w], Z\n\t"
+      "movw %[x], %[u]\n\t"
+      "sub %A[x], %A[w]\n\t" "sbc %B[x], %B[w]\n\t"
+      "mul %A[x], %A[q]\n\t" "mov %A[w], r1\n\t"
+      "mul %B[x], %A[q]\n\t" "add %A[w], r0\n\t" "mov %B[w], r1\n\t"
+      "clr __zero_reg__\n\t" "adc %B[w], __zero_reg__\n\t"
+      "sub %A[u], %A[w]\n\t" "sbc %B[u], %B[w]\n\t"
+      // frac = min(hi16((rem >> 1) rq) >> 3, 2047).
+      "lsr %C[m]\n\t" "ror %B[m]\n\t" "ror %A[m]\n\t"
+      "mul %A[m], %A[u]\n\t" "mov %A[w], r1\n\t"
+      "mul %B[m], %B[u]\n\t" "movw %[x], r0\n\t"
+      "mul %B[m], %A[u]\n\t" "add %A[w], r0\n\t" "adc %A[x], r1\n\t"
+      "clr __zero_reg__\n\t" "adc %B[x], __zero_reg__\n\t"
+      "mul %A[m], %B[u]\n\t" "add %A[w], r0\n\t" "adc %A[x], r1\n\t"
+      "clr __zero_reg__\n\t" "adc %B[x], __zero_reg__\n\t"
+      "lsr %B[x]\n\t" "ror %A[x]\n\t" "lsr %B[x]\n\t" "ror %A[x]\n\t" "lsr %B[x]\n\t" "ror %A[x]\n\t"
+      "cpi %B[x], 8\n\t"
+      "brlo 3f\n\t"
+      "ldi %A[x], 0xFF\n\t" "ldi %B[x], 0x07\n\t"
+      "3:\n\t"
+      // root = q 2^11 + frac.
+      "clr %D[r]\n\t"
+      "mov %B[r], %A[q]\n\t" "mov %C[r], %B[q]\n\t"
+      "lsl %B[r]\n\t" "rol %C[r]\n\t" "rol %D[r]\n\t"
+      "lsl %B[r]\n\t" "rol %C[r]\n\t" "rol %D[r]\n\t"
+      "lsl %B[r]\n\t" "rol %C[r]\n\t" "rol %D[r]\n\t"
+      "or %B[r], %B[x]\n\t"
+      "mov %A[r], %A[x]"
+      : [r] "=&r"(root), [q] "=&d"(q), [u] "=&r"(u), [w] "=&r"(w), [x] "=&d"(x), [e] "=&r"(e), [m] "+r"(m)
+      : [sqrt_table] "i"(FixedTables<>::kSqrt), [recip] "i"(FixedTables<>::kRecip)
+      : "r30", "r31");
+  return root;
+#else
+  return isqrt_newton(m).root;
+#endif
+}
 
 //! floor(sqrt(m 2^24)) for m in [2^30, 2^32), exact: the Newton estimate
 //! fixed by the residual, plus the next bit (~85 cycles more on the AVR).
