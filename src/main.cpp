@@ -71,7 +71,11 @@ void read_links(uint32_t now_us) {
   while (Serial1.available() > 0) g_app.on_byte(1, uint8_t(Serial1.read()), now_us, g_link);
 }
 
-void run_sonar(uint32_t now_us) {
+// A fresh time stamp, not the loop's: the 60 ms between pings must hold for
+// the TRIG pulses themselves, and the echo interrupt may have stamped an
+// edge since the loop began.
+void run_sonar() {
+  const uint32_t now_us = micros();
   strider::EchoSample sample;
   if (hcsr04::poll(now_us, &sample)) g_app.sonar().add(sample, now_us);
   if (!hcsr04::busy() && g_app.sonar().ping_due(now_us)) hcsr04::trigger(now_us);
@@ -99,7 +103,7 @@ void loop() {
   const uint32_t now_us = micros();
   read_links(now_us);
   g_link.poll();
-  run_sonar(now_us);
+  run_sonar();
   if (int32_t(now_us - g_next_tick_us) >= 0) {
     const uint32_t start_us = micros();
     g_app.tick(start_us, g_link);

@@ -3,10 +3,12 @@
 // CR LF (what the phone terminal apps expect).
 //
 // Nothing here waits for the UART: what does not fit the core's 64-byte
-// transmit buffer waits in a small ring per port and is handed over by
-// poll() as the buffer drains (a 200-byte status line takes 0.2 s at 9600
-// baud: written blocking, it would stall ten control ticks). Only a ring
-// that is full makes send_line() wait.
+// transmit buffer waits in a 192-byte ring per port and is handed over by
+// poll() as the buffer drains (a 230-byte status line takes 0.24 s at 9600
+// baud: written blocking, it would stall twelve control ticks). Only a ring
+// that is full makes send_line() wait (a client sending lines faster than
+// their replies can go out); that wait keeps the watchdog fed, since the UART
+// always empties the buffer, and the missed ticks count as overruns.
 #ifndef STRIDER_SERIAL_LINK_H
 #define STRIDER_SERIAL_LINK_H
 
@@ -14,6 +16,7 @@
 #include "control/robot_app.h"
 
 #include <Arduino.h>
+#include <avr/wdt.h>
 
 class SerialLink {
  public:
@@ -44,14 +47,17 @@ class SerialLink {
     }
 
    private:
-    static constexpr uint8_t kSize = 128;
+    static constexpr uint8_t kSize = 192;  // with the UART's 64: the longest reply (status)
     void put(HardwareSerial& s, char c) {
       drain(s);
       if (len_ == 0 && s.availableForWrite() > 0) {  // nothing queued: straight to the UART
         s.write(uint8_t(c));
         return;
       }
-      while (len_ == kSize) drain(s);  // full: the only place that waits
+      while (len_ == kSize) {  // full: the only place that waits, and it always
+        wdt_reset();           // progresses (the UART sends a byte per ms at 9600 baud)
+        drain(s);
+      }
       buf_[(head_ + len_) % kSize] = c;
       ++len_;
     }

@@ -161,6 +161,18 @@ TEST(SonarEcho, EdgesToSamples) {
   e.edge(false, 0x00000100u);
   ASSERT_TRUE(e.poll(0x00000200u, &s));
   EXPECT_EQ(s.width_us, 0x180);
+  // The interrupt stamped the rising edge after the loop read its time: the
+  // ping is still in flight, not 71 minutes long (found on the virtual Mega).
+  e.triggered(500000);
+  e.edge(true, 500600);
+  EXPECT_FALSE(e.poll(500550, &s));
+  EXPECT_TRUE(e.busy());
+  e.edge(false, 500600 + 1166);
+  ASSERT_TRUE(e.poll(500590, &s));
+  EXPECT_EQ(s.width_us, 1166);
+  // Likewise for the trigger's deadline.
+  e.triggered(600000);
+  EXPECT_FALSE(e.poll(599990, &s));
 }
 
 SonarReading at(uint16_t mm) { return SonarReading{SonarStatus::kOk, mm}; }

@@ -34,7 +34,7 @@ inline FlashText flash_name(const char* names, uint8_t count, uint8_t index) {
   return FlashText{p};
 }
 
-constexpr uint8_t kMaxReplyBytes = 200;  //!< suggested buffer: longest reply (status, cal show) + "\r\n" + NUL
+constexpr uint8_t kMaxReplyBytes = 250;  //!< suggested buffer: longest reply (status, ~235 bytes) + NUL
 
 class ReplyWriter {
  public:

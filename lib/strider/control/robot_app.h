@@ -51,6 +51,9 @@ constexpr char kLimited[] STRIDER_PROGMEM = "limited";
 constexpr char kOverruns[] STRIDER_PROGMEM = "overruns";
 constexpr char kTickMaxUs[] STRIDER_PROGMEM = "tick_max_us";
 constexpr char kStackPeak[] STRIDER_PROGMEM = "stack_peak";
+constexpr char kWalkVx[] STRIDER_PROGMEM = "walk_vx";
+constexpr char kWalkVy[] STRIDER_PROGMEM = "walk_vy";
+constexpr char kWalkWz[] STRIDER_PROGMEM = "walk_wz";
 // The names of the gait engine's and the IK's states (to_string() in
 // gait_engine.h and ik_status.h), in flash; a test keeps them equal.
 constexpr char kGaitStateNames[] STRIDER_PROGMEM = "sitting\0standing_up\0standing\0walking\0stopping\0sitting_down";
@@ -62,6 +65,13 @@ inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uin
 //! Microseconds (<= 1e6) -> seconds, without a division.
 inline void to_seconds(uint32_t us, float* s) { *s = float(us) * 1e-6f; }
 inline void to_seconds(uint32_t us, Fixed* s) { *s = Fixed::from_raw(int32_t((us * 4295ul) >> 16)); }  // 2^16 / 1e6 = 4295 / 2^16 (+1e-5)
+
+//! A value -> tenths, rounded half away from zero (|v| < 200,000).
+inline int32_t to_tenths(float v) { return v >= 0.0f ? int32_t(v * 10.0f + 0.5f) : -int32_t(-v * 10.0f + 0.5f); }
+inline int32_t to_tenths(Fixed v) {
+  const int32_t t = v.raw() * 10;  // |v| < 3276.7: no overflow
+  return t >= 0 ? (t + 32768) >> 16 : -((-t + 32768) >> 16);
+}
 
 template <typename S, typename Output, typename Store>
 class RobotApp {
@@ -214,6 +224,11 @@ class RobotApp {
   }
 
   void write_status(ReplyWriter& w) {
+    // What the gait engine walks: the command after avoidance and the robot's limits.
+    const GaitEngine<S>& e = motion_.walker().engine();
+    w.field_tenths(FlashText{app_text::kWalkVx}, to_tenths(e.vx()))
+        .field_tenths(FlashText{app_text::kWalkVy}, to_tenths(e.vy()))
+        .field_tenths(FlashText{app_text::kWalkWz}, to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)));
     const FlashText servos = stage_.all_on() ? FlashText{app_text::kOn}
                              : stage_.starting() ? FlashText{app_text::kStarting} : FlashText{app_text::kOff};
     w.field_text(FlashText{app_text::kGait}, motion_.gait().name)

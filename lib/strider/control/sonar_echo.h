@@ -38,9 +38,11 @@ class SonarEcho {
   //! True once per ping when its sample is ready (echo measured, too long,
   //! or missing); *out is written only then.
   bool poll(uint32_t now_us, EchoSample* out) {
-    if (state_ == State::kWaitRise && elapsed(now_us, trigger_us_) > kEchoStartDeadlineUs) {
+    // The interrupt may have stamped an edge after the caller read now_us: a
+    // stamp "in the future" is no time at all, not 71 minutes (signed difference).
+    if (state_ == State::kWaitRise && since(now_us, trigger_us_) > int32_t(kEchoStartDeadlineUs)) {
       ready(EchoKind::kNoEdge, 0);
-    } else if (state_ == State::kWaitFall && elapsed(now_us, rise_us_) > kEchoMaxWidthUs) {
+    } else if (state_ == State::kWaitFall && since(now_us, rise_us_) > int32_t(kEchoMaxWidthUs)) {
       ready(EchoKind::kEcho, 0xFFFF);  // echo line stuck high or nothing in range: far
     }
     if (state_ != State::kReady) return false;
@@ -53,6 +55,7 @@ class SonarEcho {
 
  private:
   enum class State : uint8_t { kIdle, kWaitRise, kWaitFall, kReady };
+  static int32_t since(uint32_t now, uint32_t then) { return int32_t(now - then); }
 
   void ready(EchoKind kind, uint16_t width_us) {
     sample_.kind = kind;

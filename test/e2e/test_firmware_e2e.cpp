@@ -1,0 +1,484 @@
+// End-to-end: the real firmware ELF of each model on the virtual Mega
+// (tools/vbench), driven through the Bluetooth UART like a phone would.
+// Expected pulses come from the library independently of the firmware: the
+// model's standing feet through AnyLeg IK, the channel map and the servo map.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "control/channel_map.h"
+#include "control/pca9685_timing.h"
+#include "control/servo_map.h"
+#include "control/settings.h"
+#include "kinematics/any_leg.h"
+#include "robots/all_robots.h"
+#include "virtual_mega.h"
+
+using strider_vmega::RunStatus;
+using strider_vmega::VirtualMega;
+
+namespace {
+
+constexpr uint64_t kBootTimeoutUs = 8000000;   // start-up incl. the velocity-limit search
+constexpr uint64_t kSettleTimeoutUs = 8000000;  // soft start and standing up
+constexpr double kTickToleranceUs = 2.5;        // in PCA9685 counts: Fixed-point IK vs float
+
+std::string elf_path(const std::string& model) {
+  return std::string(STRIDER_FIRMWARE_DIR) + "/strider_firmware_" + model + ".elf";
+}
+
+std::map<std::string, std::string> status_fields(const std::string& line) {
+  std::map<std::string, std::string> f;
+  std::istringstream in(line);
+  std::string word;
+  while (in >> word) {
+    const size_t eq = word.find('=');
+    if (eq != std::string::npos) f[word.substr(0, eq)] = word.substr(eq + 1);
+  }
+  return f;
+}
+
+// Drives one firmware: line collection, waiting, expectations from the library.
+class Robot {
+ public:
+  explicit Robot(const std::string& model) : name_(model), model_(strider::find_robot(model.c_str())) {}
+
+  bool boot(std::string* error) {
+    strider_vmega::Options o;
+    o.elf_path = elf_path(name_);
+    o.sonar_range_mm = 2000;  // open space ahead: avoidance lets the robot walk
+    if (!model_) {
+      *error = "unknown model";
+      return false;
+    }
+    if (!mega_.load(o, error)) return false;
+    return wait_ready(error);
+  }
+
+  bool wait_ready(std::string* error) {
+    const std::string want = "info strider " + name_ + " ready";
+    if (wait_for_line([&](const std::string& l) { return l.rfind(want, 0) == 0; }, kBootTimeoutUs).empty()) {
+      *error = "no `" + want + "` within " + std::to_string(kBootTimeoutUs / 1000000) + " s";
+      return false;
+    }
+    return true;
+  }
+
+  // Runs in 2 ms steps; collects UART1 lines into lines_.
+  bool run_for(uint64_t us) {
+    const uint64_t end = mega_.now_us() + us;
+    while (mega_.now_us() < end) {
+      const uint64_t step = std::min<uint64_t>(2000, end - mega_.now_us());
+      if (mega_.run_for_us(step) != RunStatus::kOk) return false;
+      collect();
+    }
+    return true;
+  }
+
+  void collect() {
+    pending_ += mega_.take_output(1);
+    size_t nl;
+    while ((nl = pending_.find('\n')) != std::string::npos) {
+      std::string l = pending_.substr(0, nl);
+      if (!l.empty() && l.back() == '\r') l.pop_back();
+      lines_.push_back(l);
+      pending_.erase(0, nl + 1);
+    }
+  }
+
+  // First new line satisfying pred within timeout_us ("" if none).
+  template <typename Pred>
+  std::string wait_for_line(Pred pred, uint64_t timeout_us) {
+    const uint64_t end = mega_.now_us() + timeout_us;
+    for (;;) {
+      while (seen_ < lines_.size()) {
+        const std::string& l = lines_[seen_++];
+        if (pred(l)) return l;
+      }
+      if (mega_.now_us() >= end || !run_for(2000)) return std::string();
+    }
+  }
+
+  // Sends a text line; returns its reply (the next ok/err line).
+  std::string command(const std::string& line, uint64_t timeout_us = 1500000) {
+    seen_ = lines_.size();
+    mega_.send(1, line + "\n");
+    return wait_for_line([](const std::string& l) { return l.rfind("ok", 0) == 0 || l.rfind("err", 0) == 0; },
+                         timeout_us);
+  }
+
+  std::map<std::string, std::string> status() {
+    seen_ = lines_.size();
+    mega_.send(1, "status\n");
+    return status_fields(wait_for_line([](const std::string& l) { return l.rfind("ok status", 0) == 0; }, 1500000));
+  }
+
+  // Runs until no channel changed for quiet_us (or timeout_us).
+  bool settle(uint64_t quiet_us, uint64_t timeout_us) {
+    const uint64_t end = mega_.now_us() + timeout_us;
+    while (mega_.now_us() < end) {
+      const auto& log = mega_.pulse_log();
+      const uint64_t last = log.empty() ? 0 : log.back().time_us;
+      if (!log.empty() && mega_.now_us() - last >= quiet_us) return true;
+      if (!run_for(20000)) return false;
+    }
+    return false;
+  }
+
+  // The library's standing pulses [us] by global channel, with trims [0.1 deg].
+  std::map<int, double> expected_standing(const int16_t* trim_decideg = nullptr) const {
+    std::map<int, double> out;
+    strider::Pca9685Timing timing;
+    timing.configure(strider::kPca9685NominalOscHz, 50);
+    const double tick_us = mega_.board(0).tick_us();
+    for (uint8_t i = 0; i < model_->leg_count; ++i) {
+      strider::AnyLeg<float> leg;
+      EXPECT_TRUE(strider::AnyLeg<float>::from_model(*model_, i, leg));
+      strider::AnyLeg<float>::Joints q;
+      strider::Vec3<float> reached;
+      const strider::IkStatus s = leg.ik_body(model_->legs[i].stand_mm, q, reached);
+      EXPECT_NE(s, strider::IkStatus::kUnreachable) << "leg " << int(i);
+      for (uint8_t j = 0; j < model_->dof(); ++j) {
+        const auto ch = strider::make_joint_channel<float>(*model_, i, j);
+        const int k = i * model_->dof() + j;
+        const float trim = trim_decideg ? strider::trim_from_decideg<float>(trim_decideg[k]) : 0.0f;
+        const strider::ServoCommand cmd = strider::map_joint(ch, q[j], trim, timing);
+        out[ch.channel] = cmd.ticks * tick_us;
+      }
+    }
+    return out;
+  }
+
+  // Pulse range [us] of every joint's channel.
+  std::map<int, std::pair<double, double>> pulse_limits() const {
+    std::map<int, std::pair<double, double>> out;
+    for (uint8_t i = 0; i < model_->leg_count; ++i)
+      for (uint8_t j = 0; j < model_->dof(); ++j) {
+        const auto ch = strider::make_joint_channel<float>(*model_, i, j);
+        const double per_rad = double(ch.us_per_rad);
+        out[ch.channel] = {ch.min_pulse_us + double(ch.min_rad) * per_rad,
+                           ch.min_pulse_us + double(ch.max_rad) * per_rad};
+      }
+    return out;
+  }
+
+  struct Motion {
+    double joint_speed_us_s = 0;  // mean |d pulse / dt| summed over all channels [us/s]
+    double period_s = 0;          // step period of the busiest channel [s], 0 if unclear
+    double walked_mm_s = 0;       // forward body speed from the feet on the ground [mm/s]
+  };
+
+  // Body-frame feet [mm] from the outputs: pulses back to joint angles
+  // (channel_map.h's joint_from_pulse) and the leg's FK.
+  std::vector<strider::Vec3<float>> feet() const {
+    std::vector<strider::Vec3<float>> out;
+    for (uint8_t i = 0; i < model_->leg_count; ++i) {
+      strider::AnyLeg<float> leg;
+      strider::AnyLeg<float>::from_model(*model_, i, leg);
+      strider::AnyLeg<float>::Joints q;
+      for (uint8_t j = 0; j < model_->dof(); ++j) {
+        const auto ch = strider::make_joint_channel<float>(*model_, i, j);
+        q[j] = float(strider::joint_from_pulse(ch, mega_.pulse_us(ch.channel)));
+      }
+      out.push_back(leg.fk_body(q));
+    }
+    return out;
+  }
+
+  // Samples every output each 20 ms for duration_us after settle_us of ramp,
+  // repeating the key every 200 ms as the app does for a held button.
+  Motion measure(uint64_t settle_us, uint64_t duration_us, const std::string& keep_alive) {
+    const int n = mega_.board_count() * 16;
+    std::vector<std::vector<double>> series(static_cast<size_t>(n));
+    uint64_t next_key = mega_.now_us();
+    const uint64_t start = mega_.now_us() + settle_us;
+    const uint64_t end = start + duration_us;
+    // Feet on the ground (within 3 mm of the lowest) move backwards at the
+    // body's speed: sum their displacement between samples.
+    std::vector<strider::Vec3<float>> prev_feet;
+    double travel_mm = 0, travel_s = 0;
+    while (mega_.now_us() < end) {
+      if (mega_.now_us() >= next_key) {
+        mega_.send(1, keep_alive);
+        next_key += 200000;
+      }
+      if (!run_for(20000)) break;
+      if (mega_.now_us() < start) continue;
+      for (int c = 0; c < n; ++c) series[size_t(c)].push_back(mega_.pulse_us(c));
+      const auto f = feet();
+      if (!prev_feet.empty()) {
+        float low = 1e9f;
+        for (size_t i = 0; i < f.size(); ++i) low = std::min({low, f[i].z, prev_feet[i].z});
+        double dx = 0;
+        int down = 0;
+        for (size_t i = 0; i < f.size(); ++i)
+          if (f[i].z < low + 3.0f && prev_feet[i].z < low + 3.0f) {
+            dx += double(f[i].x - prev_feet[i].x);
+            ++down;
+          }
+        if (down > 0) {
+          travel_mm += -dx / down;
+          travel_s += 0.02;
+        }
+      }
+      prev_feet = f;
+    }
+    Motion m;
+    m.walked_mm_s = travel_s > 0 ? travel_mm / travel_s : 0.0;
+    int busiest = -1;
+    double busiest_path = 0;
+    for (int c = 0; c < n; ++c) {
+      double path = 0;
+      for (size_t i = 1; i < series[size_t(c)].size(); ++i)
+        path += std::fabs(series[size_t(c)][i] - series[size_t(c)][i - 1]);
+      m.joint_speed_us_s += path / (double(duration_us) * 1e-6);
+      if (path > busiest_path) {
+        busiest_path = path;
+        busiest = c;
+      }
+    }
+    if (busiest >= 0) m.period_s = period_s(series[size_t(busiest)], 0.02);
+    return m;
+  }
+
+  // Fundamental period [s] of a sampled signal: the first autocorrelation
+  // peak above half the zero-lag value.
+  static double period_s(const std::vector<double>& x, double dt_s) {
+    const size_t n = x.size();
+    if (n < 10) return 0.0;
+    double mean = 0;
+    for (double v : x) mean += v;
+    mean /= double(n);
+    auto ac = [&](size_t lag) {
+      double sum = 0;
+      for (size_t i = 0; i + lag < n; ++i) sum += (x[i] - mean) * (x[i + lag] - mean);
+      return sum / double(n - lag);
+    };
+    const double a0 = ac(0);
+    if (a0 <= 0) return 0.0;
+    for (size_t lag = 2; lag + 1 < n / 2; ++lag) {
+      const double a = ac(lag);
+      if (a > 0.5 * a0 && a >= ac(lag - 1) && a >= ac(lag + 1)) return double(lag) * dt_s;
+    }
+    return 0.0;
+  }
+
+  VirtualMega& mega() { return mega_; }
+  const strider::RobotModel& model() const { return *model_; }
+  const std::vector<std::string>& lines() const { return lines_; }
+  size_t mark() const { return lines_.size(); }
+  bool any_line_since(size_t from, const std::string& prefix) const {
+    for (size_t i = from; i < lines_.size(); ++i)
+      if (lines_[i].rfind(prefix, 0) == 0) return true;
+    return false;
+  }
+  std::string transcript(size_t from = 0) const {
+    std::string t;
+    for (size_t i = from; i < lines_.size(); ++i) t += "  " + lines_[i] + "\n";
+    return t;
+  }
+
+ private:
+  std::string name_;
+  const strider::RobotModel* model_;
+  VirtualMega mega_;
+  std::string pending_;
+  std::vector<std::string> lines_;
+  size_t seen_ = 0;
+};
+
+void expect_standing(Robot& r, const int16_t* trims, const char* when) {
+  const auto expected = r.expected_standing(trims);
+  const double tol = kTickToleranceUs * r.mega().board(0).tick_us();
+  for (const auto& e : expected)
+    EXPECT_NEAR(r.mega().pulse_us(e.first), e.second, tol) << when << ": channel " << e.first;
+  // Channels no joint uses stay off.
+  for (int c = 0; c < r.mega().board_count() * 16; ++c) {
+    if (expected.count(c)) continue;
+    EXPECT_EQ(r.mega().pulse_us(c), 0.0) << when << ": unused channel " << c;
+  }
+}
+
+class FirmwareWalk : public ::testing::TestWithParam<std::string> {};
+class FirmwarePersistence : public ::testing::TestWithParam<std::string> {};
+
+// Boot, stand, walk, speed, avoidance, deadman: one boot, several checks.
+TEST_P(FirmwareWalk, BootStandWalkAvoidStop) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+
+  // After the soft start the outputs hold the standing pose's IK.
+  ASSERT_TRUE(r.settle(500000, kSettleTimeoutUs)) << "outputs never settled";
+  EXPECT_TRUE(r.any_line_since(0, "info eeprom")) << r.transcript();  // fresh EEPROM: defaults
+  expect_standing(r, nullptr, "after boot");
+  const auto& prescale_board = r.mega().board(0);
+  EXPECT_EQ(prescale_board.prescale(), strider::pca9685_prescale(strider::kPca9685NominalOscHz, 50));
+  EXPECT_FALSE(prescale_board.sleeping());
+
+  // F: the gait moves every leg, within every channel's limits.
+  const auto limits = r.pulse_limits();
+  r.mega().clear_pulse_log();
+  r.mega().send(1, "F");
+  r.measure(0, 2000000, "F");
+  std::map<int, std::pair<double, double>> seen;
+  for (const auto& c : r.mega().pulse_log()) {
+    auto it = seen.find(c.channel);
+    if (it == seen.end()) seen[c.channel] = {c.width_us, c.width_us};
+    else it->second = {std::min(it->second.first, c.width_us), std::max(it->second.second, c.width_us)};
+  }
+  std::vector<int> legs_moved(r.model().leg_count, 0);
+  for (const auto& l : limits) {
+    auto it = seen.find(l.first);
+    if (it == seen.end()) continue;  // e.g. an abduction joint walking straight
+    EXPECT_GE(it->second.first, l.second.first - 1.0) << "channel " << l.first;
+    EXPECT_LE(it->second.second, l.second.second + 1.0) << "channel " << l.first;
+    EXPECT_GT(it->second.first, 0.0) << "channel " << l.first << " went limp";
+    for (uint8_t i = 0; i < r.model().leg_count; ++i)
+      for (uint8_t j = 0; j < r.model().dof(); ++j)
+        if (strider::joint_channel(r.model(), i, j) == l.first && it->second.second - it->second.first > 20.0)
+          legs_moved[i] = 1;
+  }
+  for (uint8_t i = 0; i < r.model().leg_count; ++i) EXPECT_TRUE(legs_moved[i]) << "leg " << int(i) << " did not step";
+
+  // Speed keys: 1 (10 %) against q (100 %). The joints move faster (a
+  // higher step rate, a longer stride or both) and the walked speed rises.
+  // (10 %: some gaits top out below 30 % of the app's 155 mm/s.)
+  r.mega().send(1, "1");
+  const Robot::Motion slow = r.measure(1000000, 3000000, "F");
+  const double vx_slow = std::atof(r.status()["vx"].c_str());
+  r.mega().send(1, "q");
+  const Robot::Motion fast = r.measure(1000000, 3000000, "F");
+  auto st = r.status();
+  const double vx_fast = std::atof(st["vx"].c_str());
+  std::printf("%s: 10 %%: vx %.1f mm/s, walked %.1f mm/s, step period %.2f s, joints %.0f us/s; "
+              "100 %%: vx %.1f, walked %.1f, %.2f s, %.0f us/s\n",
+              GetParam().c_str(), vx_slow, slow.walked_mm_s, slow.period_s, slow.joint_speed_us_s, vx_fast,
+              fast.walked_mm_s, fast.period_s, fast.joint_speed_us_s);
+  // The walked speed (feet on the ground, through FK of the pulses) follows
+  // the keys: 10 % is at most 15.5 mm/s (with room for the estimate), 100 %
+  // is faster. The status reports the command; the gait engine walks what
+  // the robot can (mammal8 tops out near 17 mm/s).
+  EXPECT_GT(vx_fast, vx_slow);
+  EXPECT_LT(slow.walked_mm_s, 1.5 * 15.5);
+  EXPECT_GT(fast.walked_mm_s, slow.walked_mm_s);
+  EXPECT_EQ(st["speed"], "100");
+  EXPECT_EQ(st["mode"], "walking");
+
+  // An obstacle at 15 cm while walking forward: avoidance takes over.
+  size_t from = r.mark();
+  r.mega().set_range_mm(150);
+  r.measure(0, 1500000, "F");
+  bool avoided = false;
+  for (size_t i = from; i < r.lines().size(); ++i)
+    if (r.lines()[i].rfind("info avoid", 0) == 0 && r.lines()[i] != "info avoid forward") avoided = true;
+  EXPECT_TRUE(avoided) << r.transcript(from);
+  st = r.status();
+  EXPECT_NE(st["avoid"], "forward");
+  EXPECT_NE(st["avoid"], "pass");
+  r.mega().set_range_mm(2000);
+
+  // Silence while walking: the deadman stops the robot.
+  from = r.mark();
+  ASSERT_EQ(r.command("walk 100").rfind("ok move", 0), 0u);
+  EXPECT_FALSE(r.wait_for_line([](const std::string& l) { return l == "info deadman stop"; }, 2500000).empty())
+      << r.transcript(from);
+  ASSERT_TRUE(r.settle(500000, 5000000));
+  expect_standing(r, nullptr, "after the deadman stop");
+  EXPECT_EQ(r.mega().unexpected_resets(), 0) << r.transcript();
+  // HC-SR04 datasheet: at least 60 ms between pings (1 ms of slack for the
+  // firmware's loop granularity against the simulated clock).
+  EXPECT_GE(r.mega().sonar_min_trigger_interval_us(), 59000u);
+  EXPECT_EQ(r.mega().sonar_short_triggers(), 0);
+  // The servo frames fit the 20 ms tick on a 400 kHz bus.
+  int max_bytes = 0;
+  double max_bus_us = 0;
+  for (const auto& f : r.mega().i2c_frames(5000)) {
+    max_bytes = std::max(max_bytes, f.bytes);
+    max_bus_us = std::max(max_bus_us, f.bus_time_us());
+  }
+  EXPECT_LT(max_bus_us, 20000.0);
+  ::testing::Test::RecordProperty("i2c_max_bytes_per_frame", max_bytes);
+  ::testing::Test::RecordProperty("i2c_max_us_per_frame_400khz", int(max_bus_us + 0.5));
+  ::testing::Test::RecordProperty("stack_peak_bytes", int(r.mega().stack_peak_bytes()));
+  std::printf("%s: i2c max %d bytes/frame = %.0f us at 400 kHz; stack peak %u bytes, static %u bytes\n",
+              GetParam().c_str(), max_bytes, max_bus_us, r.mega().stack_peak_bytes(), r.mega().static_ram_bytes());
+  EXPECT_EQ(r.mega().stack_overflow_us(), 0u) << "stack peak " << r.mega().stack_peak_bytes() << " bytes, static "
+                                              << r.mega().static_ram_bytes() << " bytes";
+}
+
+// Garbage on the link, calibration kept over a reset, corrupt EEPROM.
+TEST_P(FirmwarePersistence, GarbageCalibrationEeprom) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(300000, kSettleTimeoutUs));
+  auto before = r.status();
+
+  // Random bytes that are neither RC buttons nor line starts: errors only.
+  std::mt19937 rng(1234);
+  std::string junk;
+  while (junk.size() < 300) {
+    const uint8_t b = uint8_t(rng());
+    // Not CR/LF, and not tab: a tab starts a text line (docs/protocol.md).
+    if (b >= 0x80 || (b < 0x20 && b != '\n' && b != '\r' && b != '\t')) junk.push_back(char(b));
+  }
+  size_t from = r.mark();
+  r.mega().send(1, junk);
+  for (int i = 0; i < 100 && r.mega().pending_input(1) > 0; ++i) r.run_for(20000);
+  r.run_for(300000);
+  EXPECT_TRUE(r.any_line_since(from, "err ")) << r.transcript(from);
+  EXPECT_FALSE(r.any_line_since(from, "ok")) << r.transcript(from);
+  auto after = r.status();
+  for (const char* key : {"mode", "speed", "vx", "vy", "wz", "avoid", "deadman_ms", "gait", "eeprom"})
+    EXPECT_EQ(after[key], before[key]) << key;
+  EXPECT_EQ(r.mega().unexpected_resets(), 0);
+  expect_standing(r, nullptr, "after garbage");
+
+  // Calibration saved to EEPROM survives a reset.
+  ASSERT_EQ(r.command("cal start").rfind("ok", 0), 0u);
+  ASSERT_EQ(r.command("cal trim 0 5").rfind("ok", 0), 0u);
+  ASSERT_EQ(r.command("cal save"), "ok cal saved");
+  from = r.mark();
+  r.mega().reset();
+  ASSERT_TRUE(r.wait_ready(&error)) << error;
+  EXPECT_FALSE(r.any_line_since(from, "info eeprom")) << r.transcript(from);
+  EXPECT_EQ(r.command("cal show").rfind("ok cal osc=25000000 trims=5.0,", 0), 0u);
+  EXPECT_EQ(r.status()["eeprom"], "ok");
+  ASSERT_TRUE(r.settle(500000, kSettleTimeoutUs));
+  int16_t trims[strider::kMaxServoJoints] = {50};
+  expect_standing(r, trims, "with trim 0 = 5 deg");
+
+  // A corrupt record: defaults and a notice.
+  std::vector<uint8_t> image = r.mega().eeprom();
+  image[6] ^= 0x5A;
+  r.mega().set_eeprom(image);
+  from = r.mark();
+  r.mega().reset();
+  ASSERT_TRUE(r.wait_ready(&error)) << error;
+  r.run_for(200000);
+  bool notice = false;
+  for (size_t i = from; i < r.lines().size(); ++i)
+    if (r.lines()[i].rfind("info eeprom", 0) == 0 && r.lines()[i].find("corrupt") != std::string::npos) notice = true;
+  EXPECT_TRUE(notice) << r.transcript(from);
+  EXPECT_EQ(r.command("cal show").rfind("ok cal osc=25000000 trims=0.0,", 0), 0u);
+  EXPECT_EQ(r.mega().unexpected_resets(), 0);
+}
+
+std::string param_name(const ::testing::TestParamInfo<std::string>& p) { return p.param; }
+
+INSTANTIATE_TEST_SUITE_P(Models, FirmwareWalk,
+                         ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
+// The link and EEPROM code is the same for every model: the smallest and the
+// largest firmware.
+INSTANTIATE_TEST_SUITE_P(Models, FirmwarePersistence, ::testing::Values("sprawl8", "hexapod18"), param_name);
+
+}  // namespace

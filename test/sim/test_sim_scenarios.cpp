@@ -1,0 +1,206 @@
+// Whole scenarios in library mode (tools/sim/scenarios): the firmware's own
+// control chain (RobotApp) fed the scenario's Bluetooth bytes, driving the
+// Bullet world through the servo pulses. Each test prints its metrics and the
+// speed-up over real time; docs/simulator.md compares them with the seeds.
+//
+// The asserted bounds are what the simulated robots do today, with margin:
+// they catch a broken chain (no motion, wrong direction, falls, collisions),
+// not a few per cent of speed. The seeds' targets that the simulation does
+// not reach yet are DISABLED_ tests below, with the measured values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+#include <algorithm>
+
+#include "sim_run.h"
+
+namespace {
+
+using strider_sim::Metrics;
+using strider_sim::RunResult;
+
+RunResult run_file(const std::string& name, bool avoid_off = false) {
+  strider_sim::Scenario sc;
+  std::string error;
+  const std::string path = std::string(STRIDER_SIM_SCENARIOS) + "/" + name + ".scenario";
+  EXPECT_TRUE(strider_sim::load_scenario(path, &sc, &error)) << error;
+  if (avoid_off) sc.sends.insert(sc.sends.begin(), strider_sim::TimedSend{0.1, "avoid off\n"});
+  RunResult r = strider_sim::run_scenario(sc, strider_sim::RunOptions{});
+  EXPECT_TRUE(r.ok) << r.error;
+  const Metrics& m = r.metrics;
+  std::printf(
+      "[ metrics  ] %s: distance %.0f mm, top speed %.1f mm/s, heading %+.1f deg, drift %.1f mm, tilt %.1f deg, "
+      "odometry %.0f mm (error %.1f %%)%s%s, %.1f s simulated in %.2f s CPU: %.1fx real time\n",
+      name.c_str(), m.distance_mm, m.speed_mm_s, m.heading_change_deg, m.lateral_drift_mm, m.max_tilt_deg,
+      m.odometry_mm, m.odometry_error_pct, m.fell ? ", FELL" : "",
+      m.has_obstacles ? (", clearance " + std::to_string(int(m.min_clearance_mm)) + " mm").c_str() : "", m.sim_time_s,
+      m.cpu_time_s, m.real_time_factor);
+  EXPECT_EQ(m.replies_err, 0) << "the robot rejected a scenario line";
+  return r;
+}
+
+bool log_has(const RunResult& r, const std::string& text) {
+  for (const auto& l : r.log)
+    if (l.text.find(text) != std::string::npos) return true;
+  return false;
+}
+
+TEST(SimScenarios, Sprawl8WalksForward) {
+  const Metrics m = run_file("sprawl8_forward").metrics;
+  EXPECT_FALSE(m.fell);
+  EXPECT_GT(m.final_x_mm, 400.0);                 // 8 s at 155 mm/s asked (seed target 1240 mm)
+  EXPECT_GT(m.speed_mm_s, 50.0);
+  EXPECT_LT(m.lateral_drift_mm, 0.05 * m.distance_mm);  // seed target: < 5 %
+  EXPECT_LT(std::fabs(m.heading_change_deg), 10.0);
+}
+
+TEST(SimScenarios, Sprawl8TurnsAFullCircle) {
+  const Metrics m = run_file("sprawl8_turn").metrics;
+  EXPECT_FALSE(m.fell);
+  EXPECT_GT(m.heading_change_deg, 360.0);  // anticlockwise, 8 s at 60 deg/s asked
+  ASSERT_GT(m.turn_360_s, 0.0);
+  EXPECT_LT(m.turn_360_s, 9.0);            // seed target 6 s
+  EXPECT_LT(m.distance_mm, 50.0);          // in place
+}
+
+TEST(SimScenarios, Sprawl8StrafesLeftOnTheRcButton) {
+  const Metrics m = run_file("sprawl8_strafe").metrics;
+  EXPECT_FALSE(m.fell);
+  EXPECT_GT(m.final_y_mm, 150.0);  // left = +y
+  EXPECT_LT(m.lateral_drift_mm, 0.1 * m.distance_mm);  // little forward or backward motion
+  EXPECT_LT(std::fabs(m.heading_change_deg), 10.0);
+}
+
+TEST(SimScenarios, Sprawl8CrawlsForward) {
+  const Metrics m = run_file("sprawl8_crawl").metrics;
+  EXPECT_FALSE(m.fell);
+  EXPECT_GT(m.final_x_mm, 150.0);
+  EXPECT_LT(m.lateral_drift_mm, 0.1 * m.distance_mm);
+}
+
+TEST(SimScenarios, Hexapod18TripodWalksForward) {
+  const Metrics m = run_file("hexapod18_tripod").metrics;
+  EXPECT_FALSE(m.fell);
+  EXPECT_GT(m.final_x_mm, 450.0);   // 6 s at 100 mm/s
+  EXPECT_GT(m.speed_mm_s, 80.0);
+  EXPECT_LT(m.lateral_drift_mm, 0.1 * m.distance_mm);
+  EXPECT_LT(m.max_tilt_deg, 5.0);   // three feet down at every instant
+  // A tripod's stance feet do not slip much: within 15 % of the gait's own odometry.
+  EXPECT_LT(std::fabs(m.odometry_error_pct), 15.0);
+}
+
+// Seed 003 table 5: the mammal robot over 10, 20 and 100 cm in walk, trot
+// and pace. The simulated robot stays up in every run; how far it gets is
+// printed (the DISABLED_ target test below asserts the seed's accuracy).
+class Mammal8Distance : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(Mammal8Distance, StaysUpAndWalks) {
+  const Metrics m = run_file(GetParam()).metrics;
+  EXPECT_FALSE(m.fell);
+  EXPECT_LT(m.max_tilt_deg, 25.0);
+  EXPECT_GT(m.odometry_mm, 50.0);  // the gait engine walked its part
+}
+
+INSTANTIATE_TEST_SUITE_P(SeedTable5, Mammal8Distance,
+                         ::testing::Values("mammal8_walk_100mm", "mammal8_walk_200mm", "mammal8_trot_100mm",
+                                           "mammal8_trot_200mm", "mammal8_trot_1000mm", "mammal8_pace_100mm",
+                                           "mammal8_pace_200mm", "mammal8_pace_1000mm"));
+
+TEST(SimScenarios, AvoidanceKeepsTheBodyClearOfAWall) {
+  const RunResult r = run_file("sprawl8_obstacle");
+  const Metrics& m = r.metrics;
+  EXPECT_FALSE(m.fell);
+  EXPECT_TRUE(log_has(r, "info avoid sidestep"));
+  EXPECT_GT(m.min_clearance_mm, 10.0);  // the body box never reaches the wall
+  EXPECT_GT(m.final_y_mm, 150.0);       // it went round to the left
+  // The same walk blind: the sprawling front feet run into the wall and the
+  // robot stays stuck in front of it.
+  const Metrics blind = run_file("sprawl8_obstacle", true).metrics;
+  EXPECT_LT(blind.min_robot_clearance_mm, 1.0);
+  EXPECT_GT(blind.collisions, 0);
+  EXPECT_LT(std::fabs(blind.final_y_mm), 50.0);
+  EXPECT_LT(blind.final_x_mm, 500.0);
+}
+
+TEST(SimScenarios, SameScenarioSameMetrics) {
+  const RunResult a = run_file("sprawl8_crawl");
+  const RunResult b = run_file("sprawl8_crawl");
+  std::string ma = strider_sim::metrics_json(a.metrics), mb = strider_sim::metrics_json(b.metrics);
+  auto strip_times = [](std::string s) {  // wall and CPU time differ between runs
+    for (const char* key : {"\"wall_time_s\"", "\"cpu_time_s\"", "\"real_time_factor\""}) {
+      const size_t at = s.find(key);
+      if (at != std::string::npos) s.erase(at, s.find('\n', at) - at);
+    }
+    return s;
+  };
+  EXPECT_EQ(strip_times(ma), strip_times(mb));
+  ASSERT_EQ(a.trace.size(), b.trace.size());
+  for (size_t k = 0; k < a.trace.size(); ++k) {
+    ASSERT_EQ(a.trace[k].body.pos_mm.x, b.trace[k].body.pos_mm.x) << "row " << k;
+    ASSERT_EQ(a.trace[k].body.yaw_deg, b.trace[k].body.yaw_deg) << "row " << k;
+    ASSERT_EQ(a.trace[k].q_deg, b.trace[k].q_deg) << "row " << k;
+  }
+}
+
+// ---- the seeds' figures, not reached yet (docs/simulator.md explains) -------
+
+// Seed 000: 155 mm/s forward. Measured: ~70 mm/s (trot), ~34 mm/s (crawl).
+TEST(SimTargets, DISABLED_Sprawl8Reaches155MmPerSecond) {
+  EXPECT_GE(run_file("sprawl8_forward").metrics.speed_mm_s, 155.0);
+}
+
+// Seed 000: 360 deg in 6 s. Measured: ~7.5 s.
+TEST(SimTargets, DISABLED_Sprawl8Turns360InSixSeconds) {
+  EXPECT_LE(run_file("sprawl8_turn").metrics.turn_360_s, 6.0);
+}
+
+// Seed 003 table 5: distance reached within 2 % of the gait's own distance.
+// Measured: 88-253 % (walk and pace go backward): the robot rocks onto its
+// swing legs, which drag.
+TEST(SimTargets, DISABLED_Mammal8ReachesCommandedDistanceWithin2Percent) {
+  for (const char* s : {"mammal8_walk_100mm", "mammal8_trot_100mm", "mammal8_pace_100mm"})
+    EXPECT_LT(std::fabs(run_file(s).metrics.odometry_error_pct), 2.0) << s;
+}
+
+}  // namespace
+
+namespace {
+
+// The pulse chain: ticks x (prescale + 1) / oscillator. A board whose
+// oscillator runs 4 % fast (26 MHz) shortens every pulse, so the servos
+// stand in another pose; `cal osc 26000000` makes the firmware's ticks
+// right again (docs/calibration.md).
+std::vector<double> standing_targets(double osc_hz, bool calibrate) {
+  strider_sim::Scenario sc;
+  std::string error;
+  std::string text = "robot sprawl8\nduration 4\n";
+  if (calibrate) text += "at 0.1 send cal start\\n\nat 0.3 send cal osc 26000000\\n\nat 0.5 send cal save\\n\n";
+  EXPECT_TRUE(strider_sim::parse_scenario(text, &sc, &error)) << error;
+  strider_sim::RunOptions opt;
+  opt.world.osc_hz = osc_hz;
+  const RunResult r = strider_sim::run_scenario(sc, opt);
+  EXPECT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.metrics.replies_err, 0);
+  return r.trace.back().target_deg;
+}
+
+TEST(SimScenarios, OscillatorCalibrationCorrectsThePulses) {
+  const std::vector<double> nominal = standing_targets(25e6, false);
+  const std::vector<double> fast = standing_targets(26e6, false);
+  const std::vector<double> calibrated = standing_targets(26e6, true);
+  ASSERT_EQ(nominal.size(), fast.size());
+  double worst_fast = 0, worst_cal = 0;
+  for (size_t k = 0; k < nominal.size(); ++k) {
+    worst_fast = std::max(worst_fast, std::fabs(fast[k] - nominal[k]));
+    worst_cal = std::max(worst_cal, std::fabs(calibrated[k] - nominal[k]));
+  }
+  std::printf("[ metrics  ] 26 MHz board: joints off by up to %.2f deg; after cal osc: %.2f deg\n", worst_fast,
+              worst_cal);
+  EXPECT_GT(worst_fast, 3.0);  // 4 % of a ~1500 us pulse is ~60 us, ~5 deg
+  EXPECT_LT(worst_cal, 0.6);   // one PCA9685 tick (~0.44 deg) plus the dead band
+}
+
+}  // namespace

@@ -1,0 +1,139 @@
+// The simulator's world and scenario format: the physics body matches the
+// library's kinematics, the servo model follows the pulses, scenarios parse.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "control/channel_map.h"
+#include "gait/gait_params.h"
+#include "kinematics/any_leg.h"
+#include "robots/all_robots.h"
+#include "scenario.h"
+#include "world.h"
+
+namespace {
+
+using strider_sim::ChannelPulse;
+using strider_sim::kMaxChannels;
+using strider_sim::Vec;
+using strider_sim::World;
+using strider_sim::WorldConfig;
+
+// The multibody built from each model puts every foot where the leg type's
+// FK says, for random joints within the limits: the joint axes, zero angles
+// and link offsets are right for all four leg kinds.
+TEST(SimWorld, FeetMatchLibraryForwardKinematics) {
+  std::mt19937 rng(7);
+  for (const strider::RobotModel* model : strider::kAllRobots) {
+    for (int trial = 0; trial < 5; ++trial) {
+      WorldConfig cfg;
+      const int dof = model->dof();
+      std::vector<strider::AnyLeg<float>::Joints> q(model->leg_count);
+      for (int i = 0; i < model->leg_count; ++i)
+        for (int j = 0; j < dof; ++j) {
+          const strider::JointRange& r = model->legs[i].joint[j];
+          std::uniform_real_distribution<double> u(r.min_deg, r.max_deg);
+          const double deg = u(rng);
+          q[i][uint8_t(j)] = float(deg * M_PI / 180.0);
+          cfg.initial_joints_rad.push_back(double(q[i][uint8_t(j)]));
+        }
+      World w(*model, cfg, {});
+      const Vec body = w.body().pos_mm;
+      for (int i = 0; i < model->leg_count; ++i) {
+        strider::AnyLeg<float> leg;
+        ASSERT_TRUE(strider::AnyLeg<float>::from_model(*model, uint8_t(i), leg));
+        const strider::Vec3<float> want = leg.fk_body(q[i]);
+        const Vec got = w.foot_mm(i);
+        EXPECT_NEAR(got.x - body.x, want.x, 0.05) << model->name << " leg " << i;
+        EXPECT_NEAR(got.y - body.y, want.y, 0.05) << model->name << " leg " << i;
+        EXPECT_NEAR(got.z - body.z, want.z, 0.05) << model->name << " leg " << i;
+        for (int j = 0; j < dof; ++j) EXPECT_NEAR(w.joint_rad(i, j), double(q[i][uint8_t(j)]), 1e-5);
+      }
+    }
+  }
+}
+
+// A pulse becomes the joint angle the inverse servo map gives; a change
+// within the dead band is ignored; a servo moves no faster than its rating.
+TEST(SimWorld, ServoFollowsPulsesWithDeadbandAndSpeedLimit) {
+  const strider::RobotModel& model = strider::kSprawl8;
+  World w(model, WorldConfig{}, {});
+  strider::ServoChannel<float> ch[strider::kMaxServoJoints];
+  ASSERT_EQ(strider::make_channel_map<float>(model, ch), model.joint_count());
+  ChannelPulse p[kMaxChannels];
+  for (int k = 0; k < model.joint_count(); ++k) p[ch[k].channel] = ChannelPulse{true, 1500.0};
+  w.set_pulses(p);
+  EXPECT_NEAR(w.joint_target_rad(0, 0), strider::joint_from_pulse(ch[0], 1500.0), 1e-9);
+  p[ch[0].channel].pulse_us = 1504.0;  // inside the MG90S's 5 us dead band
+  w.set_pulses(p);
+  EXPECT_NEAR(w.joint_target_rad(0, 0), strider::joint_from_pulse(ch[0], 1500.0), 1e-9);
+  p[ch[0].channel].pulse_us = 1900.0;
+  w.set_pulses(p);
+  const double target = strider::joint_from_pulse(ch[0], 1900.0);
+  EXPECT_NEAR(w.joint_target_rad(0, 0), target, 1e-9);
+  const double start = w.joint_rad(0, 0);
+  for (int s = 0; s < 100; ++s) w.step();  // 0.1 s
+  const double moved = std::fabs(w.joint_rad(0, 0) - start);
+  const double rated = 60.0 / double(strider::servo_spec(model.servo[0]).speed_s_per_60deg) * M_PI / 180.0;
+  EXPECT_GT(moved, 0.3 * rated * 0.1);
+  EXPECT_LE(moved, rated * 0.1 * 1.05);
+  for (int s = 0; s < 900; ++s) w.step();
+  EXPECT_NEAR(w.joint_rad(0, 0), target, 0.02);
+}
+
+// Standing, every model's CoM sits where its gait parameters assume it (the
+// body's own COM is offset to balance the servos on the legs), and the
+// masses add up to the model's total.
+TEST(SimWorld, StandingCentreOfMassIsWhereTheGaitAssumesIt) {
+  for (const strider::RobotModel* model : strider::kAllRobots) {
+    World w(*model, WorldConfig{}, {});
+    const strider::GaitParams* gp = strider::gait_params_for(*model);
+    ASSERT_NE(gp, nullptr);
+    const Vec body = w.body().pos_mm, com = w.com_mm();
+    EXPECT_NEAR(com.x - body.x, double(gp->com_x_mm), 0.2) << model->name;
+    EXPECT_NEAR(com.y - body.y, double(gp->com_y_mm), 0.2) << model->name;
+  }
+}
+
+TEST(SimWorld, SonarSeesAWallAhead) {
+  const strider::RobotModel& model = strider::kSprawl8;
+  World clear(model, WorldConfig{}, {});
+  EXPECT_LT(clear.sonar_mm(), 0.0);
+  World wall(model, WorldConfig{}, {strider_sim::ObstacleBox{500, 0, 20, 1000, 300}});
+  const double expect = 490.0 - wall.sonar_origin_body_mm().x;
+  EXPECT_NEAR(wall.sonar_mm(), expect, 2.0);
+  EXPECT_NEAR(wall.body_clearance_mm(), 490.0 - 0.5 * model.body.length_mm, 1.5);
+}
+
+TEST(SimScenario, ParsesTheDocumentedFormat) {
+  strider_sim::Scenario s;
+  std::string err;
+  ASSERT_TRUE(strider_sim::parse_scenario("# a comment\nrobot sprawl8\nduration 20   # seconds\n"
+                                          "obstacle box 600 0 20 800 150\n"
+                                          "at 2.5 send walk 100\\n\nat 1 send F\n",
+                                          &s, &err))
+      << err;
+  EXPECT_EQ(s.robot, "sprawl8");
+  EXPECT_DOUBLE_EQ(s.duration_s, 20.0);
+  ASSERT_EQ(s.obstacles.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.obstacles[0].x_mm, 600.0);
+  EXPECT_DOUBLE_EQ(s.obstacles[0].sz_mm, 150.0);
+  ASSERT_EQ(s.sends.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.sends[0].at_s, 1.0);  // sorted by time
+  EXPECT_EQ(s.sends[0].bytes, "F");
+  EXPECT_EQ(s.sends[1].bytes, "walk 100\n");
+}
+
+TEST(SimScenario, RejectsBadLinesWithTheirNumber) {
+  strider_sim::Scenario s;
+  std::string err;
+  EXPECT_FALSE(strider_sim::parse_scenario("robot sprawl8\nduration 5\nat x send F\n", &s, &err));
+  EXPECT_EQ(err.rfind("line 3:", 0), 0u) << err;
+  EXPECT_FALSE(strider_sim::parse_scenario("robot nosuch\nduration 5\n", &s, &err));
+  EXPECT_FALSE(strider_sim::parse_scenario("robot sprawl8\n", &s, &err));  // no duration
+  EXPECT_FALSE(strider_sim::parse_scenario("robot sprawl8\nduration 5\nobstacle box 1 2 3\n", &s, &err));
+  EXPECT_FALSE(strider_sim::parse_scenario("robot sprawl8\nduration 5\nat 1 send bad\\q\n", &s, &err));
+}
+
+}  // namespace

@@ -1,0 +1,332 @@
+// The virtual Mega's peripherals against the bare-metal probe firmware
+// (probe_firmware.cpp): UART pacing and buffering, TWI addressing and the
+// PCA9685 decode, HC-SR04 echo timing, EEPROM persistence, resets, the LED,
+// and the vbench executable with a script and with a pseudo-terminal.
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "virtual_mega.h"
+
+using strider_vmega::Options;
+using strider_vmega::RunStatus;
+using strider_vmega::VirtualMega;
+
+namespace {
+
+std::string temp_path(const std::string& name) {
+  const char* dir = std::getenv("TMPDIR");
+  return std::string(dir ? dir : "/tmp") + "/strider_vbench_" + std::to_string(getpid()) + "_" + name;
+}
+
+class Probe : public ::testing::Test {
+ protected:
+  Options options() {
+    Options o;
+    o.elf_path = STRIDER_VBENCH_PROBE_ELF;
+    return o;
+  }
+  void boot(const Options& o) {
+    std::string err;
+    ASSERT_TRUE(mega.load(o, &err)) << err;
+    const std::string line = next_line(1, 200000);
+    ASSERT_EQ(line.substr(0, 5), "boot ") << line;
+  }
+  void SetUp() override { boot(options()); }
+
+  // Runs until UART `uart` completes a line (or timeout_us passes).
+  std::string next_line(int uart, uint64_t timeout_us) {
+    const uint64_t end = mega.now_us() + timeout_us;
+    while (mega.now_us() < end) {
+      buffer[uart] += mega.take_output(uart);
+      const size_t nl = buffer[uart].find('\n');
+      if (nl != std::string::npos) {
+        std::string line = buffer[uart].substr(0, nl);
+        buffer[uart].erase(0, nl + 1);
+        return line;
+      }
+      if (mega.run_for_us(500) != RunStatus::kOk) return "<stopped>";
+    }
+    return "<timeout>";
+  }
+  std::string command(const std::string& line, uint64_t timeout_us = 500000) {
+    mega.send(1, line + "\n");
+    return next_line(1, timeout_us);
+  }
+  // Standard 50 Hz bring-up of a board over the bus.
+  void bring_up(const std::string& addr) {
+    ASSERT_EQ(command("w " + addr + " 00 10"), "ok");
+    ASSERT_EQ(command("w " + addr + " FE 79"), "ok");  // prescale 121
+    ASSERT_EQ(command("w " + addr + " 00 20"), "ok");
+    ASSERT_EQ(command("w " + addr + " 00 A0"), "ok");
+  }
+
+  VirtualMega mega;
+  std::string buffer[2];
+};
+
+TEST_F(Probe, BootsOnBothUartsAtTheProgrammedBaud) {
+  EXPECT_EQ(next_line(0, 100000), "boot0");
+  EXPECT_EQ(mega.baud(1), 9615u);    // UBRR 207, U2X
+  EXPECT_EQ(mega.baud(0), 117647u);  // UBRR 16, U2X
+  EXPECT_EQ(mega.unexpected_resets(), 0);
+}
+
+TEST(ProbeBoot, BytesSentBeforeTheReceiverIsOnWait) {
+  VirtualMega mega;
+  Options o;
+  o.elf_path = STRIDER_VBENCH_PROBE_ELF;
+  std::string err;
+  ASSERT_TRUE(mega.load(o, &err)) << err;
+  mega.send(1, "q 40\n");  // at t = 0, before the firmware set up UART1
+  mega.run_until_us(200000);
+  EXPECT_EQ(mega.take_output(1), "boot 01\nack\n");
+}
+
+TEST_F(Probe, LongLineArrivesIntactAtTheBaudRate) {
+  std::string text;
+  uint32_t sum = 0;
+  for (int i = 0; i < 150; ++i) {
+    text.push_back(char('!' + (i * 7) % 90));
+    sum += uint8_t(text.back());
+  }
+  const uint64_t t0 = mega.now_us();
+  EXPECT_EQ(command("n " + text), "len 150 sum " + std::to_string(sum));
+  // 153 bytes at 9615 baud take 159 ms; nothing arrives faster than the wire.
+  EXPECT_GE(mega.now_us() - t0, 153 * 1040u);
+}
+
+TEST_F(Probe, BytesWaitWhileTheFirmwareIsBusy) {
+  // The firmware does not read for 300 ms: 100 bytes would overflow simavr's
+  // 64-byte FIFO if they were pushed in regardless.
+  mega.send(1, "b 300\n");
+  std::string text(100, 'x');
+  mega.send(1, "n " + text + "\n");
+  EXPECT_EQ(next_line(1, 1000000), "done");
+  EXPECT_EQ(next_line(1, 1000000), "len 100 sum " + std::to_string(100 * int('x')));
+  EXPECT_EQ(mega.pending_input(1), 0u);
+}
+
+TEST_F(Probe, TwiAddressesAckOrNack) {
+  EXPECT_EQ(command("q 40"), "ack");
+  EXPECT_EQ(command("q 41"), "ack");
+  EXPECT_EQ(command("q 42"), "nack");
+  EXPECT_EQ(command("q 70"), "ack");  // ALLCALL, on at power-on
+  EXPECT_EQ(command("w 55 00 01"), "nack");
+  const auto& log = mega.i2c_log();
+  ASSERT_GE(log.size(), 5u);
+  EXPECT_TRUE(log[0].acked);
+  EXPECT_FALSE(log[2].acked);
+  EXPECT_EQ(log[2].address7, 0x42);
+}
+
+TEST_F(Probe, RegisterWritesDecodeIntoPulses) {
+  bring_up("40");
+  bring_up("41");
+  mega.clear_pulse_log();
+  mega.clear_i2c_log();
+  const uint64_t t0 = mega.now_us();
+  ASSERT_EQ(command("w 40 0A 00 00 33 01"), "ok");  // ch1: OFF 307
+  ASSERT_EQ(command("w 41 0E 00 00 90 01"), "ok");  // board 2 ch2: OFF 400
+  EXPECT_NEAR(mega.pulse_us(1), 307 * 122 / 25.0, 1e-6);
+  EXPECT_NEAR(mega.pulse_us(18), 400 * 122 / 25.0, 1e-6);
+  EXPECT_EQ(mega.pulse_us(0), 0.0);
+  const auto& log = mega.pulse_log();
+  ASSERT_EQ(log.size(), 2u);
+  EXPECT_EQ(log[0].channel, 1);
+  EXPECT_GE(log[0].time_us, t0);
+  EXPECT_EQ(log[1].channel, 18);
+  // Address byte + pointer + 4 data bytes per write.
+  ASSERT_EQ(mega.i2c_log().size(), 2u);
+  EXPECT_EQ(mega.i2c_log()[0].bytes, 6);
+  const auto frames = mega.i2c_frames(100000);
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].bytes, 12);
+  EXPECT_NEAR(frames[0].bus_time_us(), (12 * 9 + 4) * 2.5, 1e-9);
+}
+
+TEST_F(Probe, BoardOscillatorSetsTheWidth) {
+  Options o = options();
+  o.pca_osc_hz = 26e6;
+  boot(o);
+  bring_up("40");
+  ASSERT_EQ(command("w 40 06 00 00 33 01"), "ok");
+  EXPECT_NEAR(mega.pulse_us(0), 307 * 122 / 26.0, 1e-6);
+}
+
+TEST_F(Probe, PrescaleIgnoredWhileAwake) {
+  bring_up("40");
+  ASSERT_EQ(command("w 40 06 00 00 33 01"), "ok");
+  const double w = mega.pulse_us(0);
+  ASSERT_EQ(command("w 40 FE 03"), "ok");  // awake: no effect
+  EXPECT_EQ(mega.board(0).prescale(), 121);
+  EXPECT_EQ(mega.pulse_us(0), w);
+  EXPECT_EQ(mega.board(0).reg(0x00), 0x20);
+}
+
+TEST_F(Probe, SoftwareResetByGeneralCall) {
+  bring_up("40");
+  ASSERT_EQ(command("w 40 06 00 00 33 01"), "ok");
+  ASSERT_GT(mega.pulse_us(0), 0.0);
+  ASSERT_EQ(command("w 00 06"), "ok");  // SWRST
+  EXPECT_EQ(mega.pulse_us(0), 0.0);
+  EXPECT_EQ(mega.board(0).reg(0x00), 0x11);
+  EXPECT_EQ(mega.board(1).prescale(), 0x1E);
+}
+
+TEST_F(Probe, SonarEchoWidthFollowsTheRange) {
+  mega.set_range_mm(1000);
+  const std::string r = command("s", 200000);
+  unsigned width = 0, delay = 0;
+  ASSERT_EQ(std::sscanf(r.c_str(), "echo %u %u", &width, &delay), 2) << r;
+  EXPECT_NEAR(double(width), 1000 * 2 / 0.343, 10.0);  // Timer1 counts 4 us
+  EXPECT_NEAR(double(delay), 460.0, 10.0);
+  mega.set_range_mm(150);
+  ASSERT_EQ(std::sscanf(command("s", 200000).c_str(), "echo %u", &width), 1);
+  EXPECT_NEAR(double(width), 150 * 2 / 0.343, 10.0);
+  mega.set_range_mm(6000);  // out of range: the module's 38 ms time-out pulse
+  ASSERT_EQ(std::sscanf(command("s", 200000).c_str(), "echo %u", &width), 1);
+  EXPECT_NEAR(double(width), 38000.0, 10.0);
+  EXPECT_EQ(mega.sonar_triggers(), 3);
+}
+
+TEST_F(Probe, SonarWithoutEchoOrShortTriggerStaysLow) {
+  mega.set_no_echo();
+  EXPECT_EQ(command("s", 200000), "none");
+  mega.set_range_mm(500);
+  EXPECT_EQ(command("s 4", 200000), "none");  // 4 us < 10 us
+  EXPECT_EQ(mega.sonar_short_triggers(), 1);
+  EXPECT_EQ(mega.sonar_triggers(), 1);
+}
+
+TEST_F(Probe, EepromSurvivesInAFile) {
+  const std::string path = temp_path("eeprom.bin");
+  std::remove(path.c_str());
+  EXPECT_EQ(command("E 0010"), "ee FF");  // erased
+  EXPECT_EQ(command("e 0010 5A"), "ok");
+  EXPECT_EQ(command("e 0FFF 33"), "ok");
+  std::string err;
+  ASSERT_TRUE(mega.save_eeprom(path, &err)) << err;
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_EQ(bytes.size(), 4096u);
+  EXPECT_EQ(uint8_t(bytes[0x10]), 0x5A);
+  // A fresh Mega with the file sees the bytes.
+  Options o = options();
+  o.eeprom_path = path;
+  boot(o);
+  EXPECT_EQ(command("E 0010"), "ee 5A");
+  EXPECT_EQ(command("E 0FFF"), "ee 33");
+  std::remove(path.c_str());
+}
+
+TEST_F(Probe, WatchdogResetIsCounted) {
+  mega.send(1, "d\n");
+  EXPECT_EQ(next_line(1, 200000), "boot 08");  // MCUSR.WDRF
+  EXPECT_EQ(mega.unexpected_resets(), 1);
+  EXPECT_EQ(command("q 40"), "ack");  // the bus still works after the reset
+  mega.reset();
+  EXPECT_EQ(next_line(1, 200000).substr(0, 5), "boot ");
+  EXPECT_EQ(mega.external_resets(), 1);
+  EXPECT_EQ(mega.unexpected_resets(), 1);
+}
+
+TEST_F(Probe, PcaOutputsSurviveAnMcuReset) {
+  bring_up("40");
+  ASSERT_EQ(command("w 40 06 00 00 33 01"), "ok");
+  const double w = mega.pulse_us(0);
+  mega.reset();
+  next_line(1, 200000);
+  EXPECT_EQ(mega.pulse_us(0), w);  // the board is a separate chip
+}
+
+TEST_F(Probe, LedPin) {
+  EXPECT_FALSE(mega.pin_output('B', 7));
+  EXPECT_EQ(command("l 1"), "ok");
+  EXPECT_TRUE(mega.pin_output('B', 7));
+  EXPECT_EQ(command("l 0"), "ok");
+  EXPECT_FALSE(mega.pin_output('B', 7));
+  EXPECT_EQ(mega.led_toggles(), 2);
+}
+
+TEST(VbenchExe, RunsAScriptAndPrintsReplies) {
+  const std::string script = temp_path("script.txt");
+  {
+    std::ofstream s(script);
+    s << "# probe\nat 0.1 send q 40\\n\nat 0.2 range 300\nat 0.3 send s\\n\n";
+  }
+  const std::string cmd = std::string(STRIDER_VBENCH_EXE) + " --elf " + STRIDER_VBENCH_PROBE_ELF +
+                          " --script " + script + " --duration 0.6 --log";
+  FILE* p = popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string out;
+  char buf[256];
+  while (std::fgets(buf, sizeof buf, p)) out += buf;
+  EXPECT_EQ(pclose(p), 0);
+  std::remove(script.c_str());
+  EXPECT_NE(out.find(" uart1: boot 01"), std::string::npos) << out;
+  EXPECT_NE(out.find(" uart0: boot0"), std::string::npos) << out;
+  EXPECT_NE(out.find(" uart1: ack"), std::string::npos) << out;
+  EXPECT_NE(out.find(" uart1: echo 17"), std::string::npos) << out;  // 300 mm: 1749 us
+  EXPECT_NE(out.find("# sonar triggers 1"), std::string::npos) << out;
+}
+
+TEST(VbenchExe, PseudoTerminalBridgesUart1) {
+  const int probe = posix_openpt(O_RDWR | O_NOCTTY);
+  if (probe < 0) GTEST_SKIP() << "no pseudo-terminals here";
+  close(probe);
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    dup2(fds[1], 1);
+    close(fds[0]);
+    execl(STRIDER_VBENCH_EXE, "vbench", "--elf", STRIDER_VBENCH_PROBE_ELF, "--pty", "--duration", "10",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(fds[1]);
+  // First stdout line: the pseudo-terminal's path.
+  std::string path;
+  char c;
+  pollfd pf{fds[0], POLLIN, 0};
+  while (poll(&pf, 1, 5000) > 0 && read(fds[0], &c, 1) == 1 && c != '\n') path.push_back(c);
+  ASSERT_EQ(path.substr(0, 5), "/dev/") << path;
+  const int tty = open(path.c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(tty, 0);
+  termios t;
+  tcgetattr(tty, &t);
+  cfmakeraw(&t);
+  tcsetattr(tty, TCSANOW, &t);
+  ASSERT_EQ(write(tty, "q 41\n", 5), 5);
+  std::string got;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (got.find("ack\n") == std::string::npos && std::chrono::steady_clock::now() < deadline) {
+    pollfd tp{tty, POLLIN, 0};
+    if (poll(&tp, 1, 100) > 0) {
+      char buf[64];
+      const ssize_t n = read(tty, buf, sizeof buf);
+      if (n > 0) got.append(buf, size_t(n));
+    }
+  }
+  close(tty);
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  close(fds[0]);
+  EXPECT_NE(got.find("ack\n"), std::string::npos) << got;
+}
+
+}  // namespace

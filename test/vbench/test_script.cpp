@@ -1,0 +1,59 @@
+// vbench script parsing.
+#include "script.h"
+
+#include <gtest/gtest.h>
+
+using strider_vmega::ScriptEvent;
+
+TEST(VbenchScript, ParsesDirectivesAndSortsByTime) {
+  const char* text =
+      "# a comment\n"
+      "\n"
+      "at 2 range 150\n"
+      "at 0.5 send F\\n\n"
+      "at 1.25 send0 status\\r\\n\n"
+      "at 3 range none\n"
+      "at 4 reset\n";
+  std::vector<ScriptEvent> ev;
+  std::string err;
+  ASSERT_TRUE(strider_vmega::parse_script(text, &ev, &err)) << err;
+  ASSERT_EQ(ev.size(), 5u);
+  EXPECT_EQ(ev[0].time_us, 500000u);
+  EXPECT_EQ(ev[0].kind, ScriptEvent::Kind::kSend);
+  EXPECT_EQ(ev[0].uart, 1);
+  EXPECT_EQ(ev[0].text, "F\n");
+  EXPECT_EQ(ev[1].uart, 0);
+  EXPECT_EQ(ev[1].text, "status\r\n");
+  EXPECT_EQ(ev[2].kind, ScriptEvent::Kind::kRange);
+  EXPECT_EQ(ev[2].range_mm, 150.0);
+  EXPECT_LT(ev[3].range_mm, 0.0);
+  EXPECT_EQ(ev[4].kind, ScriptEvent::Kind::kReset);
+  EXPECT_EQ(ev[4].time_us, 4000000u);
+}
+
+TEST(VbenchScript, TextIsVerbatimWithEscapes) {
+  ScriptEvent ev;
+  bool has = false;
+  std::string err;
+  ASSERT_TRUE(strider_vmega::parse_script_line("at 1 send  set speed 5 \\x41\\\\", &ev, &has, &err)) << err;
+  ASSERT_TRUE(has);
+  EXPECT_EQ(ev.text, " set speed 5 A\\");
+  ASSERT_TRUE(strider_vmega::parse_script_line("send S", &ev, &has, &err));
+  EXPECT_TRUE(ev.immediate);
+}
+
+TEST(VbenchScript, RejectsBadLines) {
+  const char* bad[] = {"at x send F", "at 1 fly", "at 1 range -4", "at 1 range", "at 1 send",
+                       "at 1 send \\q", "at 1 send \\x4", "at 1 reset now", "at -1 reset"};
+  for (const char* line : bad) {
+    ScriptEvent ev;
+    bool has = false;
+    std::string err;
+    EXPECT_FALSE(strider_vmega::parse_script_line(line, &ev, &has, &err)) << line;
+    EXPECT_FALSE(err.empty()) << line;
+  }
+  std::vector<ScriptEvent> ev;
+  std::string err;
+  EXPECT_FALSE(strider_vmega::parse_script("at 1 send F\nat 2 jump\n", &ev, &err));
+  EXPECT_NE(err.find("line 2"), std::string::npos);
+}

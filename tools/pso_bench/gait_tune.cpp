@@ -1,0 +1,300 @@
+// gait_tune: tunes a robot's gait (step length, step height, cycle time) for
+// forward speed under stability constraints with Strider's own PSO
+// (kinematics/pso.h), every candidate scored by a rollout in strider-sim's
+// Bullet world (docs/results.md, "Gait tuning by PSO").
+//
+// A rollout is library mode, the firmware's chain compiled for the host:
+// protocol bytes -> strider::RobotApp (controller, walker, servo stage) ->
+// PCA9685 ticks -> pulse widths -> the world's servo motors. The one change is
+// the walker's GaitParams: RobotApp takes them from the constexpr table
+// (gait_params.h), so after begin() the walker is configured again with the
+// candidate's step length, height and cycle (the robot is still sitting then,
+// as at power-up).
+//
+// Score: forward speed [mm/s] over the last part of a `walk 500` (the gait
+// engine caps the speed at what the candidate allows). A candidate is
+// feasible when the robot does not fall, tilts at most 10 degrees,
+// drifts sideways at most 10 % of the distance and turns at most 1 deg/s
+// (tuned with a 30 % margin on both); an infeasible one costs 1000 + its
+// violation.
+//
+// usage: gait_tune [--robot R] [--gait G] [--swarm N] [--iterations N]
+//                  [--walk-s S] [--seed N] [--vx MM_S]
+// Output: one JSON object on stdout: "default" and "tuned" over the tuning
+// window, "default_long" and "tuned_long" over a walk twice as long.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "control/robot_app.h"
+#include "kinematics/pso.h"
+#include "robots/all_robots.h"
+#include "world.h"
+
+namespace {
+
+using strider_sim::ChannelPulse;
+using strider_sim::kMaxChannels;
+using strider_sim::World;
+using strider_sim::WorldConfig;
+
+// PCA9685 boards as RobotApp's ServoOutput sees them (as in tools/sim's
+// library driver): 12-bit off counts and the prescale.
+struct Boards {
+  uint16_t ticks[kMaxChannels] = {};
+  bool on[kMaxChannels] = {};
+  uint8_t prescale = 121;
+  void write_ticks(uint8_t ch, uint16_t off_ticks) {
+    if (ch >= kMaxChannels) return;
+    ticks[ch] = off_ticks;
+    on[ch] = true;
+  }
+  void set_prescale(uint8_t p) { prescale = p; }
+  void relax(uint8_t ch) {
+    if (ch < kMaxChannels) on[ch] = false;
+  }
+  void flush() {}
+};
+
+struct Replies {
+  int err = 0;
+  void send_line(uint8_t, const char* line) { err += std::strncmp(line, "err", 3) == 0; }
+};
+
+using Store = strider::ArrayByteStore<4096>;
+using App = strider::RobotApp<float, Boards, Store>;
+
+struct Candidate {
+  float step_length_mm, step_height_mm, cycle_s;
+};
+
+struct Rollout {
+  bool ok = false;
+  std::string error;
+  double speed_mm_s = 0;  // forward, body frame at the window's start
+  double lateral_pct = 0;
+  double heading_deg = 0;
+  double max_tilt_deg = 0;
+  bool fell = false;
+};
+
+struct Options {
+  double walk_at_s = 3.0;  // soft start and stand-up are over by then (sprawl8: 2.3 s)
+  double settle_s = 1.5;   // acceleration, not measured
+  double walk_s = 10.0;    // measured window
+  double max_tilt_deg = 10.0;
+  double max_lateral_pct = 10.0;
+  double max_heading_deg_s = 1.0;  // turning while asked to walk straight [deg/s]
+  std::string walk = "walk 500\n";  // the command walked
+  std::string gait;                  // gait to switch to ("" = the model's default)
+};
+
+std::vector<double> sitting_joints(const strider::RobotModel& model) {
+  strider::WalkerMotion<float> motion;
+  std::vector<double> q;
+  if (!motion.configure(model)) return q;
+  for (int i = 0; i < model.leg_count; ++i)
+    for (int j = 0; j < model.dof(); ++j) q.push_back(double(motion.walker().leg(uint8_t(i)).q[uint8_t(j)]));
+  return q;
+}
+
+Rollout rollout(const strider::RobotModel& model, const strider::GaitParams& params, const Options& o) {
+  Rollout r;
+  WorldConfig wc;
+  wc.initial_joints_rad = sitting_joints(model);
+  World world(model, wc, {});
+  Boards boards;
+  Store store;
+  store.erase();
+  App app(model, boards, store);
+  Replies link;
+  if (!app.begin(0, link)) {
+    r.error = "robot did not start";
+    return r;
+  }
+  // RobotApp exposes its motion read-only; the object itself is not const,
+  // so configuring its walker here is well defined.
+  auto& motion = const_cast<strider::WalkerMotion<float>&>(app.motion());
+  if (!motion.walker().configure(model, motion.gait(), params, params.shape, true)) {
+    r.error = "walker refused the parameters";
+    return r;
+  }
+  struct Send {
+    double at_s;
+    const char* text;
+  };
+  // `gait NAME` switches the gait table and keeps the engine's (candidate's)
+  // configuration (WalkerMotion::set_gait).
+  const std::string gait_line = o.gait.empty() ? std::string("stop\n") : "gait " + o.gait + "\n";
+  const Send sends[] = {{0.4, gait_line.c_str()}, {0.5, "deadman 0\n"}, {0.6, "avoid off\n"},
+                        {o.walk_at_s, o.walk.c_str()}};
+  size_t next_send = 0;
+  const double dt = wc.step_s;
+  const double t_start = o.walk_at_s + o.settle_s, t_end = t_start + o.walk_s;
+  const long steps = std::lround(t_end / dt);
+  uint64_t next_tick_us = strider::kTickPeriodUs;
+  ChannelPulse pulses[kMaxChannels];
+  strider_sim::BodyState start{};
+  bool started = false;
+  for (long k = 0; k < steps; ++k) {
+    const double t = double(k) * dt;
+    const uint64_t t_us = uint64_t(std::llround(t * 1e6));
+    while (next_send < sizeof sends / sizeof sends[0] && sends[next_send].at_s <= t + 1e-12) {
+      for (const char* c = sends[next_send].text; *c != '\0'; ++c) app.on_byte(1, uint8_t(*c), uint32_t(t_us), link);
+      ++next_send;
+    }
+    while (next_tick_us <= t_us) {
+      app.tick(uint32_t(next_tick_us), link);
+      next_tick_us += strider::kTickPeriodUs;
+    }
+    const double tick_us = (double(boards.prescale) + 1.0) * 1e6 / wc.osc_hz;
+    for (int ch = 0; ch < kMaxChannels; ++ch) {
+      pulses[ch].on = boards.on[ch];
+      pulses[ch].pulse_us = double(boards.ticks[ch]) * tick_us;
+    }
+    world.set_pulses(pulses);
+    world.step();
+    if (t >= o.walk_at_s) {
+      const strider_sim::BodyState b = world.body();
+      r.max_tilt_deg = std::max(r.max_tilt_deg, b.tilt_deg);
+      r.fell = r.fell || world.body_on_ground();
+      if (!started && t >= t_start) {
+        start = b;
+        started = true;
+      }
+    }
+  }
+  const strider_sim::BodyState end = world.body();
+  const double yaw = start.yaw_deg * M_PI / 180.0;
+  const double dx = end.pos_mm.x - start.pos_mm.x, dy = end.pos_mm.y - start.pos_mm.y;
+  const double fwd = dx * std::cos(yaw) + dy * std::sin(yaw);
+  const double lat = -dx * std::sin(yaw) + dy * std::cos(yaw);
+  double dyaw = end.yaw_deg - start.yaw_deg;
+  while (dyaw > 180) dyaw -= 360;
+  while (dyaw < -180) dyaw += 360;
+  r.speed_mm_s = fwd / o.walk_s;
+  r.lateral_pct = std::fabs(fwd) > 1e-6 ? 100.0 * std::fabs(lat) / std::fabs(fwd) : 0.0;
+  r.heading_deg = dyaw;
+  r.ok = link.err == 0;
+  if (!r.ok) r.error = "the robot answered err";
+  return r;
+}
+
+double violation(const Rollout& r, const Options& o) {
+  if (!r.ok) return 1e3;
+  double v = r.fell ? 100.0 : 0.0;
+  v += std::max(0.0, r.max_tilt_deg - o.max_tilt_deg);
+  v += std::max(0.0, r.lateral_pct - o.max_lateral_pct);
+  v += std::max(0.0, std::fabs(r.heading_deg) / o.walk_s - o.max_heading_deg_s);
+  return v;
+}
+
+strider::GaitParams with(const strider::GaitParams& base, const Candidate& c) {
+  strider::GaitParams p = base;
+  p.step_length_mm = c.step_length_mm;
+  p.step_height_mm = c.step_height_mm;
+  p.cycle_s = c.cycle_s;
+  return p;
+}
+
+void print_rollout(const char* name, const Candidate& c, const Rollout& r, const Options& o, bool comma) {
+  std::printf("\"%s\":{\"step_length_mm\":%.2f,\"step_height_mm\":%.2f,\"cycle_s\":%.3f,\"speed_mm_s\":%.2f,"
+              "\"max_tilt_deg\":%.2f,\"lateral_pct\":%.2f,\"heading_deg\":%.2f,\"fell\":%s,\"feasible\":%s%s%s%s}%s",
+              name, double(c.step_length_mm), double(c.step_height_mm), double(c.cycle_s), r.speed_mm_s,
+              r.max_tilt_deg, r.lateral_pct, r.heading_deg, r.fell ? "true" : "false",
+              violation(r, o) == 0.0 ? "true" : "false", r.error.empty() ? "" : ",\"error\":\"",
+              r.error.c_str(), r.error.empty() ? "" : "\"", comma ? "," : "");
+}
+
+int usage() {
+  std::fprintf(stderr,
+               "usage: gait_tune [--robot R] [--gait G] [--swarm N] [--iterations N] [--walk-s S] [--seed N]"
+               " [--vx MM_S]\n");
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string robot = "sprawl8";
+  int swarm_size = 8, iterations = 8;
+  uint32_t seed = 1;
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (i + 1 >= argc) return usage();
+    const char* v = argv[++i];
+    if (a == "--robot") robot = v;
+    else if (a == "--swarm") swarm_size = std::atoi(v);
+    else if (a == "--iterations") iterations = std::atoi(v);
+    else if (a == "--walk-s") o.walk_s = std::atof(v);
+    else if (a == "--seed") seed = uint32_t(std::atoi(v));
+    else if (a == "--vx") o.walk = std::string("walk ") + v + "\n";
+    else if (a == "--gait") o.gait = v;
+    else return usage();
+  }
+  if (swarm_size < 1 || swarm_size > 20 || iterations < 1 || !(o.walk_s > 0)) return usage();
+  const strider::RobotModel* model = strider::find_robot(robot.c_str());
+  const strider::GaitParams* base = model != nullptr ? strider::gait_params_for(*model) : nullptr;
+  if (base == nullptr) {
+    std::fprintf(stderr, "gait_tune: unknown robot %s\n", robot.c_str());
+    return 2;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  // Bounds around the defaults: half to 2.5 times the stride, half to twice
+  // the step height, 0.4 to 1.5 times the cycle.
+  strider::PsoParams<float, 3> p;
+  p.lo[0] = 0.5f * base->step_length_mm;
+  p.hi[0] = 2.5f * base->step_length_mm;
+  p.lo[1] = 0.5f * base->step_height_mm;
+  p.hi[1] = 2.0f * base->step_height_mm;
+  p.lo[2] = 0.4f * base->cycle_s;
+  p.hi[2] = 1.5f * base->cycle_s;
+  p.swarm_size = uint8_t(swarm_size);
+  p.max_iterations = uint16_t(iterations);
+  p.seed = seed;
+  p.cost_threshold = -1e9f;  // costs are negative speeds: the default 0 would stop at once
+  int evaluations = 0;
+  // Tuned with 30 % margin on drift and turning, so that the result still
+  // meets the constraints over the longer check walk (drift grows with time).
+  Options tight = o;
+  tight.max_lateral_pct *= 0.7;
+  tight.max_heading_deg_s *= 0.7;
+  const auto cost = [&](const strider::JointVector<float, 3>& x) {
+    ++evaluations;
+    const Rollout r = rollout(*model, with(*base, Candidate{x[0], x[1], x[2]}), o);
+    const double v = violation(r, tight);
+    return float(v > 0 ? 1000.0 + v : -r.speed_mm_s);
+  };
+  static strider::ParticleSwarm<float, 3, 20> pso;
+  const strider::PsoResult<float, 3> best = pso.minimize(p, cost);
+  const double tune_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const Candidate def{base->step_length_mm, base->step_height_mm, base->cycle_s};
+  const Candidate tuned{best.position[0], best.position[1], best.position[2]};
+  // Both over the tuning window, and again over a walk twice as long (does
+  // the tuned gait hold beyond the window it was tuned on?).
+  Options check = o;
+  check.walk_s = 2.0 * o.walk_s;
+  const Rollout rd = rollout(*model, *base, o);
+  const Rollout rt = rollout(*model, with(*base, tuned), o);
+  const Rollout rd2 = rollout(*model, *base, check);
+  const Rollout rt2 = rollout(*model, with(*base, tuned), check);
+  std::printf("{\"robot\":\"%s\",\"gait\":\"%s\",\"swarm\":%d,\"iterations\":%d,\"evaluations\":%d,"
+              "\"walk_s\":%.2f,\"check_walk_s\":%.2f,\"tune_wall_s\":%.2f,"
+              "\"bounds\":[[%.2f,%.2f],[%.2f,%.2f],[%.3f,%.3f]],"
+              "\"constraints\":{\"max_tilt_deg\":%.1f,\"max_lateral_pct\":%.1f,\"max_heading_deg_s\":%.1f},",
+              model->name, o.gait.empty() ? base->default_gait : o.gait.c_str(), swarm_size, iterations, evaluations,
+              o.walk_s, check.walk_s, tune_s,
+              double(p.lo[0]), double(p.hi[0]), double(p.lo[1]), double(p.hi[1]), double(p.lo[2]), double(p.hi[2]),
+              o.max_tilt_deg, o.max_lateral_pct, o.max_heading_deg_s);
+  print_rollout("default", def, rd, o, true);
+  print_rollout("tuned", tuned, rt, o, true);
+  print_rollout("default_long", def, rd2, check, true);
+  print_rollout("tuned_long", tuned, rt2, check, false);
+  std::printf("}\n");
+  return rd.ok && rt.ok && rd2.ok && rt2.ok ? 0 : 1;
+}

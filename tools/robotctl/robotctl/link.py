@@ -1,0 +1,269 @@
+"""The serial link to the robot: writes lines and RC bytes, reads lines, and
+pairs replies with the lines that earned them.
+
+Replies come in the order of the lines sent, so the link keeps a queue of
+lines still waiting for one. A reply that arrives after its command timed out
+(the HC-05 buffers, a busy robot answers late) is matched to that stale entry
+and dropped, so it is never taken for the answer to a later command.
+"""
+import re
+import time
+from collections import deque
+from dataclasses import dataclass, field
+from typing import Callable, Deque, List, Optional
+
+import serial
+
+from .protocol import Reply, kind_of, parse_reply, plausible
+
+#: Ports that reset an Arduino when opened (DTR): wait for its boot lines.
+RESETTING_PORT = re.compile(r"^/dev/(ttyACM|ttyUSB|cu\.usbmodem|cu\.usbserial)")
+
+
+class LinkError(Exception):
+    """The port could not be opened or the link broke."""
+
+
+class ReplyTimeout(LinkError):
+    """No reply to a line within the timeout."""
+
+
+@dataclass
+class Pending:
+    """A text line waiting for its reply."""
+    text: str
+    sent_at: float
+    reply: Optional[Reply] = None
+    abandoned: bool = False  #: its caller gave up waiting
+
+
+@dataclass
+class Event:
+    """A line received: kind is 'ok', 'err', 'info' or 'other'."""
+    time: float
+    kind: str
+    line: str
+    reply: Optional[Reply] = None
+    request: Optional[Pending] = None  #: the line this reply answers, if known
+    late: bool = False                  #: reply to an abandoned request
+
+
+@dataclass
+class Link:
+    """A line-oriented connection to the robot over any pyserial port."""
+    port: "serial.SerialBase"
+    clock: Callable[[], float] = time.monotonic
+    #: Called for every line received (also inside command()).
+    on_event: Optional[Callable[[Event], None]] = None
+    #: Line ending written after a text line.
+    eol: bytes = b"\n"
+    #: Abandoned requests older than this are forgotten [s]: a reply that
+    #: never comes must not shift every later pairing forever.
+    forget_after_s: float = 30.0
+    notices: List[Event] = field(default_factory=list)
+    _buf: bytearray = field(default_factory=bytearray)
+    _skip_lf: bool = False
+    _queue: Deque[Pending] = field(default_factory=deque)
+
+    # -- writing ---------------------------------------------------------
+    def write_line(self, text: str) -> Pending:
+        """Sends one text line (the ending is added) and queues it for its
+        reply. Returns at once."""
+        p = Pending(text=text, sent_at=self.clock())
+        self._write(text.encode("ascii", "replace") + self.eol)
+        if text.strip():  # an empty line earns no reply
+            self._queue.append(p)
+        else:
+            p.abandoned = True
+        return p
+
+    def write_rc(self, chars: str) -> None:
+        """Sends RC-app bytes: no line ending, no reply expected."""
+        self._write(chars.encode("ascii", "replace"))
+
+    def write_raw(self, payload: str) -> List[Pending]:
+        """Sends bytes as they are; one queue entry per non-empty line they
+        end (bytes after the last line end are RC bytes or a line's start)."""
+        now = self.clock()
+        entries = [Pending(text=line, sent_at=now) for line in re.split(r"\r\n|\r|\n", payload)[:-1] if line]
+        self._write(payload.encode("latin-1", "replace"))
+        self._queue.extend(entries)
+        return entries
+
+    def _write(self, data: bytes) -> None:
+        try:
+            self.port.write(data)
+            self.port.flush()
+        except (serial.SerialException, OSError) as e:
+            raise LinkError(f"write failed: {e}") from e
+
+    # -- reading ---------------------------------------------------------
+    def poll(self, timeout: float = 0.0) -> List[Event]:
+        """Reads what arrived within `timeout` seconds (returns early once
+        at least one whole line is there) and returns the lines as events."""
+        deadline = self.clock() + timeout
+        events: List[Event] = []
+        while True:
+            self._read_some(max(0.0, deadline - self.clock()))
+            events.extend(self._take_lines())
+            if events or self.clock() >= deadline:
+                return events
+
+    def _read_some(self, wait: float) -> None:
+        try:
+            n = self.port.in_waiting
+            if n:
+                self._buf += self.port.read(n)
+                return
+            if wait <= 0:
+                return
+            # Blocks at most the port's own timeout (0.05 s from open_port).
+            chunk = self.port.read(1)
+            if chunk:
+                self._buf += chunk
+                n = self.port.in_waiting
+                if n:
+                    self._buf += self.port.read(n)
+        except (serial.SerialException, OSError) as e:
+            raise LinkError(f"read failed: {e}") from e
+
+    def _take_lines(self) -> List[Event]:
+        events = []
+        while True:
+            # A line ended by CR alone is taken at once; an LF right after it
+            # is then the rest of a CR LF, not an empty line.
+            if self._skip_lf and self._buf[:1] == b"\n":
+                del self._buf[:1]
+            if self._buf:
+                self._skip_lf = False
+            m = re.search(rb"\r\n|\n|\r", self._buf)
+            if not m:
+                return events
+            raw = bytes(self._buf[: m.start()])
+            self._skip_lf = m.group() == b"\r"
+            del self._buf[: m.end()]
+            line = raw.decode("ascii", "replace").strip()
+            if line:
+                events.append(self._classify(line))
+
+    def _classify(self, line: str) -> Event:
+        now = self.clock()
+        kind = kind_of(line)
+        ev = Event(time=now, kind=kind, line=line)
+        if kind in ("ok", "err"):
+            ev.reply = parse_reply(line)
+            self._forget_old(now)
+            req = self._match(ev.reply)
+            if req is not None:
+                req.reply = ev.reply
+                ev.request = req
+                ev.late = req.abandoned
+        elif kind == "info":
+            self.notices.append(ev)
+        if self.on_event is not None:
+            self.on_event(ev)
+        return ev
+
+    def _match(self, reply: Reply) -> Optional[Pending]:
+        """The request `reply` answers: the oldest waiting one, except that
+        abandoned requests it cannot answer are taken as lost lines and
+        dropped. None for a stray reply (fits no request)."""
+        for i, req in enumerate(self._queue):
+            if plausible(req.text, reply):
+                for _ in range(i):
+                    self._queue.popleft()
+                return self._queue.popleft()
+            if not req.abandoned:
+                return None
+        return None
+
+    def _forget_old(self, now: float) -> None:
+        while self._queue and self._queue[0].abandoned and now - self._queue[0].sent_at > self.forget_after_s:
+            self._queue.popleft()
+
+    @property
+    def waiting(self) -> int:
+        """Lines sent whose reply has not arrived."""
+        return len(self._queue)
+
+    # -- request/reply ---------------------------------------------------
+    def wait_reply(self, req: Pending, timeout: float = 2.0) -> Reply:
+        """Polls until `req` has its reply; ReplyTimeout after `timeout` s
+        (the request is then abandoned: its late reply will be dropped)."""
+        deadline = self.clock() + timeout
+        while req.reply is None:
+            left = deadline - self.clock()
+            if left <= 0:
+                req.abandoned = True
+                raise ReplyTimeout(f"no reply to {req.text!r} within {timeout:g} s")
+            self.poll(left)
+        return req.reply
+
+    def command(self, text: str, timeout: float = 2.0) -> Reply:
+        """Sends a text line and returns its reply (skipping info lines)."""
+        return self.wait_reply(self.write_line(text), timeout)
+
+    def wait_for(self, pattern: str, timeout: float) -> Optional[Event]:
+        """The first line matching regex `pattern` within `timeout` s, or None."""
+        rx = re.compile(pattern)
+        deadline = self.clock() + timeout
+        while True:
+            left = deadline - self.clock()
+            if left <= 0:
+                return None
+            for ev in self.poll(left):
+                if rx.search(ev.line):
+                    return ev
+
+    def probe(self, timeout: float, every: float = 0.5) -> bool:
+        """Sends `status` every `every` s until one is answered (a board
+        still booting ignores or garbles lines); False if none is within
+        `timeout` s. Probes still unanswered a moment later are forgotten,
+        so they cannot claim the reply of a later status."""
+        deadline = self.clock() + timeout
+        sent: List[Pending] = []
+        answered = False
+        while not answered and self.clock() < deadline:
+            sent.append(self.write_line("status"))
+            sent[-1].abandoned = True
+            next_at = min(deadline, self.clock() + every)
+            while not answered and self.clock() < next_at:
+                self.poll(next_at - self.clock())
+                answered = any(p.reply is not None for p in sent)
+        if answered:
+            # Lines queued while the board booted are answered one by one:
+            # wait while their replies keep coming.
+            settle = self.clock() + every
+            while self.clock() < settle and any(p.reply is None for p in sent):
+                before = sum(p.reply is not None for p in sent)
+                self.poll(settle - self.clock())
+                if sum(p.reply is not None for p in sent) > before:
+                    settle = self.clock() + every
+        ids = {id(p) for p in sent}
+        self._queue = deque(q for q in self._queue if id(q) not in ids)
+        return answered
+
+    def wait_ready(self, timeout: float) -> bool:
+        """For a board that is booting now: waits for its boot line
+        (`info strider <model> ready`), then checks that it answers. Lines
+        sent during boot pile up in the UART and, on some firmware builds,
+        have upset the start-up, so nothing is sent before the boot line
+        unless it never comes (then `status` is probed as a last resort)."""
+        deadline = self.clock() + timeout
+        self.wait_for(r"^info strider .*ready", timeout)  # missed (already booted?): probing decides
+        return self.probe(max(1.0, deadline - self.clock()))
+
+    def close(self) -> None:
+        try:
+            self.port.close()
+        except Exception:  # closing a broken port must not hide the real error
+            pass
+
+
+def open_port(url: str, baud: int = 9600, timeout: float = 0.05) -> "serial.SerialBase":
+    """A pyserial port for a device path (/dev/ttyACM0, /dev/rfcomm0, a pty
+    printed by `vbench --pty`) or a pyserial URL (loop://, socket://...)."""
+    try:
+        return serial.serial_for_url(url, baudrate=baud, timeout=timeout, write_timeout=5)
+    except (serial.SerialException, OSError, ValueError) as e:
+        raise LinkError(f"cannot open {url}: {e}") from e

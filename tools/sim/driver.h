@@ -1,0 +1,54 @@
+// Driver: what runs the robot's control code in lock-step with the world.
+// Two implementations produce the same thing, a pulse width per global
+// PCA9685 channel: LibraryDriver (lib/strider's RobotApp compiled natively)
+// and FirmwareDriver (the firmware ELF on a simulated ATmega2560).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "robots/robot_model.h"
+#include "servo_model.h"
+
+namespace strider_sim {
+
+// The HC-SR04's view of the world: distance to the nearest echo [mm], or a
+// negative value when nothing is within range. Called when the robot pings.
+using RangeFn = std::function<double()>;
+
+class Driver {
+ public:
+  virtual ~Driver() = default;
+  virtual const char* mode() const = 0;  // "library" or "firmware"
+  // Power-up at simulated time 0. False (and *error) when the robot cannot run.
+  virtual bool begin(std::string* error) = 0;
+  // Queues bytes on the Bluetooth link, arriving from at_us on at the link's
+  // baud rate (9600 by default: 1.04 ms per byte).
+  virtual void send(const std::string& bytes, uint64_t at_us) = 0;
+  // Runs the robot's controller up to simulated time now_us.
+  virtual void advance_to(uint64_t now_us) = 0;
+  // What every channel sends now (kMaxChannels entries).
+  virtual const ChannelPulse* pulses() const = 0;
+  // Lines the robot sent on either port since the last call (without endings).
+  virtual std::vector<std::string> take_lines() = 0;
+  // The gait engine's own odometry (dead reckoning from the commanded feet):
+  // only the library driver can see it. x, y [mm], yaw [rad].
+  virtual bool odometry(double* x_mm, double* y_mm, double* yaw_rad) const {
+    (void)x_mm, (void)y_mm, (void)yaw_rad;
+    return false;
+  }
+};
+
+// The library: strider::RobotApp<float> with an in-memory EEPROM (erased,
+// so the robot boots on default settings) and a PCA9685 with oscillator osc_hz.
+std::unique_ptr<Driver> make_library_driver(const strider::RobotModel& model, double osc_hz, RangeFn range);
+
+// The firmware ELF on the virtual Mega; nullptr and *error when this build
+// has no virtual Mega or the ELF does not load.
+std::unique_ptr<Driver> make_firmware_driver(const std::string& elf_path, const strider::RobotModel& model,
+                                             double osc_hz, RangeFn range, std::string* error);
+
+}  // namespace strider_sim

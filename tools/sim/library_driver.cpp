@@ -1,0 +1,162 @@
+// LibraryDriver: the firmware's own control chain, compiled for the host:
+// Bluetooth bytes -> strider::RobotApp (parser, controller, walker, servo
+// stage) -> ServoOutput calls -> PCA9685 registers -> pulse widths.
+#include <deque>
+
+#include "control/robot_app.h"
+#include "driver.h"
+
+namespace strider_sim {
+
+namespace {
+
+constexpr uint8_t kBluetoothPort = 1;
+constexpr double kBaud = 9600;                     // HC-05 default
+constexpr double kByteUs = 10.0 * 1e6 / kBaud;     // start + 8 data + stop bits
+constexpr double kNoEchoUs = 38000;                // HC-SR04's "nothing in range" pulse
+constexpr double kUsPerMmRoundTrip = 2.0 / 0.343;  // sound at 343 m/s, out and back
+
+// The PCA9685 boards as the ServoOutput concept sees them: 12-bit off
+// counts per channel and the prescale; pulse widths follow from the
+// simulated oscillator, as on a real board.
+struct PcaBoards {
+  uint16_t ticks[kMaxChannels] = {};
+  bool on[kMaxChannels] = {};
+  uint8_t prescale = 121;
+  void write_ticks(uint8_t ch, uint16_t off_ticks) {
+    if (ch >= kMaxChannels) return;
+    ticks[ch] = off_ticks;
+    on[ch] = true;
+  }
+  void set_prescale(uint8_t p) { prescale = p; }
+  void relax(uint8_t ch) {
+    if (ch < kMaxChannels) on[ch] = false;
+  }
+  void flush() {}
+};
+
+struct Lines {
+  std::vector<std::string>* out;
+  void send_line(uint8_t /*port*/, const char* line) { out->push_back(line); }
+};
+
+using Store = strider::ArrayByteStore<4096>;
+using App = strider::RobotApp<float, PcaBoards, Store>;
+
+struct Parts {
+  PcaBoards boards;
+  Store store;
+  Parts() { store.erase(); }  // a new Mega: blank EEPROM, default settings
+};
+
+class LibraryDriver : public Driver, private Parts {
+ public:
+  LibraryDriver(const strider::RobotModel& model, double osc_hz, RangeFn range)
+      : app_(model, boards, store), osc_hz_(osc_hz), range_(std::move(range)) {}
+
+  const char* mode() const override { return "library"; }
+
+  bool begin(std::string* error) override {
+    Lines link{&lines_};
+    if (!app_.begin(0, link)) {
+      *error = lines_.empty() ? "robot did not start" : lines_.back();
+      return false;
+    }
+    update_pulses();
+    return true;
+  }
+
+  void send(const std::string& bytes, uint64_t at_us) override {
+    double t = std::max(double(at_us), next_byte_us_);
+    for (char c : bytes) {
+      rx_.push_back({uint64_t(t), uint8_t(c)});
+      t += kByteUs;
+    }
+    next_byte_us_ = t;
+  }
+
+  void advance_to(uint64_t now_us) override {
+    Lines link{&lines_};
+    for (;;) {
+      const uint64_t byte_at = rx_.empty() ? UINT64_MAX : rx_.front().at_us;
+      const uint64_t next = std::min(byte_at, next_tick_us_);
+      if (next > now_us) break;
+      if (byte_at <= next_tick_us_) {
+        app_.on_byte(kBluetoothPort, rx_.front().byte, uint32_t(byte_at), link);
+        rx_.pop_front();
+        continue;
+      }
+      tick(next_tick_us_, link);
+      next_tick_us_ += strider::kTickPeriodUs;
+    }
+  }
+
+  const ChannelPulse* pulses() const override { return pulses_; }
+
+  std::vector<std::string> take_lines() override {
+    std::vector<std::string> out;
+    out.swap(lines_);
+    return out;
+  }
+
+  bool odometry(double* x_mm, double* y_mm, double* yaw_rad) const override {
+    const auto& e = app_.motion().walker().engine();
+    *x_mm = double(e.odometry_x());
+    *y_mm = double(e.odometry_y());
+    *yaw_rad = double(e.odometry_yaw());
+    return true;
+  }
+
+ private:
+  struct Rx {
+    uint64_t at_us;
+    uint8_t byte;
+  };
+
+  void tick(uint64_t t_us, Lines& link) {
+    const uint32_t now = uint32_t(t_us);
+    // The echo of the last ping is measured by the time its pulse ends.
+    if (echo_pending_ && double(t_us) >= echo_at_us_) {
+      strider::EchoSample s{strider::EchoKind::kEcho, uint16_t(echo_width_us_), uint32_t(ping_us_)};
+      app_.sonar().add(s, now);
+      echo_pending_ = false;
+    }
+    if (!echo_pending_ && app_.sonar().ping_due(now)) {
+      const double d = range_ ? range_() : -1.0;
+      echo_width_us_ = d < 0 ? kNoEchoUs : d * kUsPerMmRoundTrip;
+      ping_us_ = t_us;
+      echo_at_us_ = double(t_us) + echo_width_us_;
+      echo_pending_ = true;
+    }
+    app_.tick(now, link);
+    update_pulses();
+  }
+
+  void update_pulses() {
+    const double tick_us = (double(boards.prescale) + 1.0) * 1e6 / osc_hz_;
+    for (int ch = 0; ch < kMaxChannels; ++ch) {
+      pulses_[ch].on = boards.on[ch];
+      pulses_[ch].pulse_us = double(boards.ticks[ch]) * tick_us;
+    }
+  }
+
+  App app_;
+  double osc_hz_;
+  RangeFn range_;
+  std::deque<Rx> rx_;
+  double next_byte_us_ = 0;
+  uint64_t next_tick_us_ = strider::kTickPeriodUs;
+  std::vector<std::string> lines_;
+  ChannelPulse pulses_[kMaxChannels];
+  bool echo_pending_ = false;
+  double echo_at_us_ = 0, echo_width_us_ = 0;
+  uint64_t ping_us_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Driver> make_library_driver(const strider::RobotModel& model, double osc_hz, RangeFn range) {
+  return std::unique_ptr<Driver>(new LibraryDriver(model, osc_hz, std::move(range)));
+}
+
+}  // namespace strider_sim

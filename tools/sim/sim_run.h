@@ -1,0 +1,81 @@
+// run_scenario: one scenario in one world with one driver, stepped in
+// lock-step (the controller runs up to each physics step's time, then the
+// world steps with the pulses it produced), and the metrics of the run.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scenario.h"
+#include "world.h"
+
+namespace strider_sim {
+
+struct RunOptions {
+  std::string firmware_elf;     // empty: library mode
+  WorldConfig world;
+  double trace_period_s = 0.02; // one trace row per control tick
+};
+
+struct TraceRow {
+  double t_s = 0;
+  BodyState body;               // yaw unwrapped
+  std::vector<double> q_deg;    // joint k = leg * dof + j, seed convention
+  std::vector<double> target_deg;
+  std::vector<Vec> feet_mm;
+  std::vector<bool> contact;
+  Vec com_mm;                   // whole robot's centre of mass, world [mm]
+  double sonar_mm = -1;
+  double clearance_mm = -1;     // body box to the nearest obstacle; -1 without obstacles
+  double odo_x_mm = 0, odo_y_mm = 0, odo_yaw_deg = 0;
+};
+
+struct Metrics {
+  std::string robot, mode;
+  double distance_mm = 0;         // start -> end, horizontal
+  double path_mm = 0;             // along the trace
+  double speed_mm_s = 0;          // best 2 s window: displacement / 2 s
+  double mean_speed_mm_s = 0;     // distance / duration
+  double heading_change_deg = 0;  // unwrapped, anticlockwise positive
+  double yaw_rate_deg_s = 0;      // best 2 s window of |heading change| / 2 s
+  double turn_360_s = -1;         // first turn past 1 deg -> 360 deg; -1: never
+  double lateral_drift_mm = 0;    // off the main axis of the motion (body frame at the start)
+  double max_tilt_deg = 0;
+  bool fell = false;
+  bool has_obstacles = false;
+  double min_clearance_mm = 0;        // body box
+  double min_robot_clearance_mm = 0;  // any part
+  int collisions = 0;
+  double ready_s = 0;               // metrics start: stood up and settled after the power-up, or the first motion command
+  double sim_time_s = 0, wall_time_s = 0, cpu_time_s = 0;
+  double real_time_factor = 0;      // simulated / CPU time of this process (one core)
+  bool has_odometry = false;
+  double odometry_mm = 0;          // the gait engine's dead reckoning (library mode)
+  double odometry_error_pct = 0;   // (odometry - distance along it) / odometry * 100 (seed 003 eq 16)
+  double final_x_mm = 0, final_y_mm = 0, final_yaw_deg = 0;
+  int replies_ok = 0, replies_err = 0;
+};
+
+struct LogLine {
+  double t_s;
+  std::string text;
+};
+
+struct RunResult {
+  bool ok = false;
+  std::string error;
+  Metrics metrics;
+  int legs = 0, dof = 0;
+  std::vector<TraceRow> trace;
+  std::vector<LogLine> log;  // every line the robot sent
+  std::vector<ObstacleBox> obstacles;
+  std::string scene_json;    // what a renderer needs: body, hips, obstacles
+};
+
+RunResult run_scenario(const Scenario& scenario, const RunOptions& options);
+
+// DIR/metrics.json, DIR/trace.csv, DIR/robot.log, DIR/scene.json (creates DIR).
+bool write_outputs(const RunResult& r, const std::string& dir, std::string* error);
+std::string metrics_json(const Metrics& m);
+
+}  // namespace strider_sim

@@ -1,0 +1,161 @@
+// vbench script parsing (see script.h).
+#include "script.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "virtual_mega.h"
+
+namespace strider_vmega {
+
+namespace {
+
+bool parse_number(const std::string& s, double* v) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  *v = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && std::isfinite(*v);
+}
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// Splits off the first whitespace-delimited word of *rest.
+std::string take_word(std::string* rest) {
+  size_t b = rest->find_first_not_of(" \t");
+  if (b == std::string::npos) {
+    rest->clear();
+    return std::string();
+  }
+  size_t e = rest->find_first_of(" \t", b);
+  std::string word = rest->substr(b, e == std::string::npos ? std::string::npos : e - b);
+  *rest = e == std::string::npos ? std::string() : rest->substr(e + 1);
+  return word;
+}
+
+}  // namespace
+
+bool unescape(const std::string& in, std::string* out, std::string* error) {
+  out->clear();
+  for (size_t i = 0; i < in.size(); ++i) {
+    if (in[i] != '\\') {
+      out->push_back(in[i]);
+      continue;
+    }
+    if (++i >= in.size()) {
+      *error = "backslash at end of text";
+      return false;
+    }
+    switch (in[i]) {
+      case 'n': out->push_back('\n'); break;
+      case 'r': out->push_back('\r'); break;
+      case 't': out->push_back('\t'); break;
+      case '\\': out->push_back('\\'); break;
+      case 'x': {
+        const int hi = i + 1 < in.size() ? hex_digit(in[i + 1]) : -1;
+        const int lo = i + 2 < in.size() ? hex_digit(in[i + 2]) : -1;
+        if (hi < 0 || lo < 0) {
+          *error = "\\x needs two hex digits";
+          return false;
+        }
+        out->push_back(char(hi * 16 + lo));
+        i += 2;
+        break;
+      }
+      default:
+        *error = std::string("unknown escape \\") + in[i];
+        return false;
+    }
+  }
+  return true;
+}
+
+bool parse_script_line(const std::string& raw, ScriptEvent* event, bool* has_event, std::string* error) {
+  *has_event = false;
+  std::string line = raw;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  std::string rest = line;
+  std::string word = take_word(&rest);
+  if (word.empty() || word[0] == '#') return true;
+  ScriptEvent ev;
+  ev.immediate = true;
+  if (word == "at") {
+    double t = 0;
+    if (!parse_number(take_word(&rest), &t) || t < 0) {
+      *error = "`at` needs a time in seconds >= 0";
+      return false;
+    }
+    ev.immediate = false;
+    ev.time_us = uint64_t(std::llround(t * 1e6));
+    word = take_word(&rest);
+  }
+  if (word == "send" || word == "send0" || word == "send1") {
+    ev.kind = ScriptEvent::Kind::kSend;
+    ev.uart = word == "send0" ? 0 : 1;
+    // The text is everything after one separating space, kept verbatim.
+    if (!unescape(rest, &ev.text, error)) return false;
+    if (ev.text.empty()) {
+      *error = "send needs text";
+      return false;
+    }
+  } else if (word == "range") {
+    ev.kind = ScriptEvent::Kind::kRange;
+    const std::string v = take_word(&rest);
+    if (v == "none") {
+      ev.range_mm = -1;
+    } else if (!parse_number(v, &ev.range_mm) || ev.range_mm < 0) {
+      *error = "range needs millimetres >= 0 or `none`";
+      return false;
+    }
+  } else if (word == "reset") {
+    ev.kind = ScriptEvent::Kind::kReset;
+  } else {
+    *error = "unknown directive `" + word + "`";
+    return false;
+  }
+  if (ev.kind != ScriptEvent::Kind::kSend && !take_word(&rest).empty()) {
+    *error = "extra words after `" + word + "`";
+    return false;
+  }
+  *event = ev;
+  *has_event = true;
+  return true;
+}
+
+bool parse_script(const std::string& text, std::vector<ScriptEvent>* events, std::string* error) {
+  std::istringstream in(text);
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    ScriptEvent ev;
+    bool has = false;
+    std::string why;
+    if (!parse_script_line(line, &ev, &has, &why)) {
+      *error = "line " + std::to_string(n) + ": " + why;
+      return false;
+    }
+    if (!has) continue;
+    ev.line = n;
+    events->push_back(ev);
+  }
+  std::stable_sort(events->begin(), events->end(),
+                   [](const ScriptEvent& a, const ScriptEvent& b) { return a.time_us < b.time_us; });
+  return true;
+}
+
+void apply_event(const ScriptEvent& event, VirtualMega& mega) {
+  switch (event.kind) {
+    case ScriptEvent::Kind::kSend: mega.send(event.uart, event.text); break;
+    case ScriptEvent::Kind::kRange: mega.set_range_mm(event.range_mm); break;
+    case ScriptEvent::Kind::kReset: mega.reset(); break;
+  }
+}
+
+}  // namespace strider_vmega

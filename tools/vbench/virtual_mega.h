@@ -1,0 +1,168 @@
+// VirtualMega: an ATmega2560 at 16 MHz on libsimavr with what a Strider robot
+// wires to it: PCA9685 boards on TWI, the HC-05 on a UART, the HC-SR04 on
+// PE5 (trigger) / PE4 (echo, INT4), EEPROM kept in a file, and a reset
+// counter. Time only moves inside run_until_us()/run_for_us(), so a physics
+// simulator can advance the firmware in lock-step with its own steps.
+#ifndef STRIDER_TOOLS_VBENCH_VIRTUAL_MEGA_H
+#define STRIDER_TOOLS_VBENCH_VIRTUAL_MEGA_H
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pca9685.h"
+
+namespace strider_vmega {
+
+struct Options {
+  std::string elf_path;
+  uint32_t f_cpu_hz = 16000000;
+  //! 7-bit addresses of the PCA9685 boards; board i drives global channels 16i..16i+15.
+  std::vector<uint8_t> pca_addresses = {0x40, 0x41};
+  //! Oscillator of every board [Hz] (a real board: 23-27 MHz).
+  double pca_osc_hz = 25e6;
+  //! Per-board oscillators [Hz], overriding pca_osc_hz where given.
+  std::vector<double> pca_osc_per_board_hz;
+  //! EEPROM image loaded at load() when the file exists (missing = erased, 0xFF).
+  std::string eeprom_path;
+  //! Sonar: HC-SR04 echo rises this long after the trigger's falling edge [us].
+  uint32_t sonar_echo_delay_us = 460;
+  //! Initial sonar range [mm]; negative = no echo (the line stays low).
+  double sonar_range_mm = -1;
+  //! The pulse and I2C logs drop their older half beyond this many entries
+  //! (long lock-step runs); clear them after reading to keep everything.
+  size_t log_limit = 1000000;
+};
+
+//! A pulse-width change on a PCA9685 output.
+struct PulseChange {
+  uint64_t time_us;
+  int channel;      // global: 16 * board + channel
+  double width_us;  // 0 = off
+};
+
+//! One I2C transaction, START to STOP (a repeated START starts a new one).
+struct I2cTransaction {
+  uint64_t start_us = 0;
+  uint8_t address7 = 0;
+  bool read = false;
+  bool acked = false;
+  int bytes = 0;  // address byte included
+};
+
+//! I2C traffic of one servo frame: transactions closer than the frame gap.
+struct I2cFrame {
+  uint64_t start_us = 0;
+  int transactions = 0;
+  int bytes = 0;
+  //! Bus time at bus_hz: 9 clocks per byte plus START and STOP [us].
+  double bus_time_us(double bus_hz = 400e3) const {
+    return (9.0 * bytes + 2.0 * transactions) * 1e6 / bus_hz;
+  }
+};
+
+//! A byte the firmware wrote to a UART.
+struct UartByte {
+  uint64_t time_us;
+  uint8_t value;
+};
+
+enum class RunStatus {
+  kOk,          // reached the requested time
+  kStopped,     // the firmware stopped the CPU (cli; sleep)
+  kCrashed,     // simavr reported a crash
+  kNotLoaded,
+};
+
+const char* to_string(RunStatus s);
+
+class VirtualMega {
+ public:
+  VirtualMega();
+  ~VirtualMega();
+  VirtualMega(const VirtualMega&) = delete;
+  VirtualMega& operator=(const VirtualMega&) = delete;
+
+  //! Loads the ELF into a fresh ATmega2560; false and *error on failure.
+  bool load(const Options& options, std::string* error);
+  bool loaded() const;
+
+  //! Advances simulated time to t_us: stops at the first instruction boundary
+  //! at or after it (a sleeping CPU wakes there too); never hangs.
+  RunStatus run_until_us(uint64_t t_us);
+  RunStatus run_for_us(uint64_t dt_us) { return run_until_us(now_us() + dt_us); }
+  uint64_t now_us() const;
+  uint64_t cycles() const;
+
+  // UARTs (0 = USB, 1 = HC-05). Queued bytes go in at the baud the firmware
+  // programmed, never more than simavr's 64-byte receive FIFO holds; they
+  // wait while the receiver is disabled.
+  void send(int uart, const std::string& bytes);
+  size_t pending_input(int uart) const;
+  //! Bytes the firmware wrote since the last call.
+  std::string take_output(int uart);
+  //! Called for every byte the firmware writes (in addition to take_output).
+  void set_output_callback(std::function<void(int uart, const UartByte&)> cb);
+  //! Baud rate the firmware programmed (0 before it did).
+  uint32_t baud(int uart) const;
+
+  // PCA9685 boards.
+  int board_count() const;
+  const Pca9685& board(int i) const;
+  //! Pulse width of a global channel [us], 0 = off/full-off/asleep.
+  double pulse_us(int channel) const;
+  std::vector<double> pulses_us() const;
+  const std::vector<PulseChange>& pulse_log() const;
+  void clear_pulse_log();
+  const std::vector<I2cTransaction>& i2c_log() const;
+  void clear_i2c_log();
+  //! Groups the logged transactions into frames separated by > gap_us of silence.
+  std::vector<I2cFrame> i2c_frames(uint64_t gap_us = 5000) const;
+
+  // HC-SR04.
+  void set_range_mm(double mm);
+  void set_no_echo();
+  int sonar_triggers() const;       // accepted trigger pulses (>= 10 us)
+  int sonar_short_triggers() const;  // pulses too short to trigger
+  //! Shortest time between two accepted triggers [us] (0 before two).
+  uint64_t sonar_min_trigger_interval_us() const;
+
+  // EEPROM (4 KiB).
+  std::vector<uint8_t> eeprom() const;
+  void set_eeprom(const std::vector<uint8_t>& bytes);
+  bool load_eeprom(const std::string& path, std::string* error);
+  bool save_eeprom(const std::string& path, std::string* error) const;
+
+  // Resets.
+  //! External reset (the RESET pin): counted separately from the others.
+  void reset();
+  //! Resets the host did not cause: watchdog, a jump to the reset vector.
+  int unexpected_resets() const;
+  int external_resets() const;
+
+  // GPIO.
+  //! Level an output pin drives (port 'A'..'L', bit 0..7); false for inputs.
+  bool pin_output(char port, int bit) const;
+  //! Level changes of the LED on D13 (PB7) since load.
+  int led_toggles() const;
+  //! Data-space bytes (registers, I/O, SRAM) for inspection, e.g. a
+  //! variable at an address from avr-nm.
+  std::vector<uint8_t> read_ram(uint16_t address, uint16_t count) const;
+  //! Deepest stack seen since load: RAMEND - lowest SP [bytes].
+  uint32_t stack_peak_bytes() const;
+  //! .data + .bss of the firmware [bytes].
+  uint32_t static_ram_bytes() const;
+  //! When the stack first grew into .bss [us]; 0 = never.
+  uint64_t stack_overflow_us() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace strider_vmega
+
+#endif  // STRIDER_TOOLS_VBENCH_VIRTUAL_MEGA_H
