@@ -156,7 +156,7 @@ struct AbductionLeg {
     // Fixed's fast path (always false for float): an exact solve, so q can
     // take it directly; it writes q only when it succeeds.
     if (!(opt.max_clamp_mm < S(0)) && leg_ik::abduction_solve_fast(*this, target, q)) {
-      if (!limits.contains(q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
+      if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
       leg_ik::copy_point(target, reached);  // what finish() does for an exact solve inside the limits
       return IkStatus::kOk;
     }

@@ -106,7 +106,7 @@ struct CoxaFemurTibiaLeg {
     // writes q only when it succeeds, and every exit below then writes q
     // anyway, so it solves into q directly (no zeroed copy to fill and move).
     if (!(opt.max_clamp_mm < S(0)) && leg_ik::cft_solve_fast(*this, target, q)) {
-      if (!limits.contains(q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
+      if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
       // What finish() does for an exact solve inside the limits; field by
       // field, as avr-gcc copies a whole Vec3 with a byte loop.
       reached.x = target.x;

@@ -184,6 +184,15 @@ bool within_limits(const JointLimits<S, N>& lim, const JointVector<S, N>& q) {
   return true;
 }
 
+//! JointLimits::contains for the fast paths, always inlined (avr-gcc at
+//! -Os otherwise calls it from the larger solvers).
+template <typename S, uint8_t N>
+STRIDER_ALWAYS_INLINE bool limits_contain(const JointLimits<S, N>& lim, const JointVector<S, N>& q) {
+  for (uint8_t i = 0; i < N; ++i)
+    if (q[i] < lim.lo[i] || lim.hi[i] < q[i]) return false;
+  return true;
+}
+
 //! reached = p field by field: avr-gcc copies a whole Vec3 with a byte loop.
 template <typename S>
 STRIDER_ALWAYS_INLINE void copy_point(const Vec3<S>& p, Vec3<S>& reached) {

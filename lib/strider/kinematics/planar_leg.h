@@ -65,7 +65,7 @@ struct PlanarLeg {
               const IkOptions<S>& opt = IkOptions<S>()) const {
     Joints sol;
     if (solve_fast(target, sol) && !(opt.max_clamp_mm < S(0))) {  // Fixed, strictly inside the annulus
-      if (!limits.contains(sol)) return leg_ik::finish(*this, target, sol, false, opt, q, reached);
+      if (!leg_ik::limits_contain(limits, sol)) return leg_ik::finish(*this, target, sol, false, opt, q, reached);
       q = sol;  // what finish() does for an exact solve inside the limits
       reached = target;
       return IkStatus::kOk;
