@@ -86,14 +86,14 @@ STRIDER_ALWAYS_INLINE bool abduction_solve_fast(const Leg& leg, const Vec3<Fixed
   if (a2 <= la2) return false;
   const uint32_t p2 = a2 - la2;
   if (p2 < 0x10000UL || p2 >= 0x40000000UL) return false;
-  const int32_t p = wide::sqrt_sq(p2);
+  const int32_t p = wide::sqrt_sq_call(p2);
   Fixed t2, t3;
   if (!solve_wide(leg.link, -x, p, KneeBranch::kPositive, t2, t3)) return false;  // back = -x, down = p
   // (y, z) turned by +alpha3 (left) or -alpha3 (right), alpha3 = atan2(p, La)
   // in [0, pi/2]; then algorithm 1's range [0, 2 pi).
   const int32_t la = wide::from_unit(leg.la_fine) >> 3;
-  const int32_t turn = detail::atan2_lean_raw(p, la);
-  int32_t t1 = detail::atan2_lean_raw(z, y);
+  const int32_t turn = detail::atan2_lean_call(p, la);
+  int32_t t1 = detail::atan2_lean_call(z, y);
   t1 = leg.side == LegSide::kLeft ? t1 + turn : t1 - turn;
   const int32_t two_pi_raw = two_pi<Fixed>().raw();
   if (t1 < 0) t1 += two_pi_raw;
