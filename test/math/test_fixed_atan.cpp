@@ -112,6 +112,41 @@ TEST(FixedAtan2, Symmetries) {
   }
 }
 
+// The leg solvers' atan2 (detail::atan2_lean_raw; on the AVR an assembly
+// kernel that test_avr_exact holds bit-identical to this C path): the
+// documented bound of 6e-5 rad for pairs of every magnitude and sign, plus
+// the circle sweep near the diagonal, where its ratio nears 1.
+TEST(FixedAtan2Lean, RandomPairsCirclesAndEdges) {
+  constexpr double kLeanBound = 6e-5;  // docs/fixed-point.md, "Leg IK fast path"
+  auto lean_error = [](int32_t y, int32_t x) {
+    const long double exact = std::atan2(static_cast<long double>(y), static_cast<long double>(x));
+    return static_cast<double>(strider_test::angle_diff(raw_to_ld(strider::detail::atan2_lean_raw(y, x)), exact));
+  };
+  MaxError err("Fixed lean atan2 (leg solvers), random pairs, circles, edges");
+  Xorshift rng(4242);
+  for (int i = 0; i < STRIDER_RANDOM_CASES * 1000; ++i) {
+    const int32_t y = rng.raw_any(), x = rng.raw_any();
+    err.add(lean_error(y, x), y, x);
+  }
+  for (int e = -14; e <= 14; ++e) {
+    const long double r = std::ldexp(1.0L, e) * 1.37L;
+    for (int k = -2048; k <= 2048; ++k) {
+      const long double th = k * kPiL / 2048;
+      const int32_t x = static_cast<int32_t>(std::lround(r * std::cos(th) * 65536.0L));
+      const int32_t y = static_cast<int32_t>(std::lround(r * std::sin(th) * 65536.0L));
+      err.add(lean_error(y, x), y, x);
+    }
+  }
+  const int32_t edges[] = {0, 1, -1, 0x7FFFFF, 0x1000000, -0x1000000, Fixed::kMaxRaw, Fixed::kMinRaw, 12345678};
+  for (int32_t y : edges)
+    for (int32_t x : edges) err.add(lean_error(y, x), y, x);
+  err.expect_below(kLeanBound);
+  EXPECT_EQ(strider::detail::atan2_lean_raw(0, 0), 0);
+  EXPECT_EQ(strider::detail::atan2_lean_raw(0, -5), kPiRaw);
+  EXPECT_NEAR(strider::detail::atan2_lean_raw(7, 0), kHalfPiRaw, 1);  // pi/2 truncated in the fold
+  EXPECT_EQ(strider::detail::atan2_lean_raw(-7, 0), -strider::detail::atan2_lean_raw(7, 0));
+}
+
 TEST(FixedAsinAcos, EdgeTable) {
   EXPECT_EQ(strider::asin(Fixed(0)).raw(), 0);
   EXPECT_EQ(strider::acos(Fixed(0)).raw(), kHalfPiRaw);

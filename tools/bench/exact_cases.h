@@ -138,6 +138,20 @@ void exact_functions(Sink& out) {
     if (m < 0x40000000UL) m = 0x40000000UL;
     emit(out, int32_t(m), int32_t(strider::detail::isqrt_q22(m)));
   }
+  // The two-link solver's sqrt(p q) (an AVR assembly kernel against the
+  // host's C): p and q of every magnitude, so the final shift goes both ways.
+  out.section(STRIDER_BENCH_STR("wide_sqrt_product"));
+  for (uint8_t k = 0; k < 4 * kExactRandomCases; ++k) {
+    uint32_t p = uint32_t(rng.next()) >> (rng.next() % 32u);
+    uint32_t q = uint32_t(rng.next()) >> (rng.next() % 32u);
+    if (k < 4) {  // the corners
+      p = (k & 1) ? 0xFFFFFFFFUL : 1u;
+      q = (k & 2) ? 0xFFFFFFFFUL : 1u;
+    }
+    if (p == 0) p = 1;
+    if (q == 0) q = 3;
+    emit(out, int32_t(p), int32_t(q), int32_t(strider::leg_ik::wide::sqrt_product(p, q)));
+  }
   // The leg solvers' atan2 (an AVR assembly kernel against the host's C):
   // the edges, then pairs of every magnitude (a random shift of random
   // bits), half of them near the diagonal, where the ratio nears 1.

@@ -86,14 +86,14 @@ STRIDER_ALWAYS_INLINE bool abduction_solve_fast(const Leg& leg, const Vec3<Fixed
   if (a2 <= la2) return false;
   const uint32_t p2 = a2 - la2;
   if (p2 < 0x10000UL || p2 >= 0x40000000UL) return false;
-  const int32_t p = wide::sqrt_sq(p2);
+  const int32_t p = wide::sqrt_sq_call(p2);
   Fixed t2, t3;
   if (!solve_wide(leg.link, -x, p, KneeBranch::kPositive, t2, t3)) return false;  // back = -x, down = p
   // (y, z) turned by +alpha3 (left) or -alpha3 (right), alpha3 = atan2(p, La)
   // in [0, pi/2]; then algorithm 1's range [0, 2 pi).
   const int32_t la = wide::from_unit(leg.la_fine) >> 3;
-  const int32_t turn = detail::atan2_lean_raw(p, la);
-  int32_t t1 = detail::atan2_lean_raw(z, y);
+  const int32_t turn = detail::atan2_lean_call(p, la);
+  int32_t t1 = detail::atan2_lean_call(z, y);
   t1 = leg.side == LegSide::kLeft ? t1 + turn : t1 - turn;
   const int32_t two_pi_raw = two_pi<Fixed>().raw();
   if (t1 < 0) t1 += two_pi_raw;
@@ -142,10 +142,11 @@ struct AbductionLeg {
   Vec3<S> fk(const Joints& q) const {
     const S c1 = cos(q[0]), s1 = sin(q[0]);
     const S t23 = q[1] + q[2];
-    const S xp = -(lb_mm * cos(q[1]) + lc_mm * cos(t23));
-    S d = lb_mm * sin(q[1]) + lc_mm * sin(t23);
+    using leg_ik::mul_unit;  // a * s, cheaper for Fixed
+    const S xp = -(mul_unit(lb_mm, cos(q[1])) + mul_unit(lc_mm, cos(t23)));
+    S d = mul_unit(lb_mm, sin(q[1])) + mul_unit(lc_mm, sin(t23));
     if (side == LegSide::kRight) d = -d;  // w_right = -w_left
-    return Vec3<S>(xp, la_mm * c1 + d * s1, la_mm * s1 - d * c1);
+    return Vec3<S>(xp, mul_unit(la_mm, c1) + mul_unit(d, s1), mul_unit(la_mm, s1) - mul_unit(d, c1));
   }
 
   //! Seed 001 eqs 4.1-4.21 and algorithm 1 (see the header comment), then
@@ -155,7 +156,7 @@ struct AbductionLeg {
     // Fixed's fast path (always false for float): an exact solve, so q can
     // take it directly; it writes q only when it succeeds.
     if (!(opt.max_clamp_mm < S(0)) && leg_ik::abduction_solve_fast(*this, target, q)) {
-      if (!limits.contains(q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
+      if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
       leg_ik::copy_point(target, reached);  // what finish() does for an exact solve inside the limits
       return IkStatus::kOk;
     }

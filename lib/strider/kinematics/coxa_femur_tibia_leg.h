@@ -91,8 +91,10 @@ struct CoxaFemurTibiaLeg {
   //! Seed 002 eqs 5-7.
   Vec3<S> fk(const Joints& q) const {
     const S t23 = q[1] + q[2];
-    const S reach = tibia_mm * cos(t23) + femur_mm * cos(q[1]) + coxa_mm;
-    return Vec3<S>(cos(q[0]) * reach, sin(q[0]) * reach, tibia_mm * sin(t23) + femur_mm * sin(q[1]) + d1_mm);
+    using leg_ik::mul_unit;  // a * s, cheaper for Fixed
+    const S reach = mul_unit(tibia_mm, cos(t23)) + mul_unit(femur_mm, cos(q[1])) + coxa_mm;
+    return Vec3<S>(mul_unit(reach, cos(q[0])), mul_unit(reach, sin(q[0])),
+                   mul_unit(tibia_mm, sin(t23)) + mul_unit(femur_mm, sin(q[1])) + d1_mm);
   }
 
   //! Seed 002 eqs 11-12 and the two-link solution, then reachability and
@@ -104,7 +106,7 @@ struct CoxaFemurTibiaLeg {
     // writes q only when it succeeds, and every exit below then writes q
     // anyway, so it solves into q directly (no zeroed copy to fill and move).
     if (!(opt.max_clamp_mm < S(0)) && leg_ik::cft_solve_fast(*this, target, q)) {
-      if (!limits.contains(q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
+      if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
       // What finish() does for an exact solve inside the limits; field by
       // field, as avr-gcc copies a whole Vec3 with a byte loop.
       reached.x = target.x;

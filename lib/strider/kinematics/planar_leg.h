@@ -54,7 +54,9 @@ struct PlanarLeg {
   //! Seed 003 eq 3 (the position column of eq 2's A1 A2).
   Vec3<S> fk(const Joints& q) const {
     const S t12 = q[0] + q[1];
-    return Vec3<S>(a1_mm * cos(q[0]) + a2_mm * cos(t12), S(0), a1_mm * sin(q[0]) + a2_mm * sin(t12));
+    using leg_ik::mul_unit;  // a * s, cheaper for Fixed
+    return Vec3<S>(mul_unit(a1_mm, cos(q[0])) + mul_unit(a2_mm, cos(t12)), S(0),
+                   mul_unit(a1_mm, sin(q[0])) + mul_unit(a2_mm, sin(t12)));
   }
 
   //! Seed 003 eqs 4-5 (as one atan2 each, see two_link.h), then
@@ -63,7 +65,7 @@ struct PlanarLeg {
               const IkOptions<S>& opt = IkOptions<S>()) const {
     Joints sol;
     if (solve_fast(target, sol) && !(opt.max_clamp_mm < S(0))) {  // Fixed, strictly inside the annulus
-      if (!limits.contains(sol)) return leg_ik::finish(*this, target, sol, false, opt, q, reached);
+      if (!leg_ik::limits_contain(limits, sol)) return leg_ik::finish(*this, target, sol, false, opt, q, reached);
       q = sol;  // what finish() does for an exact solve inside the limits
       reached = target;
       return IkStatus::kOk;

@@ -44,7 +44,7 @@ STRIDER_NOINLINE inline bool sprawl_near_half_wins(int32_t rho, int32_t a1, int3
   if (far >= 0x80000000UL) return false;
   const uint32_t far2 = wide::sq(int32_t(far)) + wide::sq(z);
   if (far2 >= 0x40000000UL) return false;
-  const int32_t miss_far = wide::sqrt_sq(far2) - a2;
+  const int32_t miss_far = wide::sqrt_sq_call(far2) - a2;
   return !(miss_far < 0 ? -miss_far < -miss : miss_far < -miss);
 }
 
@@ -66,16 +66,16 @@ STRIDER_ALWAYS_INLINE bool sprawl_solve_fast(const Leg& leg, const Vec3<Fixed>& 
     return false;
   const uint32_t rho2 = wide::sq(x) + wide::sq(y);  // [Q6.24]
   if (rho2 < 0x10000UL || rho2 >= 0x40000000UL) return false;
-  const int32_t rho = wide::sqrt_sq(rho2);
+  const int32_t rho = wide::sqrt_sq_call(rho2);
   const int32_t dr = rho - a1;  // both in [0, 8) units
   const uint32_t knee2 = wide::sq(dr) + wide::sq(z);
   if (knee2 < 0x10000UL || knee2 >= 0x40000000UL) return false;  // on the knee circle, or far out
-  const int32_t knee = wide::sqrt_sq(knee2);
+  const int32_t knee = wide::sqrt_sq_call(knee2);
   const int32_t miss = knee - a2;  // > 0: outside the torus
   if (miss < 0 && !sprawl_near_half_wins(rho, a1, a2, z, miss)) return false;
   if (!wide::to_mm(detail::abs_u32(miss), n, miss_mm)) return false;
-  sol[0] = Fixed::from_raw(detail::atan2_lean_raw(target.y.raw(), target.x.raw()));  // eq 7
-  sol[1] = Fixed::from_raw(detail::atan2_lean_raw(z, dr));                           // eq 8
+  sol[0] = Fixed::from_raw(detail::atan2_lean_call(target.y.raw(), target.x.raw()));  // eq 7
+  sol[1] = Fixed::from_raw(detail::atan2_lean_call(z, dr));                           // eq 8
   return true;
 }
 
@@ -97,8 +97,9 @@ struct SprawlLeg {
 
   //! Seed 000 eqs 4-6.
   Vec3<S> fk(const Joints& q) const {
-    const S reach = a1_mm + a2_mm * cos(q[1]);
-    return Vec3<S>(reach * cos(q[0]), reach * sin(q[0]), a2_mm * sin(q[1]));
+    using leg_ik::mul_unit;  // a * s, cheaper for Fixed
+    const S reach = a1_mm + mul_unit(a2_mm, cos(q[1]));
+    return Vec3<S>(mul_unit(reach, cos(q[0])), mul_unit(reach, sin(q[0])), mul_unit(a2_mm, sin(q[1])));
   }
 
   //! Seed 000 eqs 7-8, then reachability and joint limits. Writes q and

@@ -199,6 +199,10 @@ STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
   return int32_t(shift_signed(detail::isqrt_q22(x), int8_t(5 - s / 2)));
 }
 
+//! sqrt_sq() as one shared out-of-line copy, for the solvers whose every
+//! cycle counts less than flash.
+STRIDER_NOINLINE inline int32_t sqrt_sq_call(uint32_t x) { return sqrt_sq(x); }
+
 //! sqrt(p q) for p, q > 0 in Q6.24 (a product of up to 60 bits), relative
 //! error < 2^-14: both are normalised to 16 significant bits, multiplied,
 //! and the root comes from the interpolated table alone. Q6.24.
