@@ -9,7 +9,6 @@
 //   walker_tick_<model>_S       Walker::tick(0.02)
 //   gait_engine_tick_<model>_S  its first part, GaitEngine::tick(0.02)
 //   servo_frame_<model>_S       write_servo_frame of every joint (ServoTickMap)
-//   servo_frame_general_<model>_S  the same through map_joint()
 //   control_tick_<model>_S      both, into a servo output that drops the data
 // Info lines: "size NAME BYTES" (sizeof of the walker's parts).
 //
@@ -111,26 +110,24 @@ void make_channels(const strider::RobotModel& m, strider::ServoChannel<S>* ch) {
 
 template <typename S>
 struct GaitRig {
-  // Pointers first and the servo data last: the walker's configure() may
-  // need more stack than is left and run into the end of this object, so
-  // what lies there is set up after it.
+  // The walker first: its configure() may need more stack than is left
+  // and run into the end of this object, so what lies there is set up
+  // after it.
+  strider::Walker<S> walker;
   const strider::RobotModel* model = nullptr;
   const strider::GaitTable* gait = nullptr;
   S vx = S(0);
-  strider::Walker<S> walker;
   NullServoOutput out;
   strider::Pca9685Timing timing;
-  strider::Settings settings;
-  strider::ServoChannel<S> channels[strider::kMaxLegs * strider::kMaxLegDof];
   strider::ServoTickMap<S> tick_map;
 
   void init_frame() {
     out = NullServoOutput();
     timing = strider::Pca9685Timing();
-    settings = strider::default_settings();
+    strider::ServoChannel<S> channels[strider::kMaxLegs * strider::kMaxLegDof];
     make_channels(*model, channels);
     tick_map = strider::ServoTickMap<S>();
-    tick_map.configure(channels, model->joint_count(), settings, timing);
+    tick_map.configure(channels, model->joint_count(), strider::default_settings(), timing);
   }
 
   //! Back to standing (the configuration built before), then the command.
@@ -150,17 +147,7 @@ struct GaitRig {
     }
     return worst;
   }
-  //! The same through the general map_joint() (servo_map.h).
-  strider::ServoStatus frame_general() {
-    const uint8_t dof = model->dof();
-    strider::ServoStatus worst = strider::ServoStatus::kOk;
-    for (uint8_t i = 0; i < model->leg_count; ++i) {
-      const strider::ServoStatus s = strider::write_servo_frame(
-          out, channels + i * dof, &walker.leg(i).q[0], dof, settings, timing, uint8_t(i * dof));
-      worst = strider::worst(worst, s);
-    }
-    return worst;
-  }
+
 };
 
 template <typename S>
@@ -169,14 +156,14 @@ void bench_model(void* storage, const strider::RobotModel& m, const char* scalar
   const strider::GaitTable* gait = strider::find_gait(m, p.default_gait);
   if (gait == nullptr) return;
   GaitRig<S>& rig = *new (storage) GaitRig<S>();
-  rig.model = &m;
-  rig.gait = gait;
   const S dt = strider::scalar<S>(0.02);
 
   begin_entry(PSTR("walker_configure"), m.name, scalar_P);
   start();
   rig.walker.configure(m, *gait, p, p.shape);
   stop();
+  rig.model = &m;
+  rig.gait = gait;
   rig.init_frame();
   // Half the top forward speed of this gait.
   const strider::GaitEngine<S>& e = rig.walker.engine();
@@ -204,15 +191,6 @@ void bench_model(void* storage, const strider::RobotModel& m, const char* scalar
     rig.walker.tick(dt);
     start();
     const strider::ServoStatus s = rig.frame();
-    stop();
-    asm volatile("" : : "r"(uint8_t(s)));
-  }
-  rig.restart();
-  begin_entry(PSTR("servo_frame_general"), m.name, scalar_P);
-  for (uint16_t k = 0; k < ticks; ++k) {
-    rig.walker.tick(dt);
-    start();
-    const strider::ServoStatus s = rig.frame_general();
     stop();
     asm volatile("" : : "r"(uint8_t(s)));
   }

@@ -45,8 +45,10 @@ class Walker {
   //! calls) and the engine. Returns false for a gait of another leg count.
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
                  bool sitting = false) {
-    if (!build_legs(model)) return false;
-    return configure(model, gait, make_gait_config(model, legs_, params, shape), sitting);
+    if (gait.leg_count != model.leg_count || !build_legs(model)) return false;
+    engine_.configure(model, legs_, params, shape, gait, sitting);  // the configuration built in place
+    reset_legs(model);
+    return true;
   }
 
   //! The same with a configuration built before (make_gait_config): no IK
@@ -56,12 +58,7 @@ class Walker {
     if (gait.leg_count != model.leg_count || config.leg_count != model.leg_count) return false;
     if (model_ != &model && !build_legs(model)) return false;
     engine_.configure(config, gait, sitting);
-    for (uint8_t i = 0; i < model.leg_count; ++i) {
-      out_[i].q = typename AnyLeg<S>::Joints();
-      for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
-      out_[i].foot_mm = engine_.foot(i);
-    }
-    solve();
+    reset_legs(model);
     return true;
   }
 
@@ -103,12 +100,26 @@ class Walker {
       r.clamp_mm = moved;
       Vec3<S> reached;
       r.ik_status = legs_[i].ik(t, r.q, reached);
-      if (r.ik_status != IkStatus::kUnreachable) r.foot_mm = legs_[i].mount().leg_to_body(reached);
+      // A target reached as given and not projected is the body-frame target
+      // itself: no transform back (4 products) for the usual 3-DOF foot.
+      if (r.ik_status != IkStatus::kUnreachable)
+        r.foot_mm = moved == S(0) && same(reached, leg_target) ? r.target_mm : legs_[i].mount().leg_to_body(reached);
       constexpr S tolerance = scalar<S>(kClampToleranceMm);
       const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
       r.status = worst(r.ik_status, slid ? IkStatus::kClamped : IkStatus::kOk);
     }
   }
+
+  void reset_legs(const RobotModel& model) {
+    for (uint8_t i = 0; i < model.leg_count; ++i) {
+      out_[i].q = typename AnyLeg<S>::Joints();
+      for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
+      out_[i].foot_mm = engine_.foot(i);
+    }
+    solve();
+  }
+
+  static bool same(const Vec3<S>& a, const Vec3<S>& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
   bool build_legs(const RobotModel& model) {
     model_ = nullptr;
