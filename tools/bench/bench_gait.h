@@ -10,7 +10,9 @@
 //   gait_engine_tick_<model>_S  its first part, GaitEngine::tick(0.02)
 //   servo_frame_<model>_S       write_servo_frame of every joint (ServoTickMap)
 //   control_tick_<model>_S      both, into a servo output that drops the data
-// Info lines: "size NAME BYTES" (sizeof of the walker's parts).
+// Info lines: "size NAME BYTES" (sizeof of the walker's parts), and after
+// each timed walk "walk <model>_S h h ..." (gait_scenario.h's walk_record,
+// hex), which test/avr compares with the host's replay.
 //
 // Included by bench_firmware.cpp (run_gait_bench() from its run_bench());
 // self-contained so that it does not depend on the firmware's helpers.
@@ -23,8 +25,7 @@
 #include <stdint.h>
 
 #include "control/servo_frame.h"
-#include "gait/gait_library.h"
-#include "gait/walker.h"
+#include "gait_scenario.h"
 
 // Placement new (no <new> on the AVR): the walkers share one buffer.
 inline void* operator new(size_t, void* where) noexcept { return where; }
@@ -34,8 +35,6 @@ namespace gait_bench {
 
 using strider::Fixed;
 
-//! Ticks per walking run (quick mode: every stride-th of them).
-constexpr uint16_t kTicks = 250;
 
 inline void put(char c) { GPIOR2 = uint8_t(c); }
 inline void put_P(const char* s) {
@@ -131,10 +130,7 @@ struct GaitRig {
   }
 
   //! Back to standing (the configuration built before), then the command.
-  void restart() {
-    walker.configure(*model, *gait, walker.engine().config());
-    walker.engine().set_command(vx, S(0), S(0));
-  }
+  void restart() { scenario_restart(walker, *model, vx); }
 
   //! Every joint through the folded map (servo_tick_map.h).
   strider::ServoStatus frame() {
@@ -150,27 +146,47 @@ struct GaitRig {
 
 };
 
+inline void put_hex(uint32_t v) {
+  for (int8_t shift = 28; shift >= 0; shift -= 4) {
+    const uint8_t d = uint8_t((v >> shift) & 0xFu);
+    put(char(d < 10 ? '0' + d : 'a' + d - 10));
+  }
+}
+
+//! "I walk <model>_<scalar> h h ...": the state after a timed walk.
+template <typename S>
+void put_walk(const strider::Walker<S>& w, const char* model, const char* scalar_P) {
+  int32_t v[kWalkRecordMax];
+  const uint8_t n = walk_record(w, v);
+  put('I');
+  put_P(PSTR(" walk "));
+  put_str(model);
+  put('_');
+  put_P(scalar_P);
+  for (uint8_t i = 0; i < n; ++i) {
+    put(' ');
+    put_hex(uint32_t(v[i]));
+  }
+  put('\n');
+}
+
 template <typename S>
 void bench_model(void* storage, const strider::RobotModel& m, const char* scalar_P, uint8_t stride) {
-  const strider::GaitParams& p = *strider::gait_params_for(m);
-  const strider::GaitTable* gait = strider::find_gait(m, p.default_gait);
-  if (gait == nullptr) return;
+  if (scenario_gait(m) == nullptr) return;
   GaitRig<S>& rig = *new (storage) GaitRig<S>();
   const S dt = strider::scalar<S>(0.02);
 
   begin_entry(PSTR("walker_configure"), m.name, scalar_P);
   start();
-  rig.walker.configure(m, *gait, p, p.shape);
+  const bool ok = scenario_configure(rig.walker, m);
   stop();
+  if (!ok) return;
   rig.model = &m;
-  rig.gait = gait;
+  rig.gait = scenario_gait(m);
   rig.init_frame();
-  // Half the top forward speed of this gait.
-  const strider::GaitEngine<S>& e = rig.walker.engine();
-  rig.vx = e.config().limits.max_speed_mm_s(e.config().home, S(1), S(0), strider::scalar<S>(double(gait->duty))) *
-           strider::scalar<S>(0.5);
+  rig.vx = scenario_speed(rig.walker);
 
-  const uint16_t ticks = uint16_t(kTicks / stride);
+  const uint16_t ticks = uint16_t(kGaitTicks / stride);
   rig.restart();
   begin_entry(PSTR("walker_tick"), m.name, scalar_P);
   for (uint16_t k = 0; k < ticks; ++k) {
@@ -178,6 +194,7 @@ void bench_model(void* storage, const strider::RobotModel& m, const char* scalar
     rig.walker.tick(dt);
     stop();
   }
+  put_walk(rig.walker, m.name, scalar_P);
   rig.restart();
   begin_entry(PSTR("gait_engine_tick"), m.name, scalar_P);
   for (uint16_t k = 0; k < ticks; ++k) {
