@@ -320,7 +320,7 @@ GaitConfig<Fixed> to_fixed(const GaitConfig<float>& f) {
     x.home[i] = Vec3<Fixed>::from(f.home[i]);
     x.edge_mm[i] = X(f.edge_mm[i]);
     for (int k = 0; k < strider::VelocityLimits<float>::kDirections; ++k)
-      x.limits.stride_mm[i][k] = X(f.limits.stride_mm[i][k]);
+      x.limits.set_stride_mm(uint8_t(i), uint8_t(k), X(f.limits.stride_mm(uint8_t(i), uint8_t(k))));
   }
   x.shape = f.shape;
   x.step_height_mm = X(f.step_height_mm);
@@ -433,9 +433,9 @@ TEST(GaitEngineScalars, VelocityLimitsAgree) {
     double worst = 0.0;
     for (uint8_t i = 0; i < m->leg_count; ++i)
       for (int k = 0; k < strider::VelocityLimits<float>::kDirections; ++k) {
-        const double d = std::fabs(double(a.stride_mm[i][k]) - dbl(b.stride_mm[i][k]));
+        const double d = std::fabs(double(a.stride_mm(i, uint8_t(k))) - dbl(b.stride_mm(i, uint8_t(k))));
         worst = std::max(worst, d);
-        EXPECT_LE(d, std::max(1.0, 0.01 * double(a.stride_mm[i][k])));
+        EXPECT_LE(d, std::max(1.0, 0.01 * double(a.stride_mm(i, uint8_t(k)))));
       }
     EXPECT_NEAR(dbl(b.lift_ms), double(a.lift_ms), 0.01 * double(a.lift_ms));
     EXPECT_NEAR(dbl(b.swing_ms_per_mm), double(a.swing_ms_per_mm), 0.01 * double(a.swing_ms_per_mm) + 1e-3);

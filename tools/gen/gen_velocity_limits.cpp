@@ -65,8 +65,8 @@ int main() {
     for (uint8_t i = 0; i < kMaxLegs; ++i) {
       std::printf("        {");
       for (int k = 0; k < kDirections; ++k) {
-        const float v = i < m.leg_count ? all[r].stride_mm[i][k] : 0.0f;
-        std::printf("%s%u", k ? ", " : "", unsigned(enc::stride_code(v)));
+        const unsigned code = i < m.leg_count ? unsigned(all[r].stride_code[i][k]) : 0u;
+        std::printf("%s%u", k ? ", " : "", code);
       }
       std::printf("},\n");
     }

@@ -75,8 +75,8 @@ void fill_gait_config(GaitConfig<S>& c, const RobotModel& model, const AnyLeg<S>
     c.limits = compute_velocity_limits(model, legs, c.home, shape, c.step_height_mm,
                                        scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
   for (uint8_t i = 0; i < model.leg_count; ++i) {
-    S shortest = c.limits.stride_mm[i][0];
-    for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm[i][k]);
+    S shortest = c.limits.stride_mm(i, 0);
+    for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
     c.edge_mm[i] = shortest * scalar<S>(0.5);
   }
   // Ramps: from standing to the top forward speed of a trot-like duty in one

@@ -62,6 +62,11 @@ void GaitEngine<S>::step_transition(S dt) {
 
 template <typename S>
 void GaitEngine<S>::step_pose(S dt) {
+  // At its goal (the usual case): nothing to move, no products.
+  if (pose_.translation_mm.x == goal_pose_.translation_mm.x && pose_.translation_mm.y == goal_pose_.translation_mm.y &&
+      pose_.translation_mm.z == goal_pose_.translation_mm.z && pose_.roll_rad == goal_pose_.roll_rad &&
+      pose_.pitch_rad == goal_pose_.pitch_rad && pose_.yaw_rad == goal_pose_.yaw_rad)
+    return;
   const S dp = cfg_.pose_speed_mm_s * dt, da = cfg_.pose_rate_rad_s * dt;
   pose_.translation_mm.x += clamp(goal_pose_.translation_mm.x - pose_.translation_mm.x, -dp, dp);
   pose_.translation_mm.y += clamp(goal_pose_.translation_mm.y - pose_.translation_mm.y, -dp, dp);

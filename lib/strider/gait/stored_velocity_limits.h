@@ -49,7 +49,7 @@ bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, S
   constexpr uint8_t kDirections = VelocityLimits<S>::kDirections;
   for (uint8_t i = 0; i < kMaxLegs; ++i)
     for (uint8_t k = 0; k < kDirections; ++k)
-      out.stride_mm[i][k] = enc::stride_of(flash_u16(&T::kStride[r][i][0], k), S());
+      out.stride_code[i][k] = flash_u16(&T::kStride[r][i][0], k);
   S servo[3];
   for (uint8_t j = 0; j < 3; ++j) {
     const uint32_t lo = flash_u16(T::kServo[r], uint16_t(2 * j)), hi = flash_u16(T::kServo[r], uint16_t(2 * j + 1));

@@ -95,8 +95,8 @@ class Walker {
       r.target_mm = turned ? foot_in_body(body, p) : p - pose.translation_mm;
       r.contact = engine_.contact(i);
       const Vec3<S> leg_target = legs_[i].mount().body_to_leg(r.target_mm);
-      S moved;
-      const Vec3<S> t = proj_.apply(leg_target, moved);
+      S moved = S(0);
+      const Vec3<S> t = proj_.projects() ? proj_.apply(leg_target, moved) : leg_target;
       r.clamp_mm = moved;
       Vec3<S> reached;
       r.ik_status = legs_[i].ik(t, r.q, reached);
