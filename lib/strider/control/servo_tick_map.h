@@ -20,6 +20,7 @@
 
 #include <stdint.h>
 
+#include "../math/float_bits.h"
 #include "../math/scalar.h"
 #include "pca9685_timing.h"
 #include "servo_map.h"
@@ -38,6 +39,11 @@ enum class ServoTickStatus : uint8_t {
 
 namespace servo_ticks_detail {
 
+using detail::float_bits;
+using detail::kFloatInfBits;
+using detail::kFloatSignBit;
+using detail::magnitude_bits;
+
 //! ticks = (d [Q2.14] * k) >> (shift - 2) + base [Q16.16], rounded.
 inline uint16_t ticks_of(Fixed d, uint16_t k, uint8_t shift, uint32_t base_q16) {
   const uint16_t d14 = uint16_t(uint32_t(d.raw()) >> 2);  // 0 <= d < 4 rad: checked in configure()
@@ -47,13 +53,23 @@ inline uint16_t ticks_of(Fixed d, uint16_t k, uint8_t shift, uint32_t base_q16) 
   const uint16_t t = uint16_t(p >> 16);
   return t > kPca9685MaxTick ? kPca9685MaxTick : t;
 }
-inline uint16_t ticks_of(float d, float ticks_per_rad, float base) {
-  const float t = d * ticks_per_rad + base + 0.5f;
-  return t >= float(kPca9685MaxTick) ? kPca9685MaxTick : t > 0.0f ? uint16_t(t) : uint16_t(0);
+//! base_half: ticks of the lowest limit + 0.5 (rounding folded in).
+inline uint16_t ticks_of(float d, float ticks_per_rad, float base_half) {
+  // 0 <= d <= travel and base + slope travel < 4096 (configure()): in range.
+  const uint16_t t = uint16_t(d * ticks_per_rad + base_half);
+  return t > kPca9685MaxTick ? kPca9685MaxTick : t;
 }
 
-inline bool finite(float v) { return v == v && v - v == 0.0f; }
+// Decisions on float bits (float_bits.h): a float comparison is a library
+// call on the AVR, an integer one a few cycles.
+inline bool finite(float v) { return magnitude_bits(v) < kFloatInfBits; }
 inline bool finite(Fixed) { return true; }
+//! v < 0 (v finite; -0 is not).
+inline bool below_zero(float v) { return (float_bits(v) & kFloatSignBit) != 0 && magnitude_bits(v) != 0; }
+inline bool below_zero(Fixed v) { return v.raw() < 0; }
+//! a > b for finite a >= 0 and b >= 0.
+inline bool above(float a, float b) { return float_bits(a) > float_bits(b); }
+inline bool above(Fixed a, Fixed b) { return a.raw() > b.raw(); }
 
 }  // namespace servo_ticks_detail
 
@@ -69,7 +85,7 @@ struct ServoTickScale<Fixed> {
 };
 template <>
 struct ServoTickScale<float> {
-  float base;           //!< ticks of the lowest limit, unrounded [ticks]
+  float base;           //!< ticks of the lowest limit + 0.5 (rounding) [ticks]
   float ticks_per_rad;  //!< [ticks/rad]
 };
 
@@ -152,10 +168,10 @@ class ServoTickMap {
       cmd.status = ServoStatus::kNotFinite;
       return cmd;
     }
-    if (d < S(0)) {
+    if (servo_ticks_detail::below_zero(d)) {
       d = S(0);
       cmd.status = ServoStatus::kLimited;
-    } else if (j.travel_rad < d) {
+    } else if (servo_ticks_detail::above(d, j.travel_rad)) {
       d = j.travel_rad;
       cmd.status = ServoStatus::kLimited;
     }
@@ -180,7 +196,7 @@ class ServoTickMap {
  private:
   static bool set_scale(ServoTickScale<float>& sc, double travel, double tpr, double base) {
     sc.ticks_per_rad = float(tpr);
-    sc.base = float(base);
+    sc.base = float(base + 0.5);
     return travel < 4.0 && base + tpr * travel < 4096.0;
   }
   static bool set_scale(ServoTickScale<Fixed>& sc, double travel, double tpr, double base) {
