@@ -146,9 +146,11 @@ class SupportPolygon {
 
  private:
   S unit(S mm) const { return gait_units::to_unit(mm, shift_); }
+  //! The vertex after k (no modulo: a 16-bit division on the AVR).
+  uint8_t next(uint8_t k) const { return uint8_t(k + 1) == count_ ? uint8_t(0) : uint8_t(k + 1); }
   Vec3<S> at(const Vec3<S>* feet, uint8_t i) const { return Vec3<S>(unit(feet[i].x), unit(feet[i].y), S(0)); }
   Vec3<S> edge(const Vec3<S>* feet, uint8_t k) const {
-    return at(feet, idx_[(k + 1) % count_]) - at(feet, idx_[k]);
+    return at(feet, idx_[next(k)]) - at(feet, idx_[k]);
   }
   S cross(const Vec3<S>* feet, uint8_t o, uint8_t a, uint8_t b) const {
     const Vec3<S> u = at(feet, a) - at(feet, o), v = at(feet, b) - at(feet, o);
@@ -201,13 +203,16 @@ class SupportPolygon {
       return 4;
     }
     const S shrink = max_of(want - r, S(0));
+    // The vertices in working units once (each is in two edges).
+    Vec3<S> a[kMaxLegs];
+    for (uint8_t k = 0; k < count_; ++k) a[k] = at(feet, idx_[k]);
     for (uint8_t k = 0; k < count_; ++k) {
-      u[k] = edge(feet, k) * inv_len_[k];
+      u[k] = (a[next(k)] - a[k]) * inv_len_[k];
       const Vec3<S> nk(-u[k].y, u[k].x, S(0));
-      v[k] = at(feet, idx_[k]) + (nk + u[k] * corner_[k]) * shrink;
+      v[k] = a[k] + (nk + u[k] * corner_[k]) * shrink;
     }
     for (uint8_t k = 0; k < count_; ++k) {
-      const Vec3<S> d = v[(k + 1) % count_] - v[k];
+      const Vec3<S> d = v[next(k)] - v[k];
       len[k] = d.x * u[k].x + d.y * u[k].y;
     }
     return count_;
