@@ -89,12 +89,16 @@ class Walker {
     const BodyPose<S> pose = engine_.body_pose();
     const bool turned = pose.roll_rad != S(0) || pose.pitch_rad != S(0) || pose.yaw_rad != S(0);
     const Transform<S> body = turned ? body_transform(pose) : Transform<S>::identity();
+    // The body at the stance frame's origin (a trot or tripod standing tall):
+    // the feet are already in the body frame.
+    const Vec3<S>& shift = pose.translation_mm;
+    const bool still = shift.x == S(0) && shift.y == S(0) && shift.z == S(0);
     for (uint8_t i = 0; i < leg_count(); ++i) {
       LegResult<S>& r = out_[i];
       const Vec3<S>& p = engine_.foot(i);
-      r.target_mm = turned ? foot_in_body(body, p) : p - pose.translation_mm;
+      r.target_mm = turned ? foot_in_body(body, p) : still ? p : p - pose.translation_mm;
       r.contact = engine_.contact(i);
-      const Vec3<S> leg_target = legs_[i].mount().body_to_leg(r.target_mm);
+      const Vec3<S> leg_target = to_leg(i, r.target_mm);
       S moved = S(0);
       const Vec3<S> t = proj_.projects() ? proj_.apply(leg_target, moved) : leg_target;
       r.clamp_mm = moved;
@@ -103,9 +107,10 @@ class Walker {
       // A target reached as given and not projected is the body-frame target
       // itself: no transform back (4 products) for the usual 3-DOF foot.
       if (r.ik_status != IkStatus::kUnreachable)
-        r.foot_mm = moved == S(0) && same(reached, leg_target) ? r.target_mm : legs_[i].mount().leg_to_body(reached);
+        r.foot_mm = moved == S(0) && same(reached, leg_target) ? r.target_mm : to_body(i, reached);
       constexpr S tolerance = scalar<S>(kClampToleranceMm);
-      const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
+      const bool projected = proj_.projects();  // else t is leg_target and nothing slid
+      const bool slid = projected && (r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance);
       r.status = worst(r.ik_status, slid ? IkStatus::kClamped : IkStatus::kOk);
     }
   }
@@ -119,12 +124,36 @@ class Walker {
     solve();
   }
 
+  // LegMount's transforms, without the products when the mount is turned by
+  // exactly 0 or +-90 degrees (the quadrupeds, a hexapod's middle legs in
+  // Fixed): products by 0 and 1 are exact, so the results are the same.
+  enum MountTurn : uint8_t { kTurned = 0, kStraight = 1, kLeft = 2, kRight = 3 };
+  static uint8_t turn_of(const LegMount<S>& m) {
+    if (m.sin_yaw == S(0) && m.cos_yaw == S(1)) return kStraight;
+    if (m.cos_yaw == S(0) && m.sin_yaw == S(1)) return kLeft;
+    if (m.cos_yaw == S(0) && m.sin_yaw == S(-1)) return kRight;
+    return kTurned;
+  }
+  Vec3<S> to_leg(uint8_t i, const Vec3<S>& p) const {
+    const LegMount<S>& m = legs_[i].mount();
+    if (turn_[i] == kTurned) return m.body_to_leg(p);
+    const Vec3<S> d = p - m.origin_mm;
+    if (turn_[i] == kStraight) return d;
+    return turn_[i] == kLeft ? Vec3<S>(d.y, -d.x, d.z) : Vec3<S>(-d.y, d.x, d.z);
+  }
+  Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const {
+    const LegMount<S>& m = legs_[i].mount();
+    return turn_[i] == kStraight ? p + m.origin_mm : m.leg_to_body(p);
+  }
+
   static bool same(const Vec3<S>& a, const Vec3<S>& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
   bool build_legs(const RobotModel& model) {
     model_ = nullptr;
-    for (uint8_t i = 0; i < model.leg_count; ++i)
+    for (uint8_t i = 0; i < model.leg_count; ++i) {
       if (!AnyLeg<S>::from_model(model, i, legs_[i])) return false;
+      turn_[i] = turn_of(legs_[i].mount());
+    }
     proj_ = ReachProjection<S>::make(model);
     model_ = &model;
     return true;
@@ -132,6 +161,7 @@ class Walker {
 
   const RobotModel* model_ = nullptr;
   AnyLeg<S> legs_[kMaxLegs];
+  uint8_t turn_[kMaxLegs] = {};  // MountTurn of each leg's mount
   ReachProjection<S> proj_{};
   GaitEngine<S> engine_;
   LegResult<S> out_[kMaxLegs];
