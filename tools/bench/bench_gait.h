@@ -15,7 +15,7 @@
 // hex), which test/avr compares with the host's replay.
 //
 // Included by bench_firmware.cpp (run_gait_bench() from its run_bench());
-// self-contained so that it does not depend on the firmware's helpers.
+// self-contained so that it does not depend on the firmware's own functions.
 #ifndef STRIDER_TOOLS_BENCH_GAIT_H
 #define STRIDER_TOOLS_BENCH_GAIT_H
 
