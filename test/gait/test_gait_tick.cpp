@@ -197,3 +197,29 @@ TYPED_TEST(GaitTickTest, SupportBuiltWhenAskedIsTheSupportOfTheFeetDown) {
 
 }  // namespace
 }  // namespace gaittest
+
+namespace gaittest {
+namespace {
+
+TYPED_TEST(GaitTickTest, LegFrameTransformIsTheMounts) {
+  using S = TypeParam;
+  // Fixed: the +-45 degree mounts round once less (one product instead of
+  // two): within a few raw units. Float: within rounding.
+  const double tol = std::is_same<S, float>::value ? 1e-4 : 4.0 / 65536.0;  // [mm]
+  for (const RobotModel* m : strider::kAllRobots) {
+    SCOPED_TRACE(m->name);
+    const strider::GaitParams& p = *strider::gait_params_for(*m);
+    std::unique_ptr<Walker<S>> w(new Walker<S>());
+    ASSERT_TRUE(w->configure(*m, *strider::find_gait(*m, p.default_gait), p, p.shape));
+    for (uint8_t i = 0; i < m->leg_count; ++i)
+      for (int a = 0; a < 36; ++a)
+        for (int r = 0; r <= 300; r += 25) {
+          const Vec3<S> q(sc<S>(r * std::cos(a * kPi / 18)), sc<S>(r * std::sin(a * kPi / 18)), sc<S>(-40.0 + r * 0.1));
+          const P2 fast = p2(w->to_leg(i, q)), ref = p2(w->leg_model(i).mount().body_to_leg(q));
+          ASSERT_LE(dist(fast, ref), tol) << "leg " << int(i) << " a " << a << " r " << r;
+        }
+  }
+}
+
+}  // namespace
+}  // namespace gaittest

@@ -75,6 +75,9 @@ class Walker {
   }
 
   const LegResult<S>& leg(uint8_t i) const { return out_[i]; }
+  //! A body-frame point [mm] in leg i's frame, as the walker computes it
+  //! (LegMount::body_to_leg with fewer products for the usual mounts).
+  Vec3<S> to_leg(uint8_t i, const Vec3<S>& body_mm) const { return to_leg_unchecked(i, body_mm); }
   //! Static stability margin [mm] (negative: CoM outside the support).
   S margin_mm() const { return engine_.margin_mm(); }
   //! The worst status over all legs this tick.
@@ -98,7 +101,7 @@ class Walker {
       const Vec3<S>& p = engine_.foot(i);
       r.target_mm = turned ? foot_in_body(body, p) : still ? p : p - pose.translation_mm;
       r.contact = engine_.contact(i);
-      const Vec3<S> leg_target = to_leg(i, r.target_mm);
+      const Vec3<S> leg_target = to_leg_unchecked(i, r.target_mm);
       S moved = S(0);
       const Vec3<S> t = proj_.projects() ? proj_.apply(leg_target, moved) : leg_target;
       r.clamp_mm = moved;
@@ -124,22 +127,32 @@ class Walker {
     solve();
   }
 
-  // LegMount's transforms, without the products when the mount is turned by
-  // exactly 0 or +-90 degrees (the quadrupeds, a hexapod's middle legs in
-  // Fixed): products by 0 and 1 are exact, so the results are the same.
-  enum MountTurn : uint8_t { kTurned = 0, kStraight = 1, kLeft = 2, kRight = 3 };
+  // LegMount's transforms with fewer products for the usual mounts: turned
+  // by 0 degrees (the quadrupeds) or +-90 (a hexapod's middle legs) none,
+  // products by 0 and 1 being exact (float's cos 90 deg, 4e-8, taken as 0);
+  // by +-45 or +-135 degrees (cos = +-sin) two instead of four, within a
+  // rounding step of LegMount's (test/gait).
+  enum MountTurn : uint8_t { kTurned = 0, kStraight = 1, kLeft = 2, kRight = 3, kDiagonal = 4, kAntiDiagonal = 5 };
   static uint8_t turn_of(const LegMount<S>& m) {
+    constexpr S tiny = scalar<S>(1e-6);
     if (m.sin_yaw == S(0) && m.cos_yaw == S(1)) return kStraight;
-    if (m.cos_yaw == S(0) && m.sin_yaw == S(1)) return kLeft;
-    if (m.cos_yaw == S(0) && m.sin_yaw == S(-1)) return kRight;
+    if (abs(m.cos_yaw) <= tiny && m.sin_yaw == S(1)) return kLeft;
+    if (abs(m.cos_yaw) <= tiny && m.sin_yaw == S(-1)) return kRight;
+    if (m.cos_yaw == m.sin_yaw) return kDiagonal;
+    if (m.cos_yaw == -m.sin_yaw) return kAntiDiagonal;
     return kTurned;
   }
-  Vec3<S> to_leg(uint8_t i, const Vec3<S>& p) const {
+  Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
     const LegMount<S>& m = legs_[i].mount();
     if (turn_[i] == kTurned) return m.body_to_leg(p);
     const Vec3<S> d = p - m.origin_mm;
-    if (turn_[i] == kStraight) return d;
-    return turn_[i] == kLeft ? Vec3<S>(d.y, -d.x, d.z) : Vec3<S>(-d.y, d.x, d.z);
+    switch (turn_[i]) {
+      case kStraight: return d;
+      case kLeft: return Vec3<S>(d.y, -d.x, d.z);
+      case kRight: return Vec3<S>(-d.y, d.x, d.z);
+      case kDiagonal: return Vec3<S>(m.cos_yaw * (d.x + d.y), m.cos_yaw * (d.y - d.x), d.z);
+      default: return Vec3<S>(m.cos_yaw * (d.x - d.y), m.cos_yaw * (d.x + d.y), d.z);
+    }
   }
   Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const {
     const LegMount<S>& m = legs_[i].mount();
