@@ -114,6 +114,8 @@ void print_table(const RunResult& r, double overhead, const Sizes& sizes, uint32
     std::printf("%-28s %10.1f %8.0f %8.0f %6" PRIu64 " %9.1f %6s  %s\n", e.name.c_str(), n.avg, n.min, n.max,
                 e.calls, n.avg * 1e6 / f_cpu, ok, verdict);
   }
+  for (const std::string& line : r.info)
+    if (line.compare(0, 5, "size ") == 0) std::printf("%s B\n", line.c_str());
   if (sizes.ok)
     std::printf("bench ELF: flash %lu B, static RAM %lu B, stack peak %u B\n", sizes.flash(), sizes.ram(),
                 r.stack_peak_bytes);
@@ -145,7 +147,17 @@ bool write_json(const std::string& path, const RunResult& r, double overhead, co
     std::fprintf(f, "}");
     first = false;
   }
-  std::fprintf(f, "\n  ],\n  \"bench_elf\": {");
+  std::fprintf(f, "\n  ],\n  \"sizes\": {");
+  // "size NAME BYTES" info lines: sizeof figures of the benchmarked types.
+  bool first_size = true;
+  for (const std::string& line : r.info) {
+    char name[64];
+    unsigned bytes = 0;
+    if (std::sscanf(line.c_str(), "size %63s %u", name, &bytes) != 2) continue;
+    std::fprintf(f, "%s\"%s\": %u", first_size ? "" : ", ", json_escape(name).c_str(), bytes);
+    first_size = false;
+  }
+  std::fprintf(f, "},\n  \"bench_elf\": {");
   if (sizes.ok)
     std::fprintf(f, "\"flash_bytes\": %lu, \"ram_static_bytes\": %lu, ", sizes.flash(), sizes.ram());
   std::fprintf(f, "\"stack_peak_bytes\": %u},\n", r.stack_peak_bytes);

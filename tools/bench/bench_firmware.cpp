@@ -13,6 +13,7 @@
 #include <avr/sleep.h>
 #include <stdint.h>
 
+#include "bench_gait.h"
 #include "bench_legs.h"
 #include "bench_protocol.h"
 #include "exact_cases.h"
@@ -231,6 +232,7 @@ void run_bench() {
   bench_leg(g_abduction_float, PSTR("abduction_ik_float"), PSTR("abduction_fk_float"));
   bench_leg(g_abduction_fixed, PSTR("abduction_ik_fixed"), PSTR("abduction_fk_fixed"));
 #endif
+  run_gait_bench(g_stride);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "servo_map.h"
+#include "servo_tick_map.h"
 #include "settings.h"
 
 namespace strider {
@@ -30,6 +31,15 @@ ServoStatus write_servo_frame(Output& out, const ServoChannel<S>* channels, cons
     status = worst(status, cmd.status);
   }
   return status;
+}
+
+//! The same through a ServoTickMap configured for these channels, trims and
+//! timing (servo_tick_map.h): joints [first, first + count) of the map from
+//! joint_rad[0..count). A few hundred cycles per joint instead of ~2,000.
+template <typename S, typename Output>
+ServoStatus write_servo_frame(Output& out, const ServoTickMap<S>& map, const S* joint_rad, uint8_t count,
+                              uint8_t first = 0) {
+  return map.write(out, first, joint_rad, count);
 }
 
 //! Programs the PWM frequency: call at boot and after a calibration change

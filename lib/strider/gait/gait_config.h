@@ -5,6 +5,7 @@
 #define STRIDER_GAIT_GAIT_CONFIG_H
 
 #include "gait_params.h"
+#include "stored_velocity_limits.h"
 #include "velocity_limits.h"
 
 namespace strider {
@@ -37,13 +38,20 @@ struct GaitConfig {
   VelocityLimits<S> limits;
 };
 
-//! Builds the configuration of `model` with `legs` (AnyLeg::from_model for
-//! every leg) and gait defaults `params`, for swing shape `shape`. Costs a few
-//! thousand IK calls (velocity limits): call it at start-up, not per tick.
+//! Where make_gait_config() takes the velocity limits from.
+enum class LimitsSource : uint8_t {
+  kStoredOrSearch = 0,  //!< the generated table when it has the model and parameters, else the search
+  kSearch = 1           //!< always the IK search (velocity_limits.h)
+};
+
+//! Builds (in c) the configuration of `model` with `legs` (AnyLeg::from_model for
+//! every leg) and gait defaults `params`, for swing shape `shape`. A built-in
+//! model at its defaults takes its velocity limits from the stored table
+//! (stored_velocity_limits.h: no IK, a few thousand cycles); otherwise they
+//! cost a few thousand IK calls: call it at start-up, not per tick.
 template <typename S>
-GaitConfig<S> make_gait_config(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
-                               SwingShape shape) {
-  GaitConfig<S> c;
+void fill_gait_config(GaitConfig<S>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
+                      SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {
   c.leg_count = model.leg_count;
   S reach = S(0);
   for (uint8_t i = 0; i < model.leg_count; ++i) {
@@ -63,11 +71,12 @@ GaitConfig<S> make_gait_config(const RobotModel& model, const AnyLeg<S>* legs, c
   c.shift_x_only = model.kind == LegKind::kPlanar;
   c.min_support = model.leg_count == 6 ? 3 : 2;
   c.unit_shift = gait_units::shift_for(reach + reach);
-  c.limits = compute_velocity_limits(model, legs, c.home, shape, c.step_height_mm,
-                                     scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
+  if (source == LimitsSource::kSearch || !stored_velocity_limits(model, params, shape, c.limits))
+    c.limits = compute_velocity_limits(model, legs, c.home, shape, c.step_height_mm,
+                                       scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
   for (uint8_t i = 0; i < model.leg_count; ++i) {
-    S shortest = c.limits.stride_mm[i][0];
-    for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm[i][k]);
+    S shortest = c.limits.stride_mm(i, 0);
+    for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
     c.edge_mm[i] = shortest * scalar<S>(0.5);
   }
   // Ramps: from standing to the top forward speed of a trot-like duty in one
@@ -81,6 +90,15 @@ GaitConfig<S> make_gait_config(const RobotModel& model, const AnyLeg<S>* legs, c
   c.pose_speed_mm_s = scalar<S>(50.0);
   c.pose_rate_rad_s = scalar<S>(0.5);
   c.home_tolerance_mm = scalar<S>(0.5);
+}
+
+//! The same as a value (fill_gait_config() builds it in place: no copy of
+//! ~600 bytes on the stack, which matters on the AVR).
+template <typename S>
+GaitConfig<S> make_gait_config(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
+                               SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {
+  GaitConfig<S> c;
+  fill_gait_config(c, model, legs, params, shape, source);
   return c;
 }
 

@@ -67,6 +67,12 @@ class GaitEngine {
  public:
   //! Takes the configuration and a gait; the robot stands (or sits).
   void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false);
+  //! The same with the configuration built in place (fill_gait_config()).
+  void configure(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params, SwingShape shape,
+                 const GaitTable& gait, bool sitting = false) {
+    fill_gait_config(cfg_, model, legs, params, shape);
+    configure(cfg_, gait, sitting);
+  }
 
   // ---- commands --------------------------------------------------------------
 
@@ -124,7 +130,8 @@ class GaitEngine {
   const bool* contacts() const { return contact_; }
   //! The body in the stance frame: shift + offsets + sit/stand height.
   BodyPose<S> body_pose() const {
-    const S drop = cfg_.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress_));
+    // Standing (progress 1): no drop, and no products for it.
+    const S drop = progress_ >= S(1) ? S(0) : cfg_.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress_));
     return BodyPose<S>::make(Vec3<S>(shift_.x_mm() + pose_.translation_mm.x, shift_.y_mm() + pose_.translation_mm.y,
                                      pose_.translation_mm.z - drop),
                              pose_.roll_rad, pose_.pitch_rad, pose_.yaw_rad);
@@ -161,9 +168,32 @@ class GaitEngine {
   S stopping_distance_mm() const { return hypot(now_s_.x, now_s_.y) * stop_cycles() / S(2); }
   S stopping_angle_rad() const { return abs(now_s_.yaw) * stop_cycles() / S(2); }
   Phase16 phase() const { return clock_.now(); }
+  //! True when foot p of leg i is beyond kEdgeShare of the longest stride
+  //! it may make in its direction from home (velocity limits; the IK limit
+  //! is at 0.5 / kStrideShare = 0.556): a foot on the ground there lifts
+  //! early, or, without the support to lift, holds the body still. Never
+  //! while the command is steady (the plan keeps strides within the limits).
+  bool beyond_edge(uint8_t i, const Vec3<S>& p) const {
+    const S dx = p.x - cfg_.home[i].x, dy = p.y - cfg_.home[i].y;
+    const S r = cfg_.edge_mm[i];
+    if (abs(dx) + abs(dy) <= r) return false;  // inside the shortest stride's diamond: no product
+    // Inside the shortest stride's circle (a little smaller, for rounding):
+    // two products instead of the atan2, the square root and the lookup.
+    const S ux = gait_units::to_unit(dx, cfg_.unit_shift), uy = gait_units::to_unit(dy, cfg_.unit_shift);
+    if (ux * ux + uy * uy <= edge_r2_[i]) return false;
+    const S stride = cfg_.limits.leg_stride(i, dx, dy);
+    const S d = gait_units::length_mm(dx, dy, cfg_.unit_shift);
+    constexpr S share = scalar<S>(kEdgeShare);
+    return d > stride * share;
+  }
+  //! The share of a leg's longest stride beyond which a foot is at its edge.
+  static constexpr double edge_share() { return kEdgeShare; }
   const GaitTable& table() const { return table_; }
   const GaitConfig<S>& config() const { return cfg_; }
-  const SupportPolygon<S>& support() const { return support_; }
+  const SupportPolygon<S>& support() const {
+    if (support_dirty_) build_support();
+    return support_;
+  }
 
  private:
   void load_table(const GaitTable& t);
@@ -223,22 +253,7 @@ class GaitEngine {
     return down > cfg_.min_support;
   }
 
-  //! True when foot p of leg i is beyond kEdgeShare of the longest stride
-  //! it may make in its direction from home (velocity limits; the IK limit
-  //! is at 0.5 / kStrideShare = 0.556): a foot on the ground there lifts
-  //! early, or, without the support to lift, holds the body still. Never
-  //! while the command is steady (the plan keeps strides within the limits).
   bool at_edge(uint8_t i) const { return beyond_edge(i, foot_[i]); }
-  bool beyond_edge(uint8_t i, const Vec3<S>& p) const {
-    const S dx = p.x - cfg_.home[i].x, dy = p.y - cfg_.home[i].y;
-    const S r = cfg_.edge_mm[i];
-    if (abs(dx) + abs(dy) <= r) return false;  // inside the shortest stride's diamond: no product
-    const S stride = cfg_.limits.leg_stride(i, dx, dy);
-    const S d = gait_units::length_mm(dx, dy, cfg_.unit_shift);
-    constexpr S share = scalar<S>(kEdgeShare);
-    return d > stride * share;
-  }
-
   //! Where foot i lands (stance.h's touchdown_point with cached terms).
   Vec3<S> touchdown(uint8_t i);
   //! The mean stride per cycle over the next stance along the ramp.
@@ -247,6 +262,18 @@ class GaitEngine {
   void step_walk(S dt);
   void step_shift(S dt);
   void update_margin() const;
+  //! The support polygon of the feet down now (stability.h), built when
+  //! first needed after a lift-off or touch-down: gaits that do not shift
+  //! the body need it only for margin_mm().
+  void build_support() const {
+    support_.build(foot_, contact_, cfg_.leg_count, cfg_.foot_radius_mm, cfg_.unit_shift);
+    support_dirty_ = false;
+  }
+  //! The touch-down points changed: every swinging foot steers again.
+  void invalidate_touchdown() {
+    td_fresh_ = false;
+    for (uint8_t i = 0; i < kMaxLegs; ++i) settled_[i] = false;
+  }
 
   static constexpr uint8_t kNoGroup = 0xFF;
   static constexpr double kEdgeShare = 0.53;
@@ -284,8 +311,14 @@ class GaitEngine {
   uint32_t swing_elapsed_[kMaxLegs] = {};
   int32_t stance_elapsed_[kMaxLegs] = {};  // phase since touch-down (may start negative)
 
-  SupportPolygon<S> support_;
+  mutable SupportPolygon<S> support_;
+  mutable bool support_dirty_ = true;
   SupportPolygon<S> next_support_;
+  S edge_r2_[kMaxLegs] = {};  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
+  bool settled_[kMaxLegs] = {};  // swinging foot's touch-down point already at touchdown(i)
+  bool vel_fresh_ = false;       // vx_, vy_, wz_ are now_s_ x hz_
+  // Odometry step in the world frame, kept while the body does not turn.
+  S odo_dx_ = S(0), odo_dy_ = S(0), odo_wx_ = S(0), odo_wy_ = S(0);
   BodyShift<S> shift_;
   bool held_ = false;
   bool in_window_ = false;           // every foot down, shifting for the next swing

@@ -13,7 +13,7 @@ namespace strider {
 //! Takes the configuration and a gait; the robot stands (or sits).
 template <typename S>
 void GaitEngine<S>::configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting) {
-  cfg_ = config;
+  if (&config != &cfg_) cfg_ = config;
   base_ = gait;
   load_table(gait);
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
@@ -33,10 +33,19 @@ void GaitEngine<S>::configure(const GaitConfig<S>& config, const GaitTable& gait
   odo_x_ = odo_y_ = odo_yaw_ = S(0);
   odo_c_ = S(1);
   odo_s_ = S(0);
-  support_.build(foot_, contact_, cfg_.leg_count, cfg_.foot_radius_mm, cfg_.unit_shift);
+  support_dirty_ = true;
   margin_fresh_ = false;
   step_cache_.dt = S(0);
-  td_fresh_ = false;
+  invalidate_touchdown();
+  vel_fresh_ = false;
+  odo_dx_ = odo_dy_ = odo_wx_ = odo_wy_ = S(0);
+  // beyond_edge(): kEdgeShare of the shortest stride (2 edge_mm), 1 % less
+  // for rounding, squared in working units.
+  constexpr S share = scalar<S>(kEdgeShare * 2.0 * 0.99);
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
+    const S r = gait_units::to_unit(cfg_.edge_mm[i] * share, cfg_.unit_shift);
+    edge_r2_[i] = r * r;
+  }
 }
 
 template <typename S>
@@ -53,6 +62,11 @@ void GaitEngine<S>::step_transition(S dt) {
 
 template <typename S>
 void GaitEngine<S>::step_pose(S dt) {
+  // At its goal (the usual case): nothing to move, no products.
+  if (pose_.translation_mm.x == goal_pose_.translation_mm.x && pose_.translation_mm.y == goal_pose_.translation_mm.y &&
+      pose_.translation_mm.z == goal_pose_.translation_mm.z && pose_.roll_rad == goal_pose_.roll_rad &&
+      pose_.pitch_rad == goal_pose_.pitch_rad && pose_.yaw_rad == goal_pose_.yaw_rad)
+    return;
   const S dp = cfg_.pose_speed_mm_s * dt, da = cfg_.pose_rate_rad_s * dt;
   pose_.translation_mm.x += clamp(goal_pose_.translation_mm.x - pose_.translation_mm.x, -dp, dp);
   pose_.translation_mm.y += clamp(goal_pose_.translation_mm.y - pose_.translation_mm.y, -dp, dp);
@@ -75,6 +89,7 @@ void GaitEngine<S>::set_gait(const GaitTable& gait) {
   now_s_.y = now_s_.y * r;
   now_s_.yaw = now_s_.yaw * r;
   if (r > S(1)) now_s_.hz = now_s_.hz / r;
+  vel_fresh_ = false;
   step_command(S(0));
   replan();
 }
@@ -86,7 +101,7 @@ void GaitEngine<S>::load_table(const GaitTable& t) {
   duty_ = scalar<S>(double(t.duty));
   inv_swing_ = scalar<S>(1.0 / (1.0 - double(t.duty)));
   inv_stance_ = scalar<S>(1.0 / double(t.duty));
-  td_fresh_ = false;
+  invalidate_touchdown();
   uint32_t latest_end = 0;
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
     offset_[i] = phase16(double(t.offset[i]));
@@ -148,11 +163,18 @@ void GaitEngine<S>::step_command(S dt) {
     ramp_ = min_of(ramp_ + dt * hz_ * ramp_per_cycle_, S(1));
     now_s_ = lerp(from_s_, to_s_, ramp_);
     if (ramp_ >= S(1)) now_s_ = to_s_;
+    vel_fresh_ = false;
   }
-  hz_ = now_s_.hz;
-  vx_ = now_s_.x * hz_;
-  vy_ = now_s_.y * hz_;
-  wz_ = now_s_.yaw * hz_;
+  if (vel_fresh_) return;  // a steady command: the products of the last tick hold
+  // Products into locals first, then the stores: written member by member,
+  // avr-gcc 5.4 -Os clobbered the address register between two of them.
+  const Stride s = now_s_;
+  const S vx = s.x * s.hz, vy = s.y * s.hz, wz = s.yaw * s.hz;
+  hz_ = s.hz;
+  vx_ = vx;
+  vy_ = vy;
+  wz_ = wz;
+  vel_fresh_ = true;
 }
 
 //! Where foot i lands: centred on home for the travel of its coming stance
@@ -160,6 +182,16 @@ void GaitEngine<S>::step_command(S dt) {
 //! leg-independent terms computed once per change of the landing stride.
 template <typename S>
 Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
+  if (!td_fresh_ && land_s_.yaw == S(0)) {
+    // Not turning: touchdown_point() is home + the stride x duty / 2.
+    constexpr S half = scalar<S>(0.5);
+    const S k = duty_ * half;
+    td_dx_ = land_s_.x * k;
+    td_dy_ = land_s_.y * k;
+    td_cos_ = S(1);
+    td_sin_ = S(0);
+    td_fresh_ = true;
+  }
   if (!td_fresh_) {
     // touchdown_point() of a home at the origin and of (1, 0) give the
     // offset and the rotation's cosine and sine.
@@ -172,6 +204,7 @@ Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
     td_fresh_ = true;
   }
   const Vec3<S>& h = cfg_.home[i];
+  if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(h.x + td_dx_, h.y + td_dy_, h.z);
   return Vec3<S>(td_cos_ * h.x - td_sin_ * h.y + td_dx_, td_sin_ * h.x + td_cos_ * h.y + td_dy_, h.z);
 }
 
@@ -189,7 +222,7 @@ void GaitEngine<S>::update_landing() {
     const S lag = finish >= duty_ ? left - ramp_per_cycle_ * duty_ * half : left * finish * half / duty_;
     land_s_ = lerp(from_s_, to_s_, S(1) - lag);
   }
-  if (!(land_s_.x == was.x && land_s_.y == was.y && land_s_.yaw == was.yaw)) td_fresh_ = false;
+  if (!(land_s_.x == was.x && land_s_.y == was.y && land_s_.yaw == was.yaw)) invalidate_touchdown();
 }
 
 }  // namespace strider

@@ -31,10 +31,18 @@ void GaitEngine<S>::step_walk(S dt) {
   if (held_) step = BodyStep<S>::none();
   // Odometry: the step in the world frame; heading kept as cos/sin,
   // renormalised by one Newton step (no trig per tick).
-  odo_x_ += odo_c_ * step.dx_mm - odo_s_ * step.dy_mm;
-  odo_y_ += odo_s_ * step.dx_mm + odo_c_ * step.dy_mm;
+  // While the body does not turn, the world step repeats: kept, not recomputed.
+  if (!(step.dyaw == S(0) && step.dx_mm == odo_dx_ && step.dy_mm == odo_dy_)) {
+    odo_dx_ = step.dx_mm;
+    odo_dy_ = step.dy_mm;
+    odo_wx_ = odo_c_ * step.dx_mm - odo_s_ * step.dy_mm;
+    odo_wy_ = odo_s_ * step.dx_mm + odo_c_ * step.dy_mm;
+  }
+  odo_x_ += odo_wx_;
+  odo_y_ += odo_wy_;
   odo_yaw_ += step.dyaw;
   if (step.dyaw != S(0)) {
+    odo_dx_ = odo_dy_ = S(0);  // the heading changes: recompute next tick
     const S c = odo_c_ * step.cos_yaw - odo_s_ * step.sin_yaw;
     const S s = odo_s_ * step.cos_yaw + odo_c_ * step.sin_yaw;
     constexpr S half = scalar<S>(0.5);
@@ -87,6 +95,7 @@ void GaitEngine<S>::step_walk(S dt) {
     leg_inv_swing_[i] = inv_swing_;
     swing_elapsed_[i] = crossed ? uint32_t(Phase16(clock_.now() - offset_[i])) : 0u;
     target_[i] = touchdown(i);
+    settled_[i] = true;
     apex_[i] = swing_apex_mm(cfg_.shape, hypot(target_[i].x - lift_[i].x, target_[i].y - lift_[i].y),
                              cfg_.step_height_mm);
     changed = true;
@@ -96,20 +105,23 @@ void GaitEngine<S>::step_walk(S dt) {
   const S max_step = cfg_.target_speed_mm_s * dt;
   for (uint8_t i = 0; i < n; ++i) {
     if (contact_[i]) continue;
-    const Vec3<S> want = touchdown(i);
-    target_[i].x += clamp(want.x - target_[i].x, -max_step, max_step);
-    target_[i].y += clamp(want.y - target_[i].y, -max_step, max_step);
+    if (!settled_[i]) {
+      const Vec3<S> want = touchdown(i);
+      target_[i].x += clamp(want.x - target_[i].x, -max_step, max_step);
+      target_[i].y += clamp(want.y - target_[i].y, -max_step, max_step);
+      settled_[i] = target_[i].x == want.x && target_[i].y == want.y;
+    }
     const SwingPoint<S> sp = swing_point(cfg_.shape, phase_to<S>(swing_elapsed_[i]) * leg_inv_swing_[i]);
     foot_[i] = Vec3<S>(lift_[i].x + (target_[i].x - lift_[i].x) * sp.u,
                        lift_[i].y + (target_[i].y - lift_[i].y) * sp.u,
                        lift_[i].z + (cfg_.home[i].z - lift_[i].z) * sp.u + apex_[i] * sp.w);
   }
-  for (uint8_t i = 0; i < n; ++i) {
+  for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
     if (!contact_[i]) continue;
     const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
     foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
   }
-  if (changed) support_.build(foot_, contact_, n, cfg_.foot_radius_mm, cfg_.unit_shift);
+  if (changed) support_dirty_ = true;
   step_shift(dt);
 
   if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
@@ -133,6 +145,7 @@ void GaitEngine<S>::step_shift(S dt) {
   bool any_swing = false;
   for (uint8_t i = 0; i < n; ++i)
     if (!contact_[i]) any_swing = true;
+  if (support_dirty_) build_support();
   S tx = S(0), ty = S(0);
   if (any_swing) {
     in_window_ = false;
@@ -193,7 +206,7 @@ void GaitEngine<S>::update_margin() const {
     cx = bp.translation_mm.x + com.x;
     cy = bp.translation_mm.y + com.y;
   }
-  margin_ = support_.margin(foot_, cx, cy);
+  margin_ = support().margin(foot_, cx, cy);
 }
 
 }  // namespace strider

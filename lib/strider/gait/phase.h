@@ -78,6 +78,9 @@ class PhaseClock {
   bool advance(Fixed dt, Fixed hz) {
     if (dt.raw() <= 0 || hz.raw() <= 0) return advance_q32(0);
     const uint32_t a = uint32_t(dt.raw()), b = uint32_t(hz.raw());
+    // A tick below 62 ms at below 16 Hz cannot reach the cap ((2^12 - 1)
+    // (2^20 - 1) < 0xFFFF0000): no 32-bit division (~600 cycles on the AVR).
+    if (a < 4096u && b < 1048576u) return advance_q32(a * b);
     return advance_q32(a > 0xFFFF0000u / b ? 0xFFFF0000u : a * b);
   }
 

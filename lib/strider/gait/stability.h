@@ -44,6 +44,9 @@ class SupportPolygon {
     for (uint8_t i = 0; i < n && i < kMaxLegs; ++i)
       if (contact[i]) pts[m++] = i;
     if (m == 0) return;
+    // The feet in working units once (the wrapping visits each many times).
+    Vec3<S> pu[kMaxLegs];
+    for (uint8_t k = 0; k < m; ++k) pu[pts[k]] = at(feet, pts[k]);
     // Gift wrapping from the lowest-x (then lowest-y) foot, counter-clockwise.
     uint8_t start = pts[0];
     for (uint8_t k = 1; k < m; ++k) {
@@ -58,24 +61,25 @@ class SupportPolygon {
         const uint8_t i = pts[k];
         if (i == current) continue;
         if (next == current) { next = i; continue; }
-        const S c = cross(feet, current, next, i);
+        const S c = cross(pu, current, next, i);
         // i is right of current->next: wrap tighter; collinear: take the farther.
-        if (c < S(0) || (c == S(0) && dist2(feet, current, i) > dist2(feet, current, next))) next = i;
+        if (c < S(0) || (c == S(0) && dist2(pu, current, i) > dist2(pu, current, next))) next = i;
       }
       current = next;
     } while (current != start && count_ < m);
-    if (count_ == 2 && same_point(feet, idx_[0], idx_[1])) count_ = 1;
+    if (count_ == 2 && dist2(pu, idx_[0], idx_[1]) == S(0)) count_ = 1;
+    Vec3<S> e[kMaxLegs];
     for (uint8_t k = 0; k < count_; ++k) {
-      const Vec3<S> e = edge(feet, k);
-      const S len = sqrt(e.x * e.x + e.y * e.y);
+      e[k] = pu[idx_[next(k)]] - pu[idx_[k]];
+      const S len = sqrt(e[k].x * e[k].x + e[k].y * e[k].y);
       inv_len_[k] = len > S(0) ? S(1) / len : S(0);
     }
     // Shrinking by d moves vertex k (edges k-1 in, k out) to a_k + d n_k + s u_k
     // on both shrunk lines: n_{k-1} . (d n_k + s u_k) = d gives
     // s = d (1 - n_{k-1} . n_k) / (n_{k-1} . u_k), a constant of the shape.
     for (uint8_t k = 0; count_ >= 3 && k < count_; ++k) {
-      const uint8_t j = uint8_t((k + count_ - 1) % count_);
-      const Vec3<S> uk = edge(feet, k) * inv_len_[k], uj = edge(feet, j) * inv_len_[j];
+      const uint8_t j = k == 0 ? uint8_t(count_ - 1) : uint8_t(k - 1);
+      const Vec3<S> uk = e[k] * inv_len_[k], uj = e[j] * inv_len_[j];
       const S nn = uj.x * uk.x + uj.y * uk.y;  // n_j . n_k = u_j . u_k
       const S nu = uj.x * uk.y - uj.y * uk.x;  // n_j . u_k = cross(u_j, u_k) > 0
       corner_[k] = nu > S(0) ? (S(1) - nn) / nu : S(0);
@@ -146,19 +150,21 @@ class SupportPolygon {
 
  private:
   S unit(S mm) const { return gait_units::to_unit(mm, shift_); }
+  //! The vertex after k (no modulo: a 16-bit division on the AVR).
+  uint8_t next(uint8_t k) const { return uint8_t(k + 1) == count_ ? uint8_t(0) : uint8_t(k + 1); }
   Vec3<S> at(const Vec3<S>* feet, uint8_t i) const { return Vec3<S>(unit(feet[i].x), unit(feet[i].y), S(0)); }
   Vec3<S> edge(const Vec3<S>* feet, uint8_t k) const {
-    return at(feet, idx_[(k + 1) % count_]) - at(feet, idx_[k]);
+    return at(feet, idx_[next(k)]) - at(feet, idx_[k]);
   }
-  S cross(const Vec3<S>* feet, uint8_t o, uint8_t a, uint8_t b) const {
-    const Vec3<S> u = at(feet, a) - at(feet, o), v = at(feet, b) - at(feet, o);
+  //! Cross product and squared distance of feet already in working units.
+  static S cross(const Vec3<S>* pu, uint8_t o, uint8_t a, uint8_t b) {
+    const Vec3<S> u = pu[a] - pu[o], v = pu[b] - pu[o];
     return u.x * v.y - u.y * v.x;
   }
-  S dist2(const Vec3<S>* feet, uint8_t a, uint8_t b) const {
-    const Vec3<S> d = at(feet, b) - at(feet, a);
+  static S dist2(const Vec3<S>* pu, uint8_t a, uint8_t b) {
+    const Vec3<S> d = pu[b] - pu[a];
     return d.x * d.x + d.y * d.y;
   }
-  bool same_point(const Vec3<S>* feet, uint8_t a, uint8_t b) const { return dist2(feet, a, b) == S(0); }
   //! Signed distance of p [unit] from edge k's line, positive inside (left).
   S line_distance(const Vec3<S>* feet, uint8_t k, const Vec3<S>& p) const {
     const Vec3<S> e = edge(feet, k), r = p - at(feet, idx_[k]);
@@ -201,13 +207,16 @@ class SupportPolygon {
       return 4;
     }
     const S shrink = max_of(want - r, S(0));
+    // The vertices in working units once (each is in two edges).
+    Vec3<S> a[kMaxLegs];
+    for (uint8_t k = 0; k < count_; ++k) a[k] = at(feet, idx_[k]);
     for (uint8_t k = 0; k < count_; ++k) {
-      u[k] = edge(feet, k) * inv_len_[k];
+      u[k] = (a[next(k)] - a[k]) * inv_len_[k];
       const Vec3<S> nk(-u[k].y, u[k].x, S(0));
-      v[k] = at(feet, idx_[k]) + (nk + u[k] * corner_[k]) * shrink;
+      v[k] = a[k] + (nk + u[k] * corner_[k]) * shrink;
     }
     for (uint8_t k = 0; k < count_; ++k) {
-      const Vec3<S> d = v[(k + 1) % count_] - v[k];
+      const Vec3<S> d = v[next(k)] - v[k];
       len[k] = d.x * u[k].x + d.y * u[k].y;
     }
     return count_;

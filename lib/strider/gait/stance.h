@@ -64,6 +64,8 @@ struct BodyStep {
   //! Rz(-dyaw) (p - d); z is unchanged.
   Vec3<S> move_ground_point(const Vec3<S>& p) const {
     const S x = p.x - dx_mm, y = p.y - dy_mm;
+    // Not turning: the rotation is the identity (the same result, no product).
+    if (sin_yaw == S(0) && cos_yaw == S(1)) return Vec3<S>(x, y, p.z);
     return Vec3<S>(cos_yaw * x + sin_yaw * y, cos_yaw * y - sin_yaw * x, p.z);
   }
 };

@@ -39,6 +39,7 @@
 #include "../kinematics/any_leg.h"
 #include "reach_projection.h"
 #include "swing_trajectory.h"
+#include "velocity_limit_encoding.h"
 
 namespace strider {
 
@@ -69,12 +70,19 @@ struct VelocityLimits {
   //! sideways command is dropped (and reported as limited); turning stays,
   //! its sideways part reported by the walker as clamped.
   bool sideways = true;
-  S stride_mm[kMaxLegs][kDirections];  //!< longest stride of leg i along direction k [mm]
+  //! Longest stride of leg i along direction k, in 1/32 mm
+  //! (velocity_limit_encoding.h): half the RAM of S, exact in both scalars.
+  uint16_t stride_code[kMaxLegs][kDirections] = {};
   S min_hz = S(1);                     //!< default step rate, 1 / cycle_s [Hz]
   S preferred_stride_mm = S(0);        //!< step_length_mm [mm]
   S lift_ms = S(0);                    //!< servo time of a swing's lift alone [ms]
   S swing_ms_per_mm = S(0);            //!< servo time of a swing per mm of stride [ms/mm]
   S stance_ms_per_mm = S(0);           //!< servo time of a stance per mm of stride [ms/mm]
+
+  //! Leg i's longest stride along direction k [mm].
+  S stride_mm(uint8_t leg, uint8_t k) const { return velocity_limit_encoding::stride_of(stride_code[leg][k], S()); }
+  //! Sets it [mm] (rounded to 1/32 mm).
+  void set_stride_mm(uint8_t leg, uint8_t k, S mm) { stride_code[leg][k] = velocity_limit_encoding::stride_code(mm); }
 
   //! Leg i's longest stride along (dx, dy) (any length, not both 0) [mm],
   //! interpolated between the two nearest of the 16 directions, less twice
@@ -86,7 +94,7 @@ struct VelocityLimits {
     uint8_t k = 0;
     while (k + 1 < kDirections && S(k + 1) <= x) ++k;
     const S f = clamp(x - S(k), S(0), S(1));
-    const S lo = stride_mm[leg][k], hi = stride_mm[leg][(k + 1) % kDirections];
+    const S lo = stride_mm(leg, k), hi = stride_mm(leg, uint8_t((k + 1) % kDirections));
     return max_of(lo + (hi - lo) * f - budget_mm * S(2), S(0));
   }
 
@@ -246,7 +254,7 @@ VelocityLimits<S> compute_velocity_limits(const RobotModel& model, const AnyLeg<
     const uint8_t twin = d::mirror_twin(model, i);
     if (twin < i) {
       for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k)
-        lim.stride_mm[i][k] = lim.stride_mm[twin][(VelocityLimits<S>::kDirections - k) % VelocityLimits<S>::kDirections];
+        lim.stride_code[i][k] = lim.stride_code[twin][(VelocityLimits<S>::kDirections - k) % VelocityLimits<S>::kDirections];
       continue;
     }
     for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) {
@@ -259,7 +267,7 @@ VelocityLimits<S> compute_velocity_limits(const RobotModel& model, const AnyLeg<
         if (d::stride_ok(legs[i], proj, home[i], dx, dy, mid, shape, step_height_mm)) lo = mid;
         else hi = mid;
       }
-      lim.stride_mm[i][k] = lo * scalar<S>(kStrideShare);
+      lim.set_stride_mm(i, k, lo * scalar<S>(kStrideShare));
       if (lo == S(0)) continue;
       // Joint rates of a swing in place and of this longest stride.
       typename AnyLeg<S>::Joints still[9], q[11];

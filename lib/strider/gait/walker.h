@@ -45,8 +45,10 @@ class Walker {
   //! calls) and the engine. Returns false for a gait of another leg count.
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
                  bool sitting = false) {
-    if (!build_legs(model)) return false;
-    return configure(model, gait, make_gait_config(model, legs_, params, shape), sitting);
+    if (gait.leg_count != model.leg_count || !build_legs(model)) return false;
+    engine_.configure(model, legs_, params, shape, gait, sitting);  // the configuration built in place
+    reset_legs(model);
+    return true;
   }
 
   //! The same with a configuration built before (make_gait_config): no IK
@@ -56,12 +58,7 @@ class Walker {
     if (gait.leg_count != model.leg_count || config.leg_count != model.leg_count) return false;
     if (model_ != &model && !build_legs(model)) return false;
     engine_.configure(config, gait, sitting);
-    for (uint8_t i = 0; i < model.leg_count; ++i) {
-      out_[i].q = typename AnyLeg<S>::Joints();
-      for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
-      out_[i].foot_mm = engine_.foot(i);
-    }
-    solve();
+    reset_legs(model);
     return true;
   }
 
@@ -78,6 +75,9 @@ class Walker {
   }
 
   const LegResult<S>& leg(uint8_t i) const { return out_[i]; }
+  //! A body-frame point [mm] in leg i's frame, as the walker computes it
+  //! (LegMount::body_to_leg with fewer products for the usual mounts).
+  Vec3<S> to_leg(uint8_t i, const Vec3<S>& body_mm) const { return to_leg_unchecked(i, body_mm); }
   //! Static stability margin [mm] (negative: CoM outside the support).
   S margin_mm() const { return engine_.margin_mm(); }
   //! The worst status over all legs this tick.
@@ -92,28 +92,81 @@ class Walker {
     const BodyPose<S> pose = engine_.body_pose();
     const bool turned = pose.roll_rad != S(0) || pose.pitch_rad != S(0) || pose.yaw_rad != S(0);
     const Transform<S> body = turned ? body_transform(pose) : Transform<S>::identity();
+    // The body at the stance frame's origin (a trot or tripod standing tall):
+    // the feet are already in the body frame.
+    const Vec3<S>& shift = pose.translation_mm;
+    const bool still = shift.x == S(0) && shift.y == S(0) && shift.z == S(0);
     for (uint8_t i = 0; i < leg_count(); ++i) {
       LegResult<S>& r = out_[i];
       const Vec3<S>& p = engine_.foot(i);
-      r.target_mm = turned ? foot_in_body(body, p) : p - pose.translation_mm;
+      r.target_mm = turned ? foot_in_body(body, p) : still ? p : p - pose.translation_mm;
       r.contact = engine_.contact(i);
-      const Vec3<S> leg_target = legs_[i].mount().body_to_leg(r.target_mm);
-      S moved;
-      const Vec3<S> t = proj_.apply(leg_target, moved);
+      const Vec3<S> leg_target = to_leg_unchecked(i, r.target_mm);
+      S moved = S(0);
+      const Vec3<S> t = proj_.projects() ? proj_.apply(leg_target, moved) : leg_target;
       r.clamp_mm = moved;
       Vec3<S> reached;
       r.ik_status = legs_[i].ik(t, r.q, reached);
-      if (r.ik_status != IkStatus::kUnreachable) r.foot_mm = legs_[i].mount().leg_to_body(reached);
+      // A target reached as given and not projected is the body-frame target
+      // itself: no transform back (4 products) for the usual 3-DOF foot.
+      if (r.ik_status != IkStatus::kUnreachable)
+        r.foot_mm = moved == S(0) && same(reached, leg_target) ? r.target_mm : to_body(i, reached);
       constexpr S tolerance = scalar<S>(kClampToleranceMm);
-      const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
+      const bool projected = proj_.projects();  // else t is leg_target and nothing slid
+      const bool slid = projected && (r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance);
       r.status = worst(r.ik_status, slid ? IkStatus::kClamped : IkStatus::kOk);
     }
   }
 
+  void reset_legs(const RobotModel& model) {
+    for (uint8_t i = 0; i < model.leg_count; ++i) {
+      out_[i].q = typename AnyLeg<S>::Joints();
+      for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
+      out_[i].foot_mm = engine_.foot(i);
+    }
+    solve();
+  }
+
+  // LegMount's transforms with fewer products for the usual mounts: turned
+  // by 0 degrees (the quadrupeds) or +-90 (a hexapod's middle legs) none,
+  // products by 0 and 1 being exact (float's cos 90 deg, 4e-8, taken as 0);
+  // by +-45 or +-135 degrees (cos = +-sin) two instead of four, within a
+  // rounding step of LegMount's (test/gait).
+  enum MountTurn : uint8_t { kTurned = 0, kStraight = 1, kLeft = 2, kRight = 3, kDiagonal = 4, kAntiDiagonal = 5 };
+  static uint8_t turn_of(const LegMount<S>& m) {
+    constexpr S tiny = scalar<S>(1e-6);
+    if (m.sin_yaw == S(0) && m.cos_yaw == S(1)) return kStraight;
+    if (abs(m.cos_yaw) <= tiny && m.sin_yaw == S(1)) return kLeft;
+    if (abs(m.cos_yaw) <= tiny && m.sin_yaw == S(-1)) return kRight;
+    if (m.cos_yaw == m.sin_yaw) return kDiagonal;
+    if (m.cos_yaw == -m.sin_yaw) return kAntiDiagonal;
+    return kTurned;
+  }
+  Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
+    const LegMount<S>& m = legs_[i].mount();
+    if (turn_[i] == kTurned) return m.body_to_leg(p);
+    const Vec3<S> d = p - m.origin_mm;
+    switch (turn_[i]) {
+      case kStraight: return d;
+      case kLeft: return Vec3<S>(d.y, -d.x, d.z);
+      case kRight: return Vec3<S>(-d.y, d.x, d.z);
+      case kDiagonal: return Vec3<S>(m.cos_yaw * (d.x + d.y), m.cos_yaw * (d.y - d.x), d.z);
+      default: return Vec3<S>(m.cos_yaw * (d.x - d.y), m.cos_yaw * (d.x + d.y), d.z);
+    }
+  }
+  Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const {
+    const LegMount<S>& m = legs_[i].mount();
+    return turn_[i] == kStraight ? p + m.origin_mm : m.leg_to_body(p);
+  }
+
+  static bool same(const Vec3<S>& a, const Vec3<S>& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
   bool build_legs(const RobotModel& model) {
     model_ = nullptr;
-    for (uint8_t i = 0; i < model.leg_count; ++i)
+    for (uint8_t i = 0; i < model.leg_count; ++i) {
       if (!AnyLeg<S>::from_model(model, i, legs_[i])) return false;
+      turn_[i] = turn_of(legs_[i].mount());
+    }
     proj_ = ReachProjection<S>::make(model);
     model_ = &model;
     return true;
@@ -121,6 +174,7 @@ class Walker {
 
   const RobotModel* model_ = nullptr;
   AnyLeg<S> legs_[kMaxLegs];
+  uint8_t turn_[kMaxLegs] = {};  // MountTurn of each leg's mount
   ReachProjection<S> proj_{};
   GaitEngine<S> engine_;
   LegResult<S> out_[kMaxLegs];

@@ -1,0 +1,66 @@
+//! Stored velocity limits: the limits of a built-in model at its gait
+//! defaults, read from the table generated on the host
+//! (velocity_limit_table.h) instead of searched with IK at start-up.
+//!
+//! The search (velocity_limits.h) costs thousands of IK calls: 1.4-4 s and
+//! 2.5 KB of stack on the AVR, more than a watchdog or the firmware's stack
+//! allow. The table holds what the float search gives for each model with
+//! its own swing shape, step height, step length and cycle
+//! (gait_params.h); any other model or parameters still need the search.
+//! Fixed gets the float search's strides (within 1 mm or 1 % of its own
+//! search, test/gait), converted exactly.
+#ifndef STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
+#define STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
+
+#include "gait_params.h"
+#include "velocity_limit_encoding.h"
+#include "velocity_limit_table.h"
+#include "velocity_limits.h"
+
+namespace strider {
+
+//! The index of `model` in kAllRobots when it is that very model and
+//! `params` with `shape` are its defaults; kRobotCount otherwise.
+inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& params, SwingShape shape) {
+  for (uint8_t r = 0; r < kRobotCount; ++r) {
+    if (kAllRobots[r] != &model) continue;
+    const GaitParams& d = kGaitParams[r];
+    const bool same = shape == d.shape && params.step_height_mm == d.step_height_mm &&
+                      params.step_length_mm == d.step_length_mm && params.cycle_s == d.cycle_s;
+    return same ? r : kRobotCount;
+  }
+  return kRobotCount;
+}
+
+//! Fills `out` from the table for `model` with `params` and `shape`, as
+//! compute_velocity_limits() would (min_hz, preferred stride, sideways
+//! included). Returns false, `out` untouched, when the table has no entry.
+template <typename S>
+bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, SwingShape shape,
+                            VelocityLimits<S>& out) {
+  namespace enc = velocity_limit_encoding;
+  const uint8_t r = stored_limits_index(model, params, shape);
+  if (r >= kRobotCount) return false;
+  using T = detail::VelocityLimitTables<>;
+  out.leg_count = model.leg_count;
+  out.sideways = model.kind != LegKind::kPlanar;
+  out.min_hz = S(1) / scalar<S>(params.cycle_s);
+  out.preferred_stride_mm = scalar<S>(params.step_length_mm);
+  constexpr uint8_t kDirections = VelocityLimits<S>::kDirections;
+  for (uint8_t i = 0; i < kMaxLegs; ++i)
+    for (uint8_t k = 0; k < kDirections; ++k)
+      out.stride_code[i][k] = flash_u16(&T::kStride[r][i][0], k);
+  S servo[3];
+  for (uint8_t j = 0; j < 3; ++j) {
+    const uint32_t lo = flash_u16(T::kServo[r], uint16_t(2 * j)), hi = flash_u16(T::kServo[r], uint16_t(2 * j + 1));
+    servo[j] = enc::q16_of(lo | (hi << 16), S());
+  }
+  out.lift_ms = servo[0];
+  out.swing_ms_per_mm = servo[1];
+  out.stance_ms_per_mm = servo[2];
+  return true;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_STORED_VELOCITY_LIMITS_H

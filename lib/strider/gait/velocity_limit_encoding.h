@@ -1,0 +1,48 @@
+//! How the generated velocity-limit table (velocity_limit_table.h) stores
+//! its numbers, and how VelocityLimits keeps its strides in RAM: 16-bit
+//! words that convert to float and Fixed without a division. Strides in
+//! 1/32 mm (0.03 mm, far below the search's 0.5 mm; up to 2047 mm), servo
+//! figures in Q16.16.
+#ifndef STRIDER_GAIT_VELOCITY_LIMIT_ENCODING_H
+#define STRIDER_GAIT_VELOCITY_LIMIT_ENCODING_H
+
+#include <stdint.h>
+
+#include "../math/scalar.h"
+
+namespace strider {
+namespace velocity_limit_encoding {
+
+//! Stride codes per millimetre (a power of two: exact in Fixed).
+constexpr uint16_t kStrideUnitsPerMm = 32;
+//! Fixed raw (Q16.16) per code: 2^16 / 32.
+constexpr uint8_t kStrideRawShift = 11;
+
+//! A stride [mm] in [0, 2047.97] as its code, rounded (negative: 0).
+inline uint16_t stride_code(float mm) {
+  const float v = mm * float(kStrideUnitsPerMm) + 0.5f;
+  return v <= 0.0f ? uint16_t(0) : v >= 65535.0f ? uint16_t(65535) : uint16_t(v);
+}
+inline uint16_t stride_code(Fixed mm) {
+  const int32_t raw = mm.raw();
+  if (raw <= 0) return 0;
+  const uint32_t v = (uint32_t(raw) + (uint32_t(1) << (kStrideRawShift - 1))) >> kStrideRawShift;
+  return v >= 65535u ? uint16_t(65535) : uint16_t(v);
+}
+//! A non-negative value as Q16.16, rounded (host side).
+inline uint32_t q16_code(float v) {
+  const double q = double(v) * 65536.0 + 0.5;
+  return q <= 0.0 ? 0u : q >= 2147483647.0 ? 2147483647u : uint32_t(q);
+}
+
+//! The stride [mm] of a code.
+inline float stride_of(uint16_t code, float) { return float(code) * (1.0f / float(kStrideUnitsPerMm)); }
+inline Fixed stride_of(uint16_t code, Fixed) { return Fixed::from_raw(int32_t(uint32_t(code) << kStrideRawShift)); }
+//! The value of a Q16.16 code.
+inline float q16_of(uint32_t code, float) { return float(code) * (1.0f / 65536.0f); }
+inline Fixed q16_of(uint32_t code, Fixed) { return Fixed::from_raw(int32_t(code)); }
+
+}  // namespace velocity_limit_encoding
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_VELOCITY_LIMIT_ENCODING_H
