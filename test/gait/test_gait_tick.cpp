@@ -68,8 +68,16 @@ TEST(StoredVelocityLimits, OnlyForBuiltInModelsAtTheirDefaults) {
   p = strider::kGaitParams[3];
   p.cycle_s *= 2.0f;
   EXPECT_FALSE(strider::stored_velocity_limits(m, p, p.shape, out));
-  const RobotModel copy = m;  // another model with the same numbers: searched
-  EXPECT_FALSE(strider::stored_velocity_limits(copy, strider::kGaitParams[3], strider::kGaitParams[3].shape, out));
+  // A copy with the same name and numbers has the same limits: stored. One
+  // with the same name but another geometry is searched.
+  const RobotModel copy = m;
+  EXPECT_TRUE(strider::stored_velocity_limits(copy, strider::kGaitParams[3], strider::kGaitParams[3].shape, out));
+  RobotModel longer = m;
+  longer.links.l2_mm += 5.0f;
+  EXPECT_FALSE(strider::stored_velocity_limits(longer, strider::kGaitParams[3], strider::kGaitParams[3].shape, out));
+  RobotModel wider = m;
+  wider.legs[0].stand_mm.x += 1.0f;
+  EXPECT_FALSE(strider::stored_velocity_limits(wider, strider::kGaitParams[3], strider::kGaitParams[3].shape, out));
   EXPECT_FALSE(strider::stored_velocity_limits(*strider::kAllRobots[2], strider::kGaitParams[3],
                                                strider::kGaitParams[3].shape, out));
 }

@@ -54,7 +54,9 @@ int main() {
   std::printf("  //! Longest stride of leg i along direction k of robot r (kAllRobots order).\n");
   std::printf("  static const uint16_t kStride[%d][%d][%d];\n", int(kRobotCount), int(kMaxLegs), kDirections);
   std::printf("  //! lift_ms, swing_ms_per_mm, stance_ms_per_mm of robot r.\n");
-  std::printf("  static const uint16_t kServo[%d][6];\n};\n\n", int(kRobotCount));
+  std::printf("  static const uint16_t kServo[%d][6];\n", int(kRobotCount));
+  std::printf("  //! Geometry fingerprint of robot r (velocity_limit_encoding.h).\n");
+  std::printf("  static const uint16_t kGeometry[%d][%d];\n};\n\n", int(kRobotCount), int(enc::kFingerprintWords));
   std::printf("template <typename Dummy>\nconst uint16_t VelocityLimitTables<Dummy>::kStride[%d][%d][%d] STRIDER_PROGMEM = {\n",
               int(kRobotCount), int(kMaxLegs), kDirections);
   VelocityLimits<float> all[kRobotCount];
@@ -82,6 +84,16 @@ int main() {
       const uint32_t q = enc::q16_code(v[j]);
       std::printf("%s%u, %u", j ? ", " : "", unsigned(q & 0xFFFFu), unsigned(q >> 16));
     }
+    std::printf("},  // %s\n", strider::kAllRobots[r]->name);
+  }
+  std::printf("};\n\n");
+  std::printf("template <typename Dummy>\nconst uint16_t VelocityLimitTables<Dummy>::kGeometry[%d][%d] STRIDER_PROGMEM = {\n",
+              int(kRobotCount), int(enc::kFingerprintWords));
+  for (uint8_t r = 0; r < kRobotCount; ++r) {
+    uint16_t print[enc::kFingerprintWords];
+    enc::geometry_fingerprint(*strider::kAllRobots[r], print);
+    std::printf("    {");
+    for (int k = 0; k < enc::kFingerprintWords; ++k) std::printf("%s%u", k ? ", " : "", unsigned(print[k]));
     std::printf("},  // %s\n", strider::kAllRobots[r]->name);
   }
   std::printf("};\n\n}  // namespace detail\n}  // namespace strider\n\n#endif  // STRIDER_GAIT_VELOCITY_LIMIT_TABLE_H\n");

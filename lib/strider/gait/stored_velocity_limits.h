@@ -12,6 +12,8 @@
 #ifndef STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
 #define STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
 
+#include <string.h>
+
 #include "gait_params.h"
 #include "velocity_limit_encoding.h"
 #include "velocity_limit_table.h"
@@ -19,12 +21,20 @@
 
 namespace strider {
 
-//! The index of `model` in kAllRobots when it is that very model and
-//! `params` with `shape` are its defaults; kRobotCount otherwise.
+//! The index of `model` in kAllRobots when it is that model (same name and
+//! geometry fingerprint) and `params` with `shape` are its defaults;
+//! kRobotCount otherwise. Compares names, not addresses: taking the address
+//! of every built-in model would put all of them in the AVR's RAM.
 inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& params, SwingShape shape) {
+  namespace enc = velocity_limit_encoding;
+  using T = detail::VelocityLimitTables<>;
   for (uint8_t r = 0; r < kRobotCount; ++r) {
-    if (kAllRobots[r] != &model) continue;
     const GaitParams& d = kGaitParams[r];
+    if (strcmp(d.robot, model.name) != 0) continue;
+    uint16_t print[enc::kFingerprintWords];
+    enc::geometry_fingerprint(model, print);
+    for (uint8_t k = 0; k < enc::kFingerprintWords; ++k)
+      if (flash_u16(T::kGeometry[r], k) != print[k]) return kRobotCount;
     const bool same = shape == d.shape && params.step_height_mm == d.step_height_mm &&
                       params.step_length_mm == d.step_length_mm && params.cycle_s == d.cycle_s;
     return same ? r : kRobotCount;

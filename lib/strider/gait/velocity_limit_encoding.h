@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 #include "../math/scalar.h"
+#include "../robots/robot_model.h"
 
 namespace strider {
 namespace velocity_limit_encoding {
@@ -41,6 +42,25 @@ inline Fixed stride_of(uint16_t code, Fixed) { return Fixed::from_raw(int32_t(ui
 //! The value of a Q16.16 code.
 inline float q16_of(uint32_t code, float) { return float(code) * (1.0f / 65536.0f); }
 inline Fixed q16_of(uint32_t code, Fixed) { return Fixed::from_raw(int32_t(code)); }
+
+//! Words of a model's geometry fingerprint.
+constexpr uint8_t kFingerprintWords = 8;
+
+//! A model's geometry in a few words (kind, legs, links and the first leg's
+//! mount and standing foot in 1/16 mm): a stored table entry is used only for
+//! a model that matches it, without the firmware having to keep every
+//! built-in model in RAM to compare addresses.
+inline void geometry_fingerprint(const RobotModel& m, uint16_t* out) {
+  const auto q16 = [](float mm) { return uint16_t(int16_t(mm * 16.0f + (mm < 0.0f ? -0.5f : 0.5f))); };
+  out[0] = uint16_t(uint8_t(m.kind) | (uint16_t(m.leg_count) << 8));
+  out[1] = q16(m.links.l1_mm);
+  out[2] = q16(m.links.l2_mm);
+  out[3] = q16(m.links.l3_mm);
+  out[4] = q16(m.links.d1_mm);
+  out[5] = q16(m.legs[0].mount_mm.x);
+  out[6] = q16(m.legs[0].stand_mm.x);
+  out[7] = q16(m.legs[0].stand_mm.z);
+}
 
 }  // namespace velocity_limit_encoding
 }  // namespace strider

@@ -27,6 +27,8 @@ struct VelocityLimitTables {
   static const uint16_t kStride[5][6][16];
   //! lift_ms, swing_ms_per_mm, stance_ms_per_mm of robot r.
   static const uint16_t kServo[5][6];
+  //! Geometry fingerprint of robot r (velocity_limit_encoding.h).
+  static const uint16_t kGeometry[5][8];
 };
 
 template <typename Dummy>
@@ -80,6 +82,15 @@ const uint16_t VelocityLimitTables<Dummy>::kServo[5][6] STRIDER_PROGMEM = {
     {24330, 121, 55518, 1, 25320, 0},  // dog12
     {33755, 207, 61500, 3, 7125, 2},  // hexapod18
     {28546, 118, 42092, 2, 54274, 1},  // spider12
+};
+
+template <typename Dummy>
+const uint16_t VelocityLimitTables<Dummy>::kGeometry[5][8] STRIDER_PROGMEM = {
+    {1024, 880, 1440, 0, 0, 560, 1793, 64384},  // sprawl8
+    {1025, 1120, 1120, 0, 0, 1200, 1200, 63776},  // mammal8
+    {1027, 704, 4480, 4432, 0, 4800, 4800, 59936},  // dog12
+    {1538, 480, 1360, 2000, 512, 1400, 2758, 63776},  // hexapod18
+    {1026, 440, 880, 1240, 0, 568, 1586, 64736},  // spider12
 };
 
 }  // namespace detail
