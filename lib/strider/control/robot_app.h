@@ -97,6 +97,7 @@ class RobotApp {
     announce(link);
     if (!ok_) return false;
     stage_.set_settings(controller_.settings());
+    stage_.apply_pending(out_);
     stage_.begin_soft_start(now_us / 1000u);
     last_tick_us_ = now_us;
     return true;

@@ -1,5 +1,5 @@
 //! ServoStage: the last step before the servo boards. Every frame it maps the
-//! walker's joints to PCA9685 ticks (servo_map.h, with the live trims), moves
+//! walker's joints to PCA9685 ticks (servo_tick_map.h, with the live trims), moves
 //! each output towards its target by at most what the servo can turn in one
 //! frame (so a new gait, pose or trim never makes the PCA9685 jump: the
 //! board switches to a new width at once, the servo would slam), and writes
@@ -20,6 +20,7 @@
 #include "../gait/walker.h"
 #include "channel_map.h"
 #include "servo_frame.h"
+#include "servo_tick_map.h"
 
 namespace strider {
 
@@ -70,6 +71,14 @@ class ServoStage {
   const Pca9685Timing& timing() const { return timing_; }
   ServoStatus last_status() const { return status_; }
 
+  //! Applies pending settings now (prescale to the boards, the fast map's
+  //! constants: float work, ~10 ms on the AVR), e.g. at start-up, so that no
+  //! control tick pays for it. frame() does it too when settings change.
+  template <typename Output>
+  void apply_pending(Output& out) {
+    if (pwm_pending_) apply_pwm(out);
+  }
+
   //! One frame at now_ms: soft start, map, slew, write; ends with out.flush().
   template <typename Output>
   ServoStatus frame(const Walker<S>& walker, uint32_t now_ms, Output& out) {
@@ -90,8 +99,8 @@ class ServoStage {
       const LegResult<S>& r = walker.leg(leg);
       for (uint8_t j = 0; j < dof_; ++j) {
         const uint8_t k = uint8_t(leg * dof_ + j);
-        const S trim = trim_from_decideg<S>(settings_.trim_decideg[k]);
-        const ServoCommand cmd = map_joint(channels_[k], r.q[j], trim, timing_);
+        const ServoCommand cmd = fast_ ? tick_map_.map(k, r.q[j])
+                                       : map_joint(channels_[k], r.q[j], trim_from_decideg<S>(settings_.trim_decideg[k]), timing_);
         worst_status = worst(worst_status, cmd.status);
         uint16_t next = cmd.ticks;
         if (on_[k]) {
@@ -125,6 +134,9 @@ class ServoStage {
       ticks_[k] = timing_.pulse_ticks(uint16_t(us_x64 >> 6));
       out.write_ticks(channels_[k].channel, ticks_[k]);
     }
+    // The per-joint constants of the fast map (one multiply per joint); a
+    // channel it cannot represent keeps the general map_joint() path.
+    fast_ = tick_map_.configure(channels_, count_, settings_, timing_) == ServoTickStatus::kOk;
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
       const float us = speed_deg_s_[j] * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f);
@@ -134,6 +146,8 @@ class ServoStage {
   }
 
   ServoChannel<S> channels_[kMaxServoJoints];
+  ServoTickMap<S> tick_map_;
+  bool fast_ = false;
   uint16_t ticks_[kMaxServoJoints];
   bool on_[kMaxServoJoints];
   uint16_t step_[kMaxLegDof] = {1, 1, 1};
