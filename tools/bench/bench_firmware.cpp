@@ -17,6 +17,9 @@
 #include "bench_legs.h"
 #include "bench_protocol.h"
 #include "exact_cases.h"
+#include "kinematics/body_pose.h"
+#include "kinematics/leg_mount.h"
+#include "robots/hexapod18.h"
 #include "math/fixed.h"
 #include "math/scalar.h"
 
@@ -203,6 +206,30 @@ strider::AbductionLeg<float> g_abduction_float;
 strider::AbductionLeg<Fixed> g_abduction_fixed;
 #endif
 
+//! Body pose: hexapod18's six standing feet seen from a body turned by roll,
+//! pitch and yaw and shifted (seed 001 sec. 2.3), each into its leg's frame:
+//! what the walker does per tick before the IK when the body is posed.
+template <class S>
+void bench_body_pose(const char* name_P) {
+  static strider::LegMount<S> mounts[6];
+  static strider::Vec3<S> feet[6];
+  for (uint8_t i = 0; i < 6; ++i) {
+    const strider::LegModel& leg = strider::kHexapod18.legs[i];
+    mounts[i] = strider::LegMount<S>::make(strider::Vec3<S>::from(leg.mount_mm), S(int(leg.mount_yaw_deg)) * strider::deg_to_rad<S>(1.0));
+    feet[i] = strider::Vec3<S>::from(leg.stand_mm);
+  }
+  auto pose = [](uint8_t i) {
+    return strider::BodyPose<S>::make(strider::Vec3<S>(stream<S>(11, i, -20, 20), stream<S>(12, i, -20, 20), stream<S>(13, i, -10, 10)),
+                                      stream<S>(14, i, -0.3, 0.3), stream<S>(15, i, -0.3, 0.3), stream<S>(16, i, -0.3, 0.3));
+  };
+  bench(name_P, kMathInputs, pose, [](const strider::BodyPose<S>& p) {
+    const strider::Transform<S> body = strider::body_transform(p);
+    strider::Vec3<S> sum;
+    for (uint8_t k = 0; k < 6; ++k) sum = sum + mounts[k].body_to_leg(strider::foot_in_body(body, feet[k]));
+    return sum;
+  });
+}
+
 void run_bench() {
   // Empty window: the marker overhead the host subtracts.
   bench(PSTR("baseline"), kMathInputs, [](uint8_t i) { return from_raw<Fixed>(i); }, [](Fixed v) { return v; });
@@ -232,6 +259,8 @@ void run_bench() {
   bench_leg(g_abduction_float, PSTR("abduction_ik_float"), PSTR("abduction_fk_float"));
   bench_leg(g_abduction_fixed, PSTR("abduction_ik_fixed"), PSTR("abduction_fk_fixed"));
 #endif
+  bench_body_pose<Fixed>(PSTR("body_pose_6_legs_fixed"));
+  bench_body_pose<float>(PSTR("body_pose_6_legs_float"));
   run_gait_bench(g_stride);
 }
 
