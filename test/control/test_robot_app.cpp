@@ -262,3 +262,23 @@ TEST(FlashNames, EqualToString) {
 }
 
 }  // namespace
+
+namespace {
+
+// Tuned gait parameters replace the defaults before the robot stands; bad
+// ones change nothing.
+TEST(RobotAppGaitParams, ReplaceTheDefaultsOrChangeNothing) {
+  Rig<float> r(strider::kHexapod18);
+  strider::GaitParams p = *strider::gait_params_for(strider::kHexapod18);
+  p.step_height_mm += 10.0f;
+  ASSERT_TRUE(r.app->set_gait_params(p));
+  EXPECT_NEAR(double(r.app->motion().walker().engine().config().step_height_mm), double(p.step_height_mm), 1e-4);
+  strider::GaitParams bad = p;
+  bad.default_gait = "gallop";
+  EXPECT_FALSE(r.app->set_gait_params(bad));
+  EXPECT_NEAR(double(r.app->motion().walker().engine().config().step_height_mm), double(p.step_height_mm), 1e-4);
+  r.run_ms(strider::kSoftStartStepMs * 6 + 3000);
+  EXPECT_EQ(r.app->motion().walker().engine().state(), strider::GaitState::kStanding);
+}
+
+}  // namespace

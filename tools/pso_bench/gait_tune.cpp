@@ -116,10 +116,7 @@ Rollout rollout(const strider::RobotModel& model, const strider::GaitParams& par
     r.error = "robot did not start";
     return r;
   }
-  // RobotApp exposes its motion read-only; the object itself is not const,
-  // so configuring its walker here is well defined.
-  auto& motion = const_cast<strider::WalkerMotion<float>&>(app.motion());
-  if (!motion.walker().configure(model, motion.gait(), params, params.shape, true)) {
+  if (!app.set_gait_params(params)) {
     r.error = "walker refused the parameters";
     return r;
   }

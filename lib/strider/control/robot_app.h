@@ -103,6 +103,17 @@ class RobotApp {
     return true;
   }
 
+  //! Other gait parameters than the model's defaults (e.g. tuned ones), after
+  //! begin() and before the robot stands up: the robot starts over sitting.
+  //! False (nothing changed) when the walker refuses them. Works on a copy of
+  //! the walker first: meant for host tools (the AVR stack has no room for it).
+  bool set_gait_params(const GaitParams& params) {
+    WalkerMotion<S> trial = motion_;
+    if (!trial.configure(model_, params)) return false;
+    motion_ = trial;
+    return true;
+  }
+
   //! One byte from link `port` (0 or 1) at now_us; a reply goes back to that port.
   template <typename Link>
   void on_byte(uint8_t port, uint8_t b, uint32_t now_us, Link& link) {

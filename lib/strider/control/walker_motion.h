@@ -24,15 +24,22 @@ template <typename S>
 class WalkerMotion {
  public:
   //! Builds the walker for `model` with its default gait and swing shape,
-  //! sitting. Costs the velocity-limit search (gait_config.h): start-up only.
+  //! sitting. Start-up only: takes the stored velocity limits (or, for a
+  //! model without them, the search of gait_config.h).
   bool configure(const RobotModel& model) {
     const GaitParams* params = gait_params_for(model);
-    if (params == nullptr) return false;
-    const GaitTable* gait = find_gait(model, params->default_gait);
-    if (gait == nullptr || !walker_.configure(model, *gait, *params, params->shape, true)) return false;
+    return params != nullptr && configure(model, *params);
+  }
+
+  //! The same with other gait parameters (e.g. tuned ones), sitting; the
+  //! velocity limits are searched unless `params` are the model's defaults.
+  bool configure(const RobotModel& model, const GaitParams& params) {
+    const GaitTable* gait = find_gait(model, params.default_gait);
+    if (gait == nullptr || !walker_.configure(model, *gait, params, params.shape, true)) return false;
     model_ = &model;
     gait_ = gait;
     offsets_ = BodyOffsets<S>::zero();
+    have_command_ = false;
     stand_height_mm_ = -walker_.engine().config().home[0].z;
     return true;
   }
