@@ -193,4 +193,13 @@ TEST(ServoParts, DatasheetFiguresAreSane) {
   EXPECT_STREQ(servo_spec(ServoPart::kHs311).name, "HS-311");
 }
 
+// dog12's knees carry a quarter of the robot on a ~217 mm lever standing
+// (knee to foot, horizontal), and twice that when it rolls onto one side:
+// the MG996R (11 kg cm) could not stand it; the simulator measured it.
+TEST(ServoParts, Dog12KneesCarryTheRobot) {
+  const float standing_kg_cm = kDog12.body.mass_kg / 4.0f * 21.7f;
+  EXPECT_GE(servo_spec(kDog12.servo[2]).stall_torque_kg_cm, 2.0f * standing_kg_cm);
+  EXPECT_STREQ(servo_spec(ServoPart::kDs5160).name, "DS5160");
+}
+
 }  // namespace

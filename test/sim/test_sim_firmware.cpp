@@ -38,7 +38,7 @@ TEST(SimFirmware, Sprawl8FirmwareWalksLikeTheLibrary) {
   const strider_sim::RunResult fw = run("sprawl8_forward", STRIDER_SIM_FIRMWARE_ELF);
   ASSERT_TRUE(fw.ok);
   EXPECT_TRUE(log_has(fw, "info strider sprawl8 ready"));
-  EXPECT_TRUE(log_has(fw, "ok move vx=155.0"));
+  EXPECT_TRUE(log_has(fw, "ok move vx=330.0"));
   EXPECT_EQ(fw.metrics.replies_err, 0);
   EXPECT_FALSE(fw.metrics.fell);
   EXPECT_GT(fw.metrics.final_x_mm, 300.0);

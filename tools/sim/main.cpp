@@ -16,7 +16,7 @@ int usage() {
                "  SCENARIO  scenario file (robot, duration, obstacle box, at T send TEXT)\n"
                "  --out     output folder: metrics.json, trace.csv, robot.log\n"
                "  --firmware  run the firmware ELF on the virtual Mega instead of the library\n"
-               "  --step    physics step [s] (default 0.002)\n");
+               "  --step    physics step [s] (default 0.004)\n");
   return 2;
 }
 

@@ -79,7 +79,7 @@ template <typename Dummy>
 const uint16_t VelocityLimitTables<Dummy>::kServo[5][6] STRIDER_PROGMEM = {
     {27790, 186, 28401, 1, 52614, 0},  // sprawl8
     {37067, 239, 46855, 2, 25447, 1},  // mammal8
-    {24330, 121, 55518, 1, 25320, 0},  // dog12
+    {24862, 147, 15922, 2, 30745, 0},  // dog12
     {33755, 207, 61500, 3, 7125, 2},  // hexapod18
     {28546, 118, 42092, 2, 54274, 1},  // spider12
 };

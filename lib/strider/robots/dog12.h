@@ -62,16 +62,18 @@ constexpr RobotModel kDog12 = {
     LegKind::kAbduction,
     4,
     {44.0f, 280.0f, 277.0f, 0.0f},  // La, Lb, Lc (seed 001 table 4)
-    // bl x bw x bh (seed 001 table 4). Mass 4.0 kg (estimate: 12 servos
-    // 660 g, aluminium body and 560 mm legs 2.2 kg, battery and electronics
-    // 1.1 kg; seed 001 gives none).
-    {600.0f, 280.0f, 277.0f, 4.0f},
-    // Seed 001 names no servo; its prototype leg drives the joints through
-    // capstan pulleys. MG996R, the strongest common part, is listed for
-    // pulses and travel; at this size a standing knee needs about 22 kg cm
-    // (1 kg at 217 mm), twice its stall torque: a real build needs a 1:2 or
-    // larger reduction or a 35 kg cm class servo (docs/robots.md).
-    {ServoPart::kMg996r, ServoPart::kMg996r, ServoPart::kMg996r},
+    // bl x bw x bh (seed 001 table 4). Mass 5.2 kg (estimate: 12 DS5160
+    // servos 1.86 kg, aluminium body and 560 mm legs 2.2 kg, battery and
+    // electronics 1.1 kg; seed 001 gives none).
+    {600.0f, 280.0f, 277.0f, 5.2f},
+    // Seed 001 names no servo part (its prototype leg drives the joints
+    // through capstan pulleys). Standing, a knee carries a quarter of the
+    // robot at a ~217 mm lever (~28 kg cm), and far more when the robot
+    // rolls onto one side or rises from its power-up crouch: an MG996R
+    // (11 kg cm) cannot stand it, and in simulation a 35 kg cm DS3235 sags
+    // onto one side; the 60 kg cm class DS5160 (58 kg cm at 6 V,
+    // servo_parts.h) is what robot dogs of this size use.
+    {ServoPart::kDs5160, ServoPart::kDs5160, ServoPart::kDs5160},
     {
         dog12_detail::leg("front_left", BodySide::kLeft, dog12_detail::kHalfLength, dog12_detail::kHalfWidth),
         dog12_detail::leg("rear_left", BodySide::kLeft, -dog12_detail::kHalfLength, dog12_detail::kHalfWidth),

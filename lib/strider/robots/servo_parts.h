@@ -2,9 +2,11 @@
 //! figures a model, a gait planner or the simulator needs.
 //!
 //! Values are the makers' published figures (Tower Pro SG90, MG90S, MG995,
-//! MG996R; Hitec HS-311). Where a sheet quotes two supply voltages, the 6 V
+//! MG996R; Hitec HS-311; DSSERVO product sheets of the DS3235SG (32 kg cm,
+//! 0.13 s/60 deg at 6 V, 40 x 20 x 40.5 mm, 65 g) and the DS5160 (58 kg cm,
+//! 0.17 s/60 deg at 6 V, 65 x 30 x 48 mm, 155 g), 180 deg versions). Where a sheet quotes two supply voltages, the 6 V
 //! figure is taken: every Strider robot runs its servos from a 5-6 V BEC.
-//! Travel: all five turn about 180 deg with a 500-2500 us pulse; the makers'
+//! Travel: all seven turn about 180 deg with a 500-2500 us pulse; the makers'
 //! "operating angle" (often quoted as 90 or 120 deg) is for 1000-2000 us only.
 //! Pulses are nominal: per-servo calibration (trim, direction) corrects them.
 #ifndef STRIDER_ROBOTS_SERVO_PARTS_H
@@ -19,10 +21,12 @@ enum class ServoPart : uint8_t {
   kMg90s = 1,   //!< Tower Pro MG90S, 13.4 g micro servo, metal gears
   kMg995 = 2,   //!< Tower Pro MG995, 55 g standard servo, metal gears
   kMg996r = 3,  //!< Tower Pro MG996R, 55 g standard servo, metal gears
-  kHs311 = 4    //!< Hitec HS-311, 43 g standard servo, nylon gears
+  kHs311 = 4,   //!< Hitec HS-311, 43 g standard servo, nylon gears
+  kDs3235 = 5,  //!< DSSERVO DS3235SG, 65 g 35 kg cm class digital servo, steel gears
+  kDs5160 = 6   //!< DSSERVO DS5160, 155 g 60 kg cm class digital servo, steel gears
 };
 
-constexpr uint8_t kServoPartCount = 5;
+constexpr uint8_t kServoPartCount = 7;
 
 //! Datasheet figures of one servo part.
 struct ServoSpec {
@@ -42,7 +46,9 @@ constexpr ServoSpec servo_spec(ServoPart part) {
          : part == ServoPart::kMg90s  ? ServoSpec{"MG90S", 180.0f, 500, 2500, 2.2f, 0.08f, 13.4f}
          : part == ServoPart::kMg995  ? ServoSpec{"MG995", 180.0f, 500, 2500, 10.0f, 0.16f, 55.0f}
          : part == ServoPart::kMg996r ? ServoSpec{"MG996R", 180.0f, 500, 2500, 11.0f, 0.14f, 55.0f}
-                                      : ServoSpec{"HS-311", 180.0f, 500, 2500, 3.7f, 0.15f, 43.0f};
+         : part == ServoPart::kHs311  ? ServoSpec{"HS-311", 180.0f, 500, 2500, 3.7f, 0.15f, 43.0f}
+         : part == ServoPart::kDs3235 ? ServoSpec{"DS3235", 180.0f, 500, 2500, 32.0f, 0.13f, 65.0f}
+                                      : ServoSpec{"DS5160", 180.0f, 500, 2500, 58.0f, 0.17f, 155.0f};
 }
 
 //! Top speed of a part [deg/s] (60 deg over its no-load time).
