@@ -27,13 +27,6 @@ Adafruit_PWMServoDriver g_boards[strider::kMaxPcaBoards] = {
 
 }  // namespace
 
-bool write(uint8_t board, uint8_t reg, const uint8_t* data, uint8_t n) {
-  Wire.beginTransmission(uint8_t(strider::kPcaFirstAddress + board));
-  Wire.write(reg);
-  Wire.write(data, n);
-  return Wire.endTransmission() == 0;
-}
-
 bool begin(uint8_t boards) {
   bool ok = true;
   for (uint8_t b = 0; b < boards && b < strider::kMaxPcaBoards; ++b) {

@@ -23,13 +23,6 @@ constexpr uint8_t kMode1Awake = kMode1AutoIncrement | kMode1AllCall;
 
 }  // namespace
 
-bool write(uint8_t board, uint8_t reg, const uint8_t* data, uint8_t n) {
-  Wire.beginTransmission(uint8_t(strider::kPcaFirstAddress + board));
-  Wire.write(reg);
-  Wire.write(data, n);
-  return Wire.endTransmission() == 0;
-}
-
 bool begin(uint8_t boards) {
   Wire.begin();
   Wire.setClock(pins::kI2cClockHz);
