@@ -1,4 +1,5 @@
-// Entry point of the dog12 firmware (PlatformIO env:dog12, CMake strider_firmware_dog12).
-#include "../firmware_model.h"
-
-const strider::RobotModel& firmware_model() { return strider::kDog12; }
+// Entry point of the dog12 firmware (PlatformIO env:dog12, CMake strider_firmware_dog12):
+// the whole firmware, compiled for this model.
+#include "robots/dog12.h"
+#define STRIDER_FIRMWARE_MODEL strider::kDog12
+#include "../firmware_main.h"

@@ -1,4 +1,5 @@
-// Entry point of the spider12 firmware (PlatformIO env:spider12, CMake strider_firmware_spider12).
-#include "../firmware_model.h"
-
-const strider::RobotModel& firmware_model() { return strider::kSpider12; }
+// Entry point of the spider12 firmware (PlatformIO env:spider12, CMake strider_firmware_spider12):
+// the whole firmware, compiled for this model.
+#include "robots/spider12.h"
+#define STRIDER_FIRMWARE_MODEL strider::kSpider12
+#include "../firmware_main.h"

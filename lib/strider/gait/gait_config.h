@@ -8,7 +8,22 @@
 #include "stored_velocity_limits.h"
 #include "velocity_limits.h"
 
+//! 1 (default): a model or gait parameters without stored velocity limits
+//! get them from the IK search (velocity_limits.h). A firmware for built-in
+//! models defines it 0 before any Strider header: the search is not built
+//! (flash) and such a configuration is refused (velocity_limits_known()).
+#ifndef STRIDER_VELOCITY_SEARCH
+#define STRIDER_VELOCITY_SEARCH 1
+#endif
+
 namespace strider {
+
+//! True when fill_gait_config() can give `model` with `params` and `shape`
+//! its velocity limits: always with the search built in, else only from the
+//! stored table.
+inline bool velocity_limits_known(const RobotModel& model, const GaitParams& params, SwingShape shape) {
+  return STRIDER_VELOCITY_SEARCH != 0 || stored_limits_index(model, params, shape) < kRobotCount;
+}
 
 template <typename S>
 struct GaitConfig {
@@ -71,9 +86,17 @@ void fill_gait_config(GaitConfig<S>& c, const RobotModel& model, const AnyLeg<S>
   c.shift_x_only = model.kind == LegKind::kPlanar;
   c.min_support = model.leg_count == 6 ? 3 : 2;
   c.unit_shift = gait_units::shift_for(reach + reach);
+#if STRIDER_VELOCITY_SEARCH
   if (source == LimitsSource::kSearch || !stored_velocity_limits(model, params, shape, c.limits))
     c.limits = compute_velocity_limits(model, legs, c.home, shape, c.step_height_mm,
                                        scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
+#else
+  // Without the search: the stored limits, or none (no stride: the robot
+  // cannot walk; velocity_limits_known() said so before).
+  (void)source;
+  (void)legs;
+  if (!stored_velocity_limits(model, params, shape, c.limits)) c.limits = VelocityLimits<S>();
+#endif
   for (uint8_t i = 0; i < model.leg_count; ++i) {
     S shortest = c.limits.stride_mm(i, 0);
     for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));

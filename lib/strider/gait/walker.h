@@ -42,10 +42,12 @@ template <typename S>
 class Walker {
  public:
   //! Builds the legs, the configuration (velocity limits: a few thousand IK
-  //! calls) and the engine. Returns false for a gait of another leg count.
+  //! calls) and the engine. Returns false for a gait of another leg count,
+  //! or velocity limits this build cannot give (gait_config.h).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
                  bool sitting = false) {
-    if (gait.leg_count != model.leg_count || !build_legs(model)) return false;
+    if (gait.leg_count != model.leg_count || !velocity_limits_known(model, params, shape) || !build_legs(model))
+      return false;
     engine_.configure(model, legs_, params, shape, gait, sitting);  // the configuration built in place
     reset_legs(model);
     return true;

@@ -16,7 +16,18 @@
 #include "planar_leg.h"
 #include "sprawl_leg.h"
 
+//! The leg kinds a build compiles in, one bit (1 << LegKind) each: all four
+//! by default. A firmware for one model defines it, before any Strider
+//! header, as its model's kind alone; then only that leg type's solver is
+//! built (flash) and AnyLeg::from_model() refuses a model of another kind.
+#ifndef STRIDER_LEG_KINDS
+#define STRIDER_LEG_KINDS 0xFu
+#endif
+
 namespace strider {
+
+constexpr uint8_t kCompiledLegKinds = uint8_t(STRIDER_LEG_KINDS);
+constexpr bool leg_kind_compiled(LegKind kind) { return ((kCompiledLegKinds >> uint8_t(kind)) & 1u) != 0; }
 
 template <typename S>
 class AnyLeg {
@@ -28,9 +39,10 @@ class AnyLeg {
   AnyLeg() : kind_(LegKind::kSprawl), side_(BodySide::kLeft), mount_(LegMount<S>::make(Vec3<S>(), S(0))) {}
 
   //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S).
-  //! Returns false and leaves `out` alone when index >= model.leg_count.
+  //! Returns false and leaves `out` alone when index >= model.leg_count or
+  //! the model's leg kind is not compiled in (STRIDER_LEG_KINDS).
   static bool from_model(const RobotModel& model, uint8_t index, AnyLeg& out) {
-    if (index >= model.leg_count || index >= kMaxLegs) return false;
+    if (index >= model.leg_count || index >= kMaxLegs || !leg_kind_compiled(model.kind)) return false;
     const LegModel& lm = model.legs[index];
     AnyLeg leg;
     leg.kind_ = model.kind;
@@ -39,14 +51,19 @@ class AnyLeg {
     const S l1 = scalar<S>(model.links.l1_mm), l2 = scalar<S>(model.links.l2_mm);
     const S l3 = scalar<S>(model.links.l3_mm), d1 = scalar<S>(model.links.d1_mm);
     switch (model.kind) {
-      case LegKind::kSprawl: leg.legs_.sprawl = SprawlLeg<S>::make(l1, l2, limits_of<2>(lm)); break;
-      case LegKind::kPlanar: leg.legs_.planar = PlanarLeg<S>::make(l1, l2, limits_of<2>(lm)); break;
+      case LegKind::kSprawl:
+        if (on(LegKind::kSprawl)) leg.legs_.sprawl = SprawlLeg<S>::make(l1, l2, limits_of<2>(lm));
+        break;
+      case LegKind::kPlanar:
+        if (on(LegKind::kPlanar)) leg.legs_.planar = PlanarLeg<S>::make(l1, l2, limits_of<2>(lm));
+        break;
       case LegKind::kCoxaFemurTibia:
-        leg.legs_.cft = CoxaFemurTibiaLeg<S>::make(d1, l1, l2, l3, limits_of<3>(lm));
+        if (on(LegKind::kCoxaFemurTibia)) leg.legs_.cft = CoxaFemurTibiaLeg<S>::make(d1, l1, l2, l3, limits_of<3>(lm));
         break;
       case LegKind::kAbduction:
-        leg.legs_.abduction = AbductionLeg<S>::make(
-            l1, l2, l3, limits_of<3>(lm), lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight);
+        if (on(LegKind::kAbduction))
+          leg.legs_.abduction = AbductionLeg<S>::make(
+              l1, l2, l3, limits_of<3>(lm), lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight);
         break;
     }
     out = leg;
@@ -63,10 +80,10 @@ class AnyLeg {
     JointLimits<S, kMaxDof> l;
     for (uint8_t j = 0; j < kMaxDof; ++j) l.lo[j] = l.hi[j] = S(0);
     switch (kind_) {
-      case LegKind::kSprawl: copy_limits(legs_.sprawl.limits, l); break;
-      case LegKind::kPlanar: copy_limits(legs_.planar.limits, l); break;
-      case LegKind::kCoxaFemurTibia: copy_limits(legs_.cft.limits, l); break;
-      case LegKind::kAbduction: copy_limits(legs_.abduction.limits, l); break;
+      case LegKind::kSprawl: if (on(LegKind::kSprawl)) copy_limits(legs_.sprawl.limits, l); break;
+      case LegKind::kPlanar: if (on(LegKind::kPlanar)) copy_limits(legs_.planar.limits, l); break;
+      case LegKind::kCoxaFemurTibia: if (on(LegKind::kCoxaFemurTibia)) copy_limits(legs_.cft.limits, l); break;
+      case LegKind::kAbduction: if (on(LegKind::kAbduction)) copy_limits(legs_.abduction.limits, l); break;
     }
     return l;
   }
@@ -82,10 +99,10 @@ class AnyLeg {
   //! Foot in the leg frame [mm].
   Vec3<S> fk(const Joints& q) const {
     switch (kind_) {
-      case LegKind::kSprawl: return legs_.sprawl.fk(narrow<2>(q));
-      case LegKind::kPlanar: return legs_.planar.fk(narrow<2>(q));
-      case LegKind::kCoxaFemurTibia: return legs_.cft.fk(narrow<3>(q));
-      case LegKind::kAbduction: return legs_.abduction.fk(narrow<3>(q));
+      case LegKind::kSprawl: if (on(LegKind::kSprawl)) return legs_.sprawl.fk(narrow<2>(q)); break;
+      case LegKind::kPlanar: if (on(LegKind::kPlanar)) return legs_.planar.fk(narrow<2>(q)); break;
+      case LegKind::kCoxaFemurTibia: if (on(LegKind::kCoxaFemurTibia)) return legs_.cft.fk(narrow<3>(q)); break;
+      case LegKind::kAbduction: if (on(LegKind::kAbduction)) return legs_.abduction.fk(narrow<3>(q)); break;
     }
     return Vec3<S>();
   }
@@ -95,10 +112,10 @@ class AnyLeg {
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
     switch (kind_) {
-      case LegKind::kSprawl: return solve(legs_.sprawl, target, q, reached, opt);
-      case LegKind::kPlanar: return solve(legs_.planar, target, q, reached, opt);
-      case LegKind::kCoxaFemurTibia: return solve(legs_.cft, target, q, reached, opt);
-      case LegKind::kAbduction: return solve(legs_.abduction, target, q, reached, opt);
+      case LegKind::kSprawl: if (on(LegKind::kSprawl)) return solve(legs_.sprawl, target, q, reached, opt); break;
+      case LegKind::kPlanar: if (on(LegKind::kPlanar)) return solve(legs_.planar, target, q, reached, opt); break;
+      case LegKind::kCoxaFemurTibia: if (on(LegKind::kCoxaFemurTibia)) return solve(legs_.cft, target, q, reached, opt); break;
+      case LegKind::kAbduction: if (on(LegKind::kAbduction)) return solve(legs_.abduction, target, q, reached, opt); break;
     }
     return IkStatus::kUnreachable;
   }
@@ -116,6 +133,8 @@ class AnyLeg {
   }
 
  private:
+  // A kind not compiled in is never built, so its cases are dead code.
+  static constexpr bool on(LegKind kind) { return leg_kind_compiled(kind); }
   template <uint8_t N>
   static JointLimits<S, N> limits_of(const LegModel& lm) {
     JointLimits<S, N> l;

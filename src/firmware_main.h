@@ -2,11 +2,24 @@
 // (lib/strider/control/robot_app.h) to the board: PCA9685 servo boards on
 // I2C, the HC-05 on Serial1 and USB on Serial, the HC-SR04 on D2/D3, the
 // EEPROM, the watchdog, and a 50 Hz tick.
+//
+// Included once per build, by the file of src/models/ that PlatformIO
+// (build_src_filter) or CMake (per target) picks, after it has included its
+// model's header and defined STRIDER_FIRMWARE_MODEL as that model: the
+// model is a compile-time constant here, so only its leg type is compiled in.
+#ifndef STRIDER_FIRMWARE_MAIN_H
+#define STRIDER_FIRMWARE_MAIN_H
+
+#ifndef STRIDER_FIRMWARE_MODEL
+#error "include firmware_main.h from a file of src/models/ that defines STRIDER_FIRMWARE_MODEL"
+#endif
+#define STRIDER_LEG_KINDS (1u << uint8_t((STRIDER_FIRMWARE_MODEL).kind))
+#define STRIDER_VELOCITY_SEARCH 0  // the built-in models have stored velocity limits
+
 // Library headers before Arduino.h, which defines min, max, abs and
 // constrain as macros that would rewrite the library's own names.
 #include "control/robot_app.h"
 #include "eeprom_store.h"
-#include "firmware_model.h"
 #include "hcsr04_sonar.h"
 #include "pca9685_output.h"
 #include "serial_link.h"
@@ -18,6 +31,9 @@
 
 namespace {
 
+constexpr const strider::RobotModel& kModel = STRIDER_FIRMWARE_MODEL;
+static_assert(strider::leg_kind_compiled(kModel.kind), "the model's leg type is compiled in");
+
 // Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.
 using Scalar = strider::Fixed;
 using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore>;
@@ -25,7 +41,7 @@ using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore>;
 Pca9685Output g_servos;
 EepromStore g_eeprom;
 SerialLink g_link;
-App g_app(firmware_model(), g_servos, g_eeprom);  // reads the settings from EEPROM
+App g_app(kModel, g_servos, g_eeprom);  // reads the settings from EEPROM
 uint32_t g_next_tick_us = 0;
 uint32_t g_led_ms = 0;
 
@@ -88,7 +104,7 @@ void setup() {
   Serial.begin(pins::kUsbBaud);
   Serial1.begin(g_app.controller().settings().baud);
   hcsr04::begin();
-  const bool boards_ok = g_servos.begin(strider::pca_board_count(firmware_model()));
+  const bool boards_ok = g_servos.begin(strider::pca_board_count(kModel));
   if (g_reset_flags & _BV(WDRF)) notice(kInfoWatchdog);
   if (g_reset_flags & _BV(BORF)) notice(kInfoBrownOut);
   if (!boards_ok) notice(kInfoNoBoard);
@@ -123,3 +139,5 @@ void loop() {
     digitalWrite(pins::kHeartbeatLed, !digitalRead(pins::kHeartbeatLed));
   }
 }
+
+#endif  // STRIDER_FIRMWARE_MAIN_H
