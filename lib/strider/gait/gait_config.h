@@ -8,14 +8,6 @@
 #include "stored_velocity_limits.h"
 #include "velocity_limits.h"
 
-//! 1 (default): a model or gait parameters without stored velocity limits
-//! get them from the IK search (velocity_limits.h). A firmware for built-in
-//! models defines it 0 before any Strider header: the search is not built
-//! (flash) and such a configuration is refused (velocity_limits_known()).
-#ifndef STRIDER_VELOCITY_SEARCH
-#define STRIDER_VELOCITY_SEARCH 1
-#endif
-
 namespace strider {
 
 //! True when fill_gait_config() can give `model` with `params` and `shape`

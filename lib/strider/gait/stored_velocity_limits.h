@@ -56,10 +56,15 @@ bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, S
   out.sideways = model.kind != LegKind::kPlanar;
   out.min_hz = S(1) / scalar<S>(params.cycle_s);
   out.preferred_stride_mm = scalar<S>(params.step_length_mm);
+#if STRIDER_VELOCITY_SEARCH
   constexpr uint8_t kDirections = VelocityLimits<S>::kDirections;
   for (uint8_t i = 0; i < kMaxLegs; ++i)
     for (uint8_t k = 0; k < kDirections; ++k)
       out.stride_code[i][k] = flash_u16(&T::kStride[r][i][0], k);
+#else
+  static_assert(kMaxLegs == 6, "the stored table has six legs per robot");
+  out.flash_codes = &T::kStride[r][0][0];
+#endif
   S servo[3];
   for (uint8_t j = 0; j < 3; ++j) {
     const uint32_t lo = flash_u16(T::kServo[r], uint16_t(2 * j)), hi = flash_u16(T::kServo[r], uint16_t(2 * j + 1));

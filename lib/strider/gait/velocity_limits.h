@@ -37,9 +37,20 @@
 #define STRIDER_GAIT_VELOCITY_LIMITS_H
 
 #include "../kinematics/any_leg.h"
+#include "../math/flash_table.h"
 #include "reach_projection.h"
 #include "swing_trajectory.h"
 #include "velocity_limit_encoding.h"
+
+//! 1 (default): a model or gait parameters without stored velocity limits
+//! (stored_velocity_limits.h) get them from the IK search below. A firmware
+//! for built-in models defines it 0 before any Strider header: the search
+//! is not built (flash), the strides are read from the stored table in
+//! flash instead of a copy in RAM, and a configuration without stored limits
+//! is refused (gait_config.h's velocity_limits_known()).
+#ifndef STRIDER_VELOCITY_SEARCH
+#define STRIDER_VELOCITY_SEARCH 1
+#endif
 
 namespace strider {
 
@@ -72,7 +83,17 @@ struct VelocityLimits {
   bool sideways = true;
   //! Longest stride of leg i along direction k, in 1/32 mm
   //! (velocity_limit_encoding.h): half the RAM of S, exact in both scalars.
+#if STRIDER_VELOCITY_SEARCH
   uint16_t stride_code[kMaxLegs][kDirections] = {};
+  uint16_t code(uint8_t leg, uint8_t k) const { return stride_code[leg][k]; }
+#else
+  //! The stored table's codes of this robot, [kMaxLegs][kDirections] in
+  //! flash (nullptr: no stride at all).
+  const uint16_t* flash_codes = nullptr;
+  uint16_t code(uint8_t leg, uint8_t k) const {
+    return flash_codes == nullptr ? uint16_t(0) : flash_u16(flash_codes, uint16_t(leg * kDirections + k));
+  }
+#endif
   S min_hz = S(1);                     //!< default step rate, 1 / cycle_s [Hz]
   S preferred_stride_mm = S(0);        //!< step_length_mm [mm]
   S lift_ms = S(0);                    //!< servo time of a swing's lift alone [ms]
@@ -80,9 +101,11 @@ struct VelocityLimits {
   S stance_ms_per_mm = S(0);           //!< servo time of a stance per mm of stride [ms/mm]
 
   //! Leg i's longest stride along direction k [mm].
-  S stride_mm(uint8_t leg, uint8_t k) const { return velocity_limit_encoding::stride_of(stride_code[leg][k], S()); }
+  S stride_mm(uint8_t leg, uint8_t k) const { return velocity_limit_encoding::stride_of(code(leg, k), S()); }
+#if STRIDER_VELOCITY_SEARCH
   //! Sets it [mm] (rounded to 1/32 mm).
   void set_stride_mm(uint8_t leg, uint8_t k, S mm) { stride_code[leg][k] = velocity_limit_encoding::stride_code(mm); }
+#endif
 
   //! Leg i's longest stride along (dx, dy) (any length, not both 0) [mm],
   //! interpolated between the two nearest of the 16 directions, less twice
