@@ -131,14 +131,7 @@ class RobotApp {
   void tick(uint32_t now_us, Link& link) {
     if (!ok_) return;
     const uint32_t now_ms = now_us / 1000u;
-    for (uint8_t p = 0; p < kLinkPorts; ++p) {
-      if (elapsed(now_ms, last_byte_ms_[p]) < kLineIdleMs) continue;
-      Command c;
-      reply(p, parsers_[p].idle_timeout(&c), c, now_ms, link);
-    }
-    char buf[kMaxReplyBytes];
-    ReplyWriter w(buf, sizeof buf);
-    if (controller_.tick(now_ms, sonar_.reading(now_us), w)) link.send_line(kAllPorts, buf);
+    tick_controller(now_us, now_ms, link);
     // Elapsed time, at most five ticks: a stalled loop must not make the gait leap.
     uint32_t dt_us = elapsed(now_us, last_tick_us_);
     last_tick_us_ = now_us;
@@ -220,6 +213,21 @@ class RobotApp {
     e.text(FlashText{app_text::kInfoEeprom}).text(to_flash(load_status_));
     if (load_status_ != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
     link.send_line(kAllPorts, buf);
+  }
+
+  //! The tick's link and controller part: partial lines time out, deadman and
+  //! avoidance. Not inlined: its reply buffer is off the stack again before
+  //! the walker (the deepest call chain) runs.
+  template <typename Link>
+  STRIDER_NOINLINE void tick_controller(uint32_t now_us, uint32_t now_ms, Link& link) {
+    for (uint8_t p = 0; p < kLinkPorts; ++p) {
+      if (elapsed(now_ms, last_byte_ms_[p]) < kLineIdleMs) continue;
+      Command c;
+      reply(p, parsers_[p].idle_timeout(&c), c, now_ms, link);
+    }
+    char buf[kMaxReplyBytes];
+    ReplyWriter w(buf, sizeof buf);
+    if (controller_.tick(now_ms, sonar_.reading(now_us), w)) link.send_line(kAllPorts, buf);
   }
 
   //! After relax, the next motion command switches the servos on again.

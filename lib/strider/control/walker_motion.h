@@ -27,8 +27,8 @@ class WalkerMotion {
   //! sitting. Start-up only: takes the stored velocity limits (or, for a
   //! model without them, the search of gait_config.h).
   bool configure(const RobotModel& model) {
-    const GaitParams* params = gait_params_for(model);
-    return params != nullptr && configure(model, *params);
+    GaitParams params;
+    return gait_params_of(model, &params) && configure(model, params);
   }
 
   //! The same with other gait parameters (e.g. tuned ones), sitting; the

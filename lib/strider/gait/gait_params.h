@@ -10,6 +10,7 @@
 
 #include <string.h>
 
+#include "../math/flash_table.h"
 #include "../robots/all_robots.h"
 #include "swing_trajectory.h"
 
@@ -32,8 +33,9 @@ struct GaitParams {
   float transition_s;         //!< stand-up and sit-down time [s]
 };
 
-//! One entry per model, in the order of kAllRobots.
-constexpr GaitParams kGaitParams[kRobotCount] = {
+//! One entry per model, in the order of kAllRobots. In flash on the AVR:
+//! read it there through gait_params_at().
+constexpr GaitParams kGaitParams[kRobotCount] STRIDER_PROGMEM = {
     // sprawl8 (seed 000): 20 mm steps clear a cable; 10 mm foot pads are the
     // seed's "wide ends of the legs" (a rubber cap over the shank's tip).
     // Seed 000 moves at 155 mm/s and turns 360 deg in 6 s; the crawl here,
@@ -81,12 +83,44 @@ constexpr bool values_sane() {
 static_assert(gait_params_detail::matches_models(), "kGaitParams: one entry per model, in kAllRobots order");
 static_assert(gait_params_detail::values_sane(), "kGaitParams: positive sizes and times");
 
-//! The gait defaults of `model` (by name; nullptr for a model not listed).
-inline const GaitParams* gait_params_for(const RobotModel& model) {
-  for (uint8_t i = 0; i < kRobotCount; ++i)
-    if (strcmp(kGaitParams[i].robot, model.name) == 0) return &kGaitParams[i];
-  return nullptr;
+//! Entry r (< kRobotCount) of kGaitParams, copied out of flash on the AVR.
+inline GaitParams gait_params_at(uint8_t r) {
+#if defined(__AVR__)
+  GaitParams p;
+  uint8_t* to = reinterpret_cast<uint8_t*>(&p);
+  const uint8_t* from = reinterpret_cast<const uint8_t*>(&kGaitParams[r]);
+  for (uint8_t i = 0; i < sizeof p; ++i) to[i] = flash_u8(from + i);
+  return p;
+#else
+  return kGaitParams[r];
+#endif
 }
+
+//! The index of `model`'s gait defaults in kGaitParams (by name), or
+//! kRobotCount for a model not listed.
+inline uint8_t gait_params_index(const RobotModel& model) {
+  for (uint8_t i = 0; i < kRobotCount; ++i)
+    if (strcmp(gait_params_at(i).robot, model.name) == 0) return i;
+  return kRobotCount;
+}
+
+//! The gait defaults of `model` into *out; false (out untouched) for a
+//! model not listed.
+inline bool gait_params_of(const RobotModel& model, GaitParams* out) {
+  const uint8_t i = gait_params_index(model);
+  if (i >= kRobotCount) return false;
+  *out = gait_params_at(i);
+  return true;
+}
+
+#if !defined(__AVR__)
+//! The gait defaults of `model` (by name; nullptr for a model not listed).
+//! Host only: on the AVR the table is in flash (gait_params_of()).
+inline const GaitParams* gait_params_for(const RobotModel& model) {
+  const uint8_t i = gait_params_index(model);
+  return i < kRobotCount ? &kGaitParams[i] : nullptr;
+}
+#endif
 
 }  // namespace strider
 

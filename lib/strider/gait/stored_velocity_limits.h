@@ -28,18 +28,16 @@ namespace strider {
 inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& params, SwingShape shape) {
   namespace enc = velocity_limit_encoding;
   using T = detail::VelocityLimitTables<>;
-  for (uint8_t r = 0; r < kRobotCount; ++r) {
-    const GaitParams& d = kGaitParams[r];
-    if (strcmp(d.robot, model.name) != 0) continue;
-    uint16_t print[enc::kFingerprintWords];
-    enc::geometry_fingerprint(model, print);
-    for (uint8_t k = 0; k < enc::kFingerprintWords; ++k)
-      if (flash_u16(T::kGeometry[r], k) != print[k]) return kRobotCount;
-    const bool same = shape == d.shape && params.step_height_mm == d.step_height_mm &&
-                      params.step_length_mm == d.step_length_mm && params.cycle_s == d.cycle_s;
-    return same ? r : kRobotCount;
-  }
-  return kRobotCount;
+  const uint8_t r = gait_params_index(model);
+  if (r >= kRobotCount) return kRobotCount;
+  const GaitParams d = gait_params_at(r);
+  uint16_t print[enc::kFingerprintWords];
+  enc::geometry_fingerprint(model, print);
+  for (uint8_t k = 0; k < enc::kFingerprintWords; ++k)
+    if (flash_u16(T::kGeometry[r], k) != print[k]) return kRobotCount;
+  const bool same = shape == d.shape && params.step_height_mm == d.step_height_mm &&
+                    params.step_length_mm == d.step_length_mm && params.cycle_s == d.cycle_s;
+  return same ? r : kRobotCount;
 }
 
 //! Fills `out` from the table for `model` with `params` and `shape`, as
