@@ -4,16 +4,16 @@
 // EEPROM, the watchdog, and a 50 Hz tick.
 //
 // Included once per build, by the file of src/models/ that PlatformIO
-// (build_src_filter) or CMake (per target) picks, after it has included its
-// model's header and defined STRIDER_FIRMWARE_MODEL as that model: the
-// model is a compile-time constant here, so only its leg type is compiled in.
+// (build_src_filter) or CMake (per target) picks, which first defines
+// STRIDER_FIRMWARE_MODEL (the model) and STRIDER_LEG_KINDS (its leg kind,
+// robots/robot_model.h): the model is a compile-time constant here and only
+// its leg type is compiled in.
 #ifndef STRIDER_FIRMWARE_MAIN_H
 #define STRIDER_FIRMWARE_MAIN_H
 
-#ifndef STRIDER_FIRMWARE_MODEL
-#error "include firmware_main.h from a file of src/models/ that defines STRIDER_FIRMWARE_MODEL"
+#if !defined(STRIDER_FIRMWARE_MODEL) || !defined(STRIDER_LEG_KINDS)
+#error "include firmware_main.h from a file of src/models/ (STRIDER_FIRMWARE_MODEL, STRIDER_LEG_KINDS)"
 #endif
-#define STRIDER_LEG_KINDS (1u << uint8_t((STRIDER_FIRMWARE_MODEL).kind))
 #define STRIDER_VELOCITY_SEARCH 0  // the built-in models have stored velocity limits
 
 // Library headers before Arduino.h, which defines min, max, abs and
@@ -32,7 +32,7 @@
 namespace {
 
 constexpr const strider::RobotModel& kModel = STRIDER_FIRMWARE_MODEL;
-static_assert(strider::leg_kind_compiled(kModel.kind), "the model's leg type is compiled in");
+static_assert(strider::kCompiledLegKinds == (1u << uint8_t(kModel.kind)), "STRIDER_LEG_KINDS: the model's leg kind alone");
 
 // Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.
 using Scalar = strider::Fixed;

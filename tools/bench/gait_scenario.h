@@ -20,16 +20,16 @@ constexpr uint16_t kGaitTicks = 250;
 constexpr uint8_t kWalkRecordMax = 20;
 
 inline const strider::GaitTable* scenario_gait(const strider::RobotModel& m) {
-  const strider::GaitParams* p = strider::gait_params_for(m);
-  return p == nullptr ? nullptr : strider::find_gait(m, p->default_gait);
+  strider::GaitParams p;
+  return strider::gait_params_of(m, &p) ? strider::find_gait(m, p.default_gait) : nullptr;
 }
 
 //! Configures w for model m (its default gait and parameters); false if none.
 template <typename S>
 bool scenario_configure(strider::Walker<S>& w, const strider::RobotModel& m) {
-  const strider::GaitParams* p = strider::gait_params_for(m);
+  strider::GaitParams p;
   const strider::GaitTable* g = scenario_gait(m);
-  return p != nullptr && g != nullptr && w.configure(m, *g, *p, p->shape);
+  return strider::gait_params_of(m, &p) && g != nullptr && w.configure(m, *g, p, p.shape);
 }
 
 //! Half the top forward speed of the configured gait [mm/s].

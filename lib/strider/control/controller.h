@@ -28,8 +28,20 @@
 
 namespace strider {
 
-template <typename Sink, typename Store>
-class Controller {
+namespace controller_detail {
+//! The controller's own parser (on_byte(), on_idle()); none for a caller
+//! with parsers of its own (on_parsed() only): no RAM for an unused line.
+template <bool kOwn>
+struct ParserSlot {
+  CommandParser parser_;
+};
+template <>
+struct ParserSlot<false> {};
+}  // namespace controller_detail
+
+//! kOwnParser false: only on_parsed() takes input (RobotApp, one parser per port).
+template <typename Sink, typename Store, bool kOwnParser = true>
+class Controller : private controller_detail::ParserSlot<kOwnParser> {
  public:
   Controller(Sink& sink, Store& store, const Settings& loaded, SettingsStatus load_status)
       : sink_(sink), store_(store), settings_(loaded), cal_(loaded), load_status_(load_status) {
@@ -42,14 +54,14 @@ class Controller {
   //! (without line ending) to send.
   bool on_byte(uint8_t b, uint32_t now_ms, ReplyWriter& w) {
     Command c;
-    const ParseResult r = parser_.feed(b, &c);
+    const ParseResult r = this->parser_.feed(b, &c);
     return handle(r, c, now_ms, w);
   }
 
   //! No byte for a while: abandons a partial line (reply on true).
   bool on_idle(uint32_t now_ms, ReplyWriter& w) {
     Command c;
-    return handle(parser_.idle_timeout(&c), c, now_ms, w);
+    return handle(this->parser_.idle_timeout(&c), c, now_ms, w);
   }
 
   //! A parse result from a parser of the caller's (one per serial port, so
@@ -254,7 +266,6 @@ class Controller {
   Settings settings_;
   Calibration cal_;
   SettingsStatus load_status_;
-  CommandParser parser_;
   Deadman deadman_;
   Avoidance avoid_;
   SonarReading sonar_{SonarStatus::kNoData, kSonarFarMm};

@@ -161,7 +161,7 @@ class RobotApp {
   void set_stack_probe(uint16_t (*probe)()) { stack_probe_ = probe; }
 
   SonarFilter& sonar() { return sonar_; }
-  const Controller<Sink, Store>& controller() const { return controller_; }
+  const Controller<Sink, Store, false>& controller() const { return controller_; }
   const WalkerMotion<S>& motion() const { return motion_; }
   const ServoStage<S>& servos() const { return stage_; }
   SettingsStatus load_status() const { return load_status_; }
@@ -267,7 +267,7 @@ class RobotApp {
   WalkerMotion<S> motion_;
   ServoStage<S> stage_;
   Sink sink_;
-  Controller<Sink, Store> controller_;
+  Controller<Sink, Store, false> controller_;  // input from parsers_
   CommandParser parsers_[kLinkPorts];
   uint32_t last_byte_ms_[kLinkPorts] = {0, 0};
   SonarFilter sonar_;

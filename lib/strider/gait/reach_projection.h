@@ -42,17 +42,22 @@ struct ReachProjection {
   }
 
   //! True for the kinds whose reachable set is a surface.
-  bool projects() const { return kind == LegKind::kSprawl || kind == LegKind::kPlanar; }
+  bool projects() const { return sprawl() || planar(); }
+
+  // The kind, known false when it is not compiled in (STRIDER_LEG_KINDS):
+  // a 3-DOF firmware builds no projection.
+  bool sprawl() const { return leg_kind_compiled(LegKind::kSprawl) && kind == LegKind::kSprawl; }
+  bool planar() const { return leg_kind_compiled(LegKind::kPlanar) && kind == LegKind::kPlanar; }
 
   //! The target [mm, leg frame] moved onto the reachable set; moved_mm gets
   //! the distance it moved (0 for 3-DOF legs).
   Vec3<S> apply(const Vec3<S>& target, S& moved_mm) const {
     moved_mm = S(0);
-    if (kind == LegKind::kPlanar) {
+    if (planar()) {
       moved_mm = abs(target.y);
       return Vec3<S>(target.x, S(0), target.z);
     }
-    if (kind != LegKind::kSprawl) return target;
+    if (!sprawl()) return target;
     const S x = gait_units::to_unit(target.x, shift), y = gait_units::to_unit(target.y, shift);
     const S a1 = gait_units::to_unit(a1_mm, shift), a2 = gait_units::to_unit(a2_mm, shift);
     const S z = clamp(gait_units::to_unit(target.z, shift), -a2, a2);

@@ -16,18 +16,7 @@
 #include "planar_leg.h"
 #include "sprawl_leg.h"
 
-//! The leg kinds a build compiles in, one bit (1 << LegKind) each: all four
-//! by default. A firmware for one model defines it, before any Strider
-//! header, as its model's kind alone; then only that leg type's solver is
-//! built (flash) and AnyLeg::from_model() refuses a model of another kind.
-#ifndef STRIDER_LEG_KINDS
-#define STRIDER_LEG_KINDS 0xFu
-#endif
-
 namespace strider {
-
-constexpr uint8_t kCompiledLegKinds = uint8_t(STRIDER_LEG_KINDS);
-constexpr bool leg_kind_compiled(LegKind kind) { return ((kCompiledLegKinds >> uint8_t(kind)) & 1u) != 0; }
 
 template <typename S>
 class AnyLeg {
@@ -80,10 +69,18 @@ class AnyLeg {
     JointLimits<S, kMaxDof> l;
     for (uint8_t j = 0; j < kMaxDof; ++j) l.lo[j] = l.hi[j] = S(0);
     switch (kind_) {
-      case LegKind::kSprawl: if (on(LegKind::kSprawl)) copy_limits(legs_.sprawl.limits, l); break;
-      case LegKind::kPlanar: if (on(LegKind::kPlanar)) copy_limits(legs_.planar.limits, l); break;
-      case LegKind::kCoxaFemurTibia: if (on(LegKind::kCoxaFemurTibia)) copy_limits(legs_.cft.limits, l); break;
-      case LegKind::kAbduction: if (on(LegKind::kAbduction)) copy_limits(legs_.abduction.limits, l); break;
+      case LegKind::kSprawl:
+        if (on(LegKind::kSprawl)) copy_limits(legs_.sprawl.limits, l);
+        break;
+      case LegKind::kPlanar:
+        if (on(LegKind::kPlanar)) copy_limits(legs_.planar.limits, l);
+        break;
+      case LegKind::kCoxaFemurTibia:
+        if (on(LegKind::kCoxaFemurTibia)) copy_limits(legs_.cft.limits, l);
+        break;
+      case LegKind::kAbduction:
+        if (on(LegKind::kAbduction)) copy_limits(legs_.abduction.limits, l);
+        break;
     }
     return l;
   }
@@ -99,10 +96,18 @@ class AnyLeg {
   //! Foot in the leg frame [mm].
   Vec3<S> fk(const Joints& q) const {
     switch (kind_) {
-      case LegKind::kSprawl: if (on(LegKind::kSprawl)) return legs_.sprawl.fk(narrow<2>(q)); break;
-      case LegKind::kPlanar: if (on(LegKind::kPlanar)) return legs_.planar.fk(narrow<2>(q)); break;
-      case LegKind::kCoxaFemurTibia: if (on(LegKind::kCoxaFemurTibia)) return legs_.cft.fk(narrow<3>(q)); break;
-      case LegKind::kAbduction: if (on(LegKind::kAbduction)) return legs_.abduction.fk(narrow<3>(q)); break;
+      case LegKind::kSprawl:
+        if (on(LegKind::kSprawl)) return legs_.sprawl.fk(narrow<2>(q));
+        break;
+      case LegKind::kPlanar:
+        if (on(LegKind::kPlanar)) return legs_.planar.fk(narrow<2>(q));
+        break;
+      case LegKind::kCoxaFemurTibia:
+        if (on(LegKind::kCoxaFemurTibia)) return legs_.cft.fk(narrow<3>(q));
+        break;
+      case LegKind::kAbduction:
+        if (on(LegKind::kAbduction)) return legs_.abduction.fk(narrow<3>(q));
+        break;
     }
     return Vec3<S>();
   }
@@ -112,10 +117,18 @@ class AnyLeg {
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
     switch (kind_) {
-      case LegKind::kSprawl: if (on(LegKind::kSprawl)) return solve(legs_.sprawl, target, q, reached, opt); break;
-      case LegKind::kPlanar: if (on(LegKind::kPlanar)) return solve(legs_.planar, target, q, reached, opt); break;
-      case LegKind::kCoxaFemurTibia: if (on(LegKind::kCoxaFemurTibia)) return solve(legs_.cft, target, q, reached, opt); break;
-      case LegKind::kAbduction: if (on(LegKind::kAbduction)) return solve(legs_.abduction, target, q, reached, opt); break;
+      case LegKind::kSprawl:
+        if (on(LegKind::kSprawl)) return solve(legs_.sprawl, target, q, reached, opt);
+        break;
+      case LegKind::kPlanar:
+        if (on(LegKind::kPlanar)) return solve(legs_.planar, target, q, reached, opt);
+        break;
+      case LegKind::kCoxaFemurTibia:
+        if (on(LegKind::kCoxaFemurTibia)) return solve(legs_.cft, target, q, reached, opt);
+        break;
+      case LegKind::kAbduction:
+        if (on(LegKind::kAbduction)) return solve(legs_.abduction, target, q, reached, opt);
+        break;
     }
     return IkStatus::kUnreachable;
   }
