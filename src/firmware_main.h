@@ -36,7 +36,7 @@ static_assert(strider::kCompiledLegKinds == (1u << uint8_t(kModel.kind)), "STRID
 
 // Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.
 using Scalar = strider::Fixed;
-using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore>;
+using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count()>;
 
 Pca9685Output g_servos;
 EepromStore g_eeprom;

@@ -11,7 +11,8 @@
 //! now_us (wrapping micros()).
 //!
 //! Template parameters: S the scalar (float or Fixed); Output a ServoOutput
-//! (hal_interfaces.h) with `void flush()` ending a frame; Store a ByteStore.
+//! (hal_interfaces.h) with `void flush()` ending a frame; Store a ByteStore;
+//! kJoints the most servos it drives (a firmware: its model's joint count).
 //! Link (per call): `void send_line(uint8_t port, const char* line)`, line
 //! without its ending; port kAllPorts means every port (notices).
 #ifndef STRIDER_CONTROL_ROBOT_APP_H
@@ -73,7 +74,7 @@ inline int32_t to_tenths(Fixed v) {
   return t >= 0 ? (t + 32768) >> 16 : -((-t + 32768) >> 16);
 }
 
-template <typename S, typename Output, typename Store>
+template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints>
 class RobotApp {
   class Sink;
 
@@ -163,7 +164,7 @@ class RobotApp {
   SonarFilter& sonar() { return sonar_; }
   const Controller<Sink, Store, false>& controller() const { return controller_; }
   const WalkerMotion<S>& motion() const { return motion_; }
-  const ServoStage<S>& servos() const { return stage_; }
+  const ServoStage<S, kJoints>& servos() const { return stage_; }
   SettingsStatus load_status() const { return load_status_; }
   uint16_t overruns() const { return overruns_; }
   uint32_t tick_max_us() const { return tick_max_us_; }
@@ -265,7 +266,7 @@ class RobotApp {
   Settings loaded_;
   SettingsStatus load_status_;
   WalkerMotion<S> motion_;
-  ServoStage<S> stage_;
+  ServoStage<S, kJoints> stage_;
   Sink sink_;
   Controller<Sink, Store, false> controller_;  // input from parsers_
   CommandParser parsers_[kLinkPorts];

@@ -36,8 +36,8 @@ ServoStatus write_servo_frame(Output& out, const ServoChannel<S>* channels, cons
 //! The same through a ServoTickMap configured for these channels, trims and
 //! timing (servo_tick_map.h): joints [first, first + count) of the map from
 //! joint_rad[0..count). A few hundred cycles per joint instead of ~2,000.
-template <typename S, typename Output>
-ServoStatus write_servo_frame(Output& out, const ServoTickMap<S>& map, const S* joint_rad, uint8_t count,
+template <typename S, uint8_t N, typename Output>
+ServoStatus write_servo_frame(Output& out, const ServoTickMap<S, N>& map, const S* joint_rad, uint8_t count,
                               uint8_t first = 0) {
   return map.write(out, first, joint_rad, count);
 }

@@ -27,16 +27,18 @@ namespace strider {
 constexpr uint16_t kSoftStartStepMs = 250;   //!< one leg's servos switched on per step [ms]
 constexpr uint16_t kFramePeriodMs = 20;      //!< nominal frame period for the slew limit [ms] (50 Hz)
 
-template <typename S>
+//! N: most joints (servos) it drives; a firmware for one model sizes it to
+//! the model's joint count.
+template <typename S, uint8_t N = kMaxServoJoints>
 class ServoStage {
  public:
   //! Channel map of `model`; every output off. False when the model does not fit.
   bool configure(const RobotModel& model) {
-    count_ = make_channel_map<S>(model, channels_);
+    count_ = model.joint_count() <= N ? make_channel_map<S>(model, channels_) : uint8_t(0);
     dof_ = model.dof();
     legs_ = model.leg_count;
     for (uint8_t j = 0; j < dof_; ++j) speed_deg_s_[j] = servo_speed_deg_s(model.servo[j]);
-    for (uint8_t k = 0; k < kMaxServoJoints; ++k) { on_[k] = false; ticks_[k] = 0; }
+    for (uint8_t k = 0; k < N; ++k) { on_[k] = false; ticks_[k] = 0; }
     enabled_legs_ = 0;
     relax_pending_ = true;
     return count_ != 0;
@@ -145,11 +147,11 @@ class ServoStage {
     }
   }
 
-  ServoChannel<S> channels_[kMaxServoJoints];
-  ServoTickMap<S> tick_map_;
+  ServoChannel<S> channels_[N];
+  ServoTickMap<S, N> tick_map_;
   bool fast_ = false;
-  uint16_t ticks_[kMaxServoJoints];
-  bool on_[kMaxServoJoints];
+  uint16_t ticks_[N];
+  bool on_[N];
   uint16_t step_[kMaxLegDof] = {1, 1, 1};
   float speed_deg_s_[kMaxLegDof] = {0.0f, 0.0f, 0.0f};
   Pca9685Timing timing_;

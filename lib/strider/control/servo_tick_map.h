@@ -102,7 +102,8 @@ struct ServoTickJoint {
   int8_t direction;       //!< +1 or -1
 };
 
-template <typename S>
+//! N: most joints it holds (a firmware for one model sizes it to the model).
+template <typename S, uint8_t N = kMaxServoTickJoints>
 class ServoTickMap {
  public:
   //! Folds count channels (trims settings.trim_decideg[first_trim + i]) and
@@ -112,7 +113,7 @@ class ServoTickMap {
   ServoTickStatus configure(const ServoChannel<S>* channels, uint8_t count, const Settings& settings,
                             const Pca9685Timing& timing, uint8_t first_trim = 0) {
     count_ = 0;
-    if (count > kMaxServoTickJoints) return ServoTickStatus::kUnsupported;
+    if (count > N) return ServoTickStatus::kUnsupported;
     // Exact slope from the timing: ticks = us * 262144 / period_x64.
     const double ticks_per_us = 262144.0 / double(timing.period_x64());
     for (uint8_t i = 0; i < count; ++i) {
@@ -217,7 +218,7 @@ class ServoTickMap {
     return servo_ticks_detail::ticks_of(d, sc.ticks_per_rad, sc.base);
   }
 
-  ServoTickJoint<S> joint_[kMaxServoTickJoints];
+  ServoTickJoint<S> joint_[N];
   uint8_t count_ = 0;
 };
 
