@@ -179,14 +179,32 @@ class AnyLeg {
     return s;
   }
 
+  // A leg type not compiled in (STRIDER_LEG_KINDS): only the interface its
+  // dead cases name (they never run), and no larger than any leg type.
+  template <typename Leg>
+  struct Absent {
+    static constexpr uint8_t kDof = Leg::kDof;
+    using Joints = typename Leg::Joints;
+    JointLimits<S, kDof> limits;
+    Absent& operator=(const Leg&) { return *this; }
+    Vec3<S> fk(const Joints&) const { return Vec3<S>(); }
+    IkStatus ik(const Vec3<S>&, Joints&, Vec3<S>&, const IkOptions<S>&) const { return IkStatus::kUnreachable; }
+  };
+  template <bool kOn, typename A, typename B>
+  struct Select { using type = A; };
+  template <typename A, typename B>
+  struct Select<false, A, B> { using type = B; };
+  template <LegKind kKind, typename Leg>
+  using Slot = typename Select<leg_kind_compiled(kKind), Leg, Absent<Leg> >::type;
+
   // One leg of the four kinds; kind_ says which member is live. The
   // constructor is needed because Fixed has a non-trivial default constructor.
   union Legs {
     Legs() : sprawl() {}
-    SprawlLeg<S> sprawl;
-    PlanarLeg<S> planar;
-    CoxaFemurTibiaLeg<S> cft;
-    AbductionLeg<S> abduction;
+    Slot<LegKind::kSprawl, SprawlLeg<S> > sprawl;
+    Slot<LegKind::kPlanar, PlanarLeg<S> > planar;
+    Slot<LegKind::kCoxaFemurTibia, CoxaFemurTibiaLeg<S> > cft;
+    Slot<LegKind::kAbduction, AbductionLeg<S> > abduction;
   };
 
   LegKind kind_;
