@@ -98,7 +98,10 @@ class GaitEngine {
     set_command(S(0), S(0), S(0));
   }
   //! Body pose offsets to move to (rate limited), also while walking.
-  void set_body_offsets(const BodyOffsets<S>& o) { goal_pose_ = o; }
+  void set_body_offsets(const BodyOffsets<S>& o) {
+    goal_pose_ = o;
+    pose_at_goal_ = false;  // step_pose() compares
+  }
 
   // ---- per tick --------------------------------------------------------------
 
@@ -296,7 +299,7 @@ class GaitEngine {
   S cmd_vx_ = S(0), cmd_vy_ = S(0), cmd_wz_ = S(0);
   VelocityPlan<S> to_{};
   Stride from_s_{}, to_s_{}, now_s_{}, land_s_{};
-  S ramp_ = S(1), ramp_per_cycle_ = S(1);
+  S ramp_ = S(1), ramp_per_cycle_ = S(1), ramp_cycles_ = S(1);  // ramp_cycles_ = 1 / ramp_per_cycle_
   S vx_ = S(0), vy_ = S(0), wz_ = S(0), hz_ = S(1);
 
   PhaseClock clock_;
@@ -327,6 +330,7 @@ class GaitEngine {
   S window_inv_ = S(0);
 
   BodyOffsets<S> pose_{}, goal_pose_{};
+  bool pose_at_goal_ = true;  // pose_ == goal_pose_ known: step_pose() has nothing to do
   mutable S margin_ = S(0);
   mutable bool margin_fresh_ = false;
   // Per-tick work that only changes with the command: the body step and the
