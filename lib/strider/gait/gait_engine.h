@@ -24,6 +24,7 @@
 #define STRIDER_GAIT_GAIT_ENGINE_H
 
 #include "../kinematics/body_pose.h"
+#include "../kinematics/leg_ik_common.h"
 #include "body_shift.h"
 #include "gait_config.h"
 #include "gait_table.h"
@@ -238,8 +239,11 @@ class GaitEngine {
   void step_command(S dt);
 
   static Stride lerp(const Stride& a, const Stride& b, S t) {
-    return Stride{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.yaw + (b.yaw - a.yaw) * t, a.hz + (b.hz - a.hz) * t};
+    return Stride{mix(a.x, b.x, t), mix(a.y, b.y, t), mix(a.yaw, b.yaw, t), mix(a.hz, b.hz, t)};
   }
+  //! a + (b - a) t; a itself when b has a's bits (a ramp's unchanged parts:
+  //! the yaw of a straight walk, a rate kept), the formula's value then.
+  static S mix(S a, S b, S t) { return leg_ik::same_bits(a, b) ? a : a + (b - a) * t; }
 
   bool near_home(uint8_t i) const {
     return abs(foot_[i].x - cfg_.home[i].x) <= cfg_.home_tolerance_mm &&

@@ -96,8 +96,11 @@ void GaitEngine<S>::step_walk(S dt) {
     swing_elapsed_[i] = crossed ? uint32_t(Phase16(clock_.now() - offset_[i])) : 0u;
     target_[i] = touchdown(i);
     settled_[i] = true;
-    apex_[i] = swing_apex_mm(cfg_.shape, hypot(target_[i].x - lift_[i].x, target_[i].y - lift_[i].y),
-                             cfg_.step_height_mm);
+    // Only the semicircle's apex depends on the step's length (a square root).
+    apex_[i] = cfg_.shape == SwingShape::kSemicircle
+                   ? swing_apex_mm(cfg_.shape, hypot(target_[i].x - lift_[i].x, target_[i].y - lift_[i].y),
+                                   cfg_.step_height_mm)
+                   : cfg_.step_height_mm;
     changed = true;
   }
   // Feet in the air follow the swing shape toward a touch-down point that

@@ -90,7 +90,8 @@ class Walker {
  private:
   void solve() {
     const BodyPose<S> pose = engine_.body_pose();
-    if (pose.roll_rad != S(0) || pose.pitch_rad != S(0) || pose.yaw_rad != S(0)) {
+    using leg_ik::is_zero;  // integer tests of float bits (a float comparison is a call on the AVR)
+    if (!is_zero(pose.roll_rad) || !is_zero(pose.pitch_rad) || !is_zero(pose.yaw_rad)) {
       const Transform<S> body = body_transform(pose);
       solve_legs(&body, pose.translation_mm);
     } else {
@@ -104,7 +105,7 @@ class Walker {
   void solve_legs(const Transform<S>* body, const Vec3<S>& shift) {
     // The body at the stance frame's origin (a trot or tripod standing tall):
     // the feet are already in the body frame.
-    const bool still = shift.x == S(0) && shift.y == S(0) && shift.z == S(0);
+    const bool still = leg_ik::is_zero(shift.x) && leg_ik::is_zero(shift.y) && leg_ik::is_zero(shift.z);
     const bool projects = proj_.projects();
     for (uint8_t i = 0; i < leg_count(); ++i) {
       LegResult<S>& r = out_[i];
@@ -197,7 +198,11 @@ class Walker {
     return turn_[i] == kStraight ? p + m.origin_mm : m.leg_to_body(p);
   }
 
-  static bool same(const Vec3<S>& a, const Vec3<S>& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+  // Same bits (an IK that reached its target copies it): for float no
+  // comparison calls; a +0 against -0 only takes the transform back.
+  static bool same(const Vec3<S>& a, const Vec3<S>& b) {
+    return leg_ik::same_bits(a.x, b.x) && leg_ik::same_bits(a.y, b.y) && leg_ik::same_bits(a.z, b.z);
+  }
 
   bool build_legs(const RobotModel& model) {
     model_ = nullptr;

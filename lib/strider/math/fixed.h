@@ -169,7 +169,7 @@ class Fixed {
                   : apply_sign(div_mag(abs_raw(a), abs_raw(b)), (a < 0) != (b < 0));
   }
   //! div_raw for run time: identical results; on the AVR one 31-step
-  //! restoring loop in registers (~700 cycles) instead of a 32-bit library
+  //! restoring loop in registers (~880 cycles) instead of a 32-bit library
   //! division and 17 steps in C (~1,600).
   static inline int32_t div_raw_fast(int32_t a, int32_t b) {
 #if defined(__AVR__)
