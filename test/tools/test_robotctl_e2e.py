@@ -4,6 +4,7 @@ Needs $STRIDER_VBENCH and $STRIDER_ELF (ctest sets both to the build's
 vbench and firmware ELF); skipped, with the reason, when either is missing.
 """
 import io
+import json
 import os
 import sys
 import tempfile
@@ -120,6 +121,18 @@ class VirtualMegaE2E(unittest.TestCase):
                        "--timeout", "3", "send", "status"], out=out)
         self.assertEqual(rc, cli.EXIT_OK, out.getvalue())
         self.assertTrue(out.getvalue().startswith("ok status mode="), out.getvalue())
+
+    def test_6_sim_port_sonar_range(self):
+        # Open space by default, so that the robot may walk forward; `none`
+        # is a sonar without echo (no reading yet, then a sensor fault).
+        for args, want in (([], {("ok", 2000)}), (["--sim-range", "350"], {("ok", 350)}),
+                           (["--sim-range", "none"], {("none", None), ("failed", None)})):
+            out = io.StringIO()
+            rc = cli.main(["--port", "sim:", "--vbench", os.environ["STRIDER_VBENCH"], "--elf",
+                           os.environ["STRIDER_ELF"], "--timeout", "3", *args, "status", "--json"], out=out)
+            self.assertEqual(rc, cli.EXIT_OK, out.getvalue())
+            st = json.loads(out.getvalue().splitlines()[0])
+            self.assertIn((st["sonar"], st.get("dist_mm")), want, st)
 
 
 if __name__ == "__main__":
