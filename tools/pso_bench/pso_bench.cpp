@@ -312,7 +312,7 @@ bool run(const Case& c, int runs, int first_seed, int iterations, bool swarm_cos
                 median(wall_to));
   std::printf("}\n");
   std::fflush(stdout);
-  // A run may stall on a bound (test_pso.cpp: 0.25 % of seeds for case a), so
+  // A run may stall on a bound (pso.h: 0.35 % of seeds for case a), so
   // the median, not the worst, must meet the scalar's bound.
   return median(costs) < Traits<S>::bound_mm();
 }
