@@ -251,9 +251,9 @@ template <typename S>
 bool run(const Case& c, int runs, int first_seed, int iterations, bool swarm_cost) {
   static ParticleSwarm<S, 2, 20> swarm;
   const Solver<S> solve{c, swarm_cost};
-  const char* cost_what = "per particle, the library's math";
+  const char* cost_what = "the library's math";
   if (std::is_same<S, double>::value) {
-    cost_what = "per particle, libm";
+    cost_what = "libm";
     if (swarm_cost) pick_fk_cost(&cost_what);
   }
   std::vector<double> ms, wall, costs, ms_to, wall_to, it_to;

@@ -367,7 +367,7 @@ def pso_vs_pyswarms(data):
     if to_cost.get(head):
         md += (f"\nTarget: >= 100x faster at equal final cost: **{verdict}** (smallest speed-up "
                f"{min(to_cost[head]):.0f}x with the swarm-vectorised cost as pyswarms', "
-               f"{min(wall[head]):.0f}x in wall time; at equal work {min(full[head]):.0f}-{max(full[head]):.0f}x)")
+               f"{min(wall[head]):.0f}x in wall time, which favours Strider under load; at equal work {min(full[head]):.0f}-{max(full[head]):.0f}x)")
         if head == "swarm" and to_cost.get("each"):
             md += (f"; with the cost called per particle {min(to_cost['each']):.0f}-{max(to_cost['each']):.0f}x "
                    f"at equal cost, {min(full['each']):.0f}-{max(full['each']):.0f}x at equal work")
