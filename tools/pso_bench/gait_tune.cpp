@@ -27,6 +27,7 @@
 // window (S, default 20 s), and "windows": both over S / 2, S and a walk
 // twice as long as the window (2 S, not seen by the tuning).
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -123,10 +124,15 @@ void measure(const strider_sim::BodyState& start, const strider_sim::BodyState& 
   r.heading_deg = dyaw;
 }
 
+double violation(const Rollout& r, const Options& o);
+
 // One rollout, measured at each of `checkpoints_s` (ascending, seconds of
-// walking after the settling time); the rollout ends at the last.
+// walking after the settling time); the rollout ends at the last, or at the
+// first checkpoint that violates `stop_if_violated` (when given: the tuning
+// need not walk an infeasible candidate to the end), and returns the
+// checkpoints measured.
 std::vector<Rollout> rollout(const strider::RobotModel& model, const strider::GaitParams& params, const Options& o,
-                             const std::vector<double>& checkpoints_s) {
+                             const std::vector<double>& checkpoints_s, const Options* stop_if_violated = nullptr) {
   std::vector<Rollout> out(checkpoints_s.size());
   auto fail = [&](const char* why) {
     for (Rollout& r : out) r.error = why;
@@ -195,6 +201,10 @@ std::vector<Rollout> rollout(const strider::RobotModel& model, const strider::Ga
       r.fell = fell;
       r.ok = link.err == 0;
       if (!r.ok) r.error = "the robot answered err";
+      if (stop_if_violated != nullptr && violation(r, *stop_if_violated) > 0) {
+        out.resize(next_check);
+        return out;
+      }
     }
   }
   return out;
@@ -267,6 +277,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
   // Bounds around the defaults: half to 2.5 times the stride, half to twice
   // the step height, 0.4 to 1.5 times the cycle.
   strider::PsoParams<float, 3> p;
@@ -289,13 +300,14 @@ int main(int argc, char** argv) {
   const std::vector<double> checkpoints = {0.5 * o.walk_s, o.walk_s};
   const auto cost = [&](const strider::JointVector<float, 3>& x) {
     ++evaluations;
-    const std::vector<Rollout> r = rollout(*model, with(*base, Candidate{x[0], x[1], x[2]}), o, checkpoints);
+    const std::vector<Rollout> r = rollout(*model, with(*base, Candidate{x[0], x[1], x[2]}), o, checkpoints, &tight);
     const double v = violation(r, tight);
     return float(v > 0 ? 1000.0 + v : -r.back().speed_mm_s);
   };
   static strider::ParticleSwarm<float, 3, 20> pso;
   const strider::PsoResult<float, 3> best = pso.minimize(p, cost);
   const double tune_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double tune_cpu_s = double(std::clock() - c0) / CLOCKS_PER_SEC;
   const Candidate def{base->step_length_mm, base->step_height_mm, base->cycle_s};
   const Candidate tuned{best.position[0], best.position[1], best.position[2]};
   // Both gaits at the tuning checkpoints and over a walk twice as long as the
@@ -305,12 +317,12 @@ int main(int argc, char** argv) {
   const std::vector<Rollout> rd = rollout(*model, *base, o, windows);
   const std::vector<Rollout> rt = rollout(*model, with(*base, tuned), o, windows);
   std::printf("{\"robot\":\"%s\",\"gait\":\"%s\",\"swarm\":%d,\"iterations\":%d,\"evaluations\":%d,"
-              "\"walk_s\":%.2f,\"checkpoints_s\":[%.2f,%.2f],\"check_walk_s\":%.2f,\"tune_wall_s\":%.2f,"
+              "\"walk_s\":%.2f,\"checkpoints_s\":[%.2f,%.2f],\"check_walk_s\":%.2f,\"tune_wall_s\":%.2f,\"tune_cpu_s\":%.2f,"
               "\"tuned_cost\":%.3f,\"bounds\":[[%.2f,%.2f],[%.2f,%.2f],[%.3f,%.3f]],"
               "\"constraints\":{\"max_tilt_deg\":%.1f,\"max_lateral_pct\":%.1f,\"max_heading_deg_s\":%.1f},"
               "\"margin_pct\":30,",
               model->name, o.gait.empty() ? base->default_gait : o.gait.c_str(), swarm_size, iterations, evaluations,
-              o.walk_s, checkpoints[0], checkpoints[1], windows.back(), tune_s, double(best.cost),
+              o.walk_s, checkpoints[0], checkpoints[1], windows.back(), tune_s, tune_cpu_s, double(best.cost),
               double(p.lo[0]), double(p.hi[0]), double(p.lo[1]), double(p.hi[1]), double(p.lo[2]), double(p.hi[2]),
               o.max_tilt_deg, o.max_lateral_pct, o.max_heading_deg_s);
   print_rollout("default", def, rd[1], o, true);

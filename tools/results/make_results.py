@@ -643,7 +643,8 @@ def gait_tuning(d):
                 if min(abs(d["tuned"][name] - lo), abs(d["tuned"][name] - hi)) <= 1e-2 * (hi - lo)]
     cps = " and ".join(f"{fmt(t)} s" for t in d["checkpoints_s"])
     md = (f"Strider's PSO (`kinematics/pso.h`, float, swarm {d['swarm']}, {d['iterations']} iterations, "
-          f"{d['evaluations']} rollouts in {fmt(d['tune_wall_s'])} s) tunes {d['robot']}'s {d['gait']} gait: step "
+          f"{d['evaluations']} rollouts in {fmt(d['tune_wall_s'])} s"
+          + (f", {fmt(d['tune_cpu_s'])} s of CPU" if "tune_cpu_s" in d else "") + ") tunes {d['robot']}'s {d['gait']} gait: step "
           "length, step height and cycle time (defaults: the model's gait parameters), for forward speed. Each "
           "candidate is a library-mode rollout in strider-sim's Bullet world (RobotApp, the firmware's chain, with "
           "the candidate's gait parameters; `walk 500`, the gait engine caps the speed at what the parameters "
