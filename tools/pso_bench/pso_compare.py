@@ -30,11 +30,13 @@ import argparse
 import json
 import logging
 import math
+import os
 import pathlib
 import platform
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 TARGET_COST_MM = 1e-6
@@ -173,6 +175,12 @@ def main():
     a = ap.parse_args()
     if a.smoke:
         a.runs = 3
+    # pyswarms (its import already) writes report.log into the working
+    # directory: keep it out of the caller's (the checkout, when run there).
+    a.pso_bench = os.path.abspath(a.pso_bench)
+    json_out = os.path.abspath(a.json) if a.json else None
+    scratch = tempfile.TemporaryDirectory(prefix="pso_compare-")
+    os.chdir(scratch.name)
     try:
         import numpy  # noqa: F401
         import pyswarms  # noqa: F401
@@ -207,8 +215,8 @@ def main():
     result = {"host_cpu": cpu_name(), "python": platform.python_version(), "runs": a.runs,
               "iterations": a.iterations, "timing": "thread CPU time, seeds interleaved", "pyswarms": py_rows,
               "strider": strider_rows, "strider_interleaved": timed_rows, "comparison": comparison}
-    if a.json:
-        path = pathlib.Path(a.json)
+    if json_out:
+        path = pathlib.Path(json_out)
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(json.dumps(result, indent=1) + "\n")
     return 0 if ok else 1

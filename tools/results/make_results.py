@@ -267,11 +267,9 @@ def pso_data(build, reuse, quick):
     bench = build / "tools" / "pso_bench" / "pso_bench"
     if not bench.is_file():
         raise NotMeasured(f"pso_bench is not built (cmake --build {build.name} --target pso_bench)")
-    try:
-        import numpy  # noqa: F401
-        import pyswarms  # noqa: F401
-    except ImportError as e:
-        raise NotMeasured(f"{e.name} is not installed for {sys.executable} (tools/dev python_env)")
+    for name in ("numpy", "pyswarms"):  # not imported here: pyswarms' import writes report.log into the cwd
+        if not _importable(name):
+            raise NotMeasured(f"{name} is not installed for {sys.executable} (tools/dev python_env)")
     runs = "5" if quick else "21"
     p = subprocess.run([sys.executable, str(ROOT / "tools" / "pso_bench" / "pso_compare.py"), "--pso-bench",
                         str(bench), "--runs", runs, "--json", str(cached)], capture_output=True, text=True,
