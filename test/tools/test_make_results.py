@@ -52,7 +52,7 @@ class MakeResults(unittest.TestCase):
         for title in old:
             if not title.startswith(("Seed 003: PSO", "PSO:", "Summary")):
                 self.assertEqual(old[title], new[title], title)
-        self.assertIn("Regenerated since (--only): Seed 003: PSO joint angles, table 4, PSO: Strider against", text)
+        self.assertIn("Regenerated since (--only pso): Seed 003: PSO joint angles, table 4, PSO: Strider against", text)
 
 
 if __name__ == "__main__":
