@@ -30,6 +30,30 @@ class MakeResults(unittest.TestCase):
         self.assertIn("not measured: skipped in this run (--no-slow)", text)
         self.assertNotIn("measurement failed", text)
 
+    def test_only_replaces_just_those_sections(self):
+        build = pathlib.Path(CLI).parents[2]
+        page = (ROOT / "docs" / "results.md").read_text()
+        with tempfile.TemporaryDirectory() as tmp:
+            out = pathlib.Path(tmp) / "results.md"
+            out.write_text(page)
+            p = subprocess.run([sys.executable, str(ROOT / "tools" / "results" / "make_results.py"), "--build",
+                                str(build), "--out", str(out), "--only", "pso", "--no-slow"],
+                               capture_output=True, text=True, timeout=120)
+            self.assertEqual(p.returncode, 0, p.stderr)
+            text = out.read_text()
+
+        def sections(t):
+            return {s.split("\n", 1)[0]: s for s in t.split("\n## ")[1:]}
+
+        old, new = sections(page), sections(text)
+        self.assertEqual(set(old), set(new))
+        for title in ("Seed 003: PSO joint angles, table 4", "PSO: Strider against pyswarms"):
+            self.assertIn("not measured: skipped in this run (--no-slow)", new[title])
+        for title in old:
+            if not title.startswith(("Seed 003: PSO", "PSO:", "Summary")):
+                self.assertEqual(old[title], new[title], title)
+        self.assertIn("Regenerated since (--only pso): Seed 003: PSO joint angles, table 4, PSO: Strider against", text)
+
 
 if __name__ == "__main__":
     unittest.main()

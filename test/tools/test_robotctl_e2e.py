@@ -4,6 +4,7 @@ Needs $STRIDER_VBENCH and $STRIDER_ELF (ctest sets both to the build's
 vbench and firmware ELF); skipped, with the reason, when either is missing.
 """
 import io
+import json
 import os
 import sys
 import tempfile
@@ -121,6 +122,22 @@ class VirtualMegaE2E(unittest.TestCase):
         self.assertEqual(rc, cli.EXIT_OK, out.getvalue())
         self.assertTrue(out.getvalue().startswith("ok status mode="), out.getvalue())
 
+    def test_6_sim_port_sonar_range(self):
+        # Open space by default, so that the robot may walk forward; `none`
+        # is a sonar without echo (no reading yet, then a sensor fault). The
+        # firmware times the echo, so a distance may be a millimetre off.
+        for args, sonar, dist in (([], {"ok"}, 2000), (["--sim-range", "350"], {"ok"}, 350),
+                                  (["--sim-range", "none"], {"none", "failed"}, None)):
+            out = io.StringIO()
+            rc = cli.main(["--port", "sim:", "--vbench", os.environ["STRIDER_VBENCH"], "--elf",
+                           os.environ["STRIDER_ELF"], "--timeout", "3", *args, "status", "--json"], out=out)
+            self.assertEqual(rc, cli.EXIT_OK, out.getvalue())
+            st = json.loads(out.getvalue().splitlines()[0])
+            self.assertIn(st["sonar"], sonar, st)
+            if dist is None:
+                self.assertNotIn("dist_mm", st)
+            else:
+                self.assertAlmostEqual(st["dist_mm"], dist, delta=5, msg=st)
 
 if __name__ == "__main__":
     unittest.main()

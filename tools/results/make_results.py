@@ -17,12 +17,16 @@ Sources:
 Intermediate results go to out/results/.
 
 usage: make_results.py [--build DIR] [--out docs/results.md] [--reuse] [--quick] [--no-slow]
+                       [--only pso,gait]
   --reuse  take the PSO comparison, gait tuning, simulator metrics and
            cross-check replays from out/results when present instead of
            measuring them again
   --quick  fewer samples (a check of the generator itself, not for docs)
   --no-slow  skip the PSO comparison, the simulator and the gait tuning
            (they then read "not measured"); for the generator's own test
+  --only   measure only the named section groups (pso: seed 003 table 4
+           and the pyswarms comparison; gait: the gait tuning) and replace
+           those sections and their summary rows in the existing page
 """
 import argparse
 import datetime
@@ -263,11 +267,9 @@ def pso_data(build, reuse, quick):
     bench = build / "tools" / "pso_bench" / "pso_bench"
     if not bench.is_file():
         raise NotMeasured(f"pso_bench is not built (cmake --build {build.name} --target pso_bench)")
-    try:
-        import numpy  # noqa: F401
-        import pyswarms  # noqa: F401
-    except ImportError as e:
-        raise NotMeasured(f"{e.name} is not installed for {sys.executable} (tools/dev python_env)")
+    for name in ("numpy", "pyswarms"):  # not imported here: pyswarms' import writes report.log into the cwd
+        if not _importable(name):
+            raise NotMeasured(f"{name} is not installed for {sys.executable} (tools/dev python_env)")
     runs = "5" if quick else "21"
     p = subprocess.run([sys.executable, str(ROOT / "tools" / "pso_bench" / "pso_compare.py"), "--pso-bench",
                         str(bench), "--runs", runs, "--json", str(cached)], capture_output=True, text=True,
@@ -277,16 +279,22 @@ def pso_data(build, reuse, quick):
     return json.loads(cached.read_text()), "measured"
 
 
+def _solver_name(r):
+    if r["scalar"] != "double" or "cost" not in r:
+        return f"Strider {r['scalar']}"
+    return f"Strider double, {'swarm-vectorised' if r['cost'] == 'swarm' else 'per-particle'} cost"
+
+
 def seed003_pso(data):
-    lib = {(r["case"], r["scalar"]): r for r in data["strider"]}
+    lib = {(r["case"], r["scalar"], r.get("cost", "each")): r for r in data["strider"]}
     py = {r["case"]: r for r in data["pyswarms"]}
     rows = []
     for case in ("a", "b"):
-        for scalar in ("double", "float", "fixed"):
-            r = lib.get((case, scalar))
+        for scalar, cost in (("double", "each"), ("double", "swarm"), ("float", "each"), ("fixed", "each")):
+            r = lib.get((case, scalar, cost))
             if r:
                 q = r["best_joints_deg"]
-                rows.append([case, f"Strider {scalar}", fmt(r["median_cost_mm"]), fmt(r["worst_cost_mm"]),
+                rows.append([case, _solver_name(r), fmt(r["median_cost_mm"]), fmt(r["worst_cost_mm"]),
                              f"{q[0]:.4f}, {q[1]:.4f}", fmt(r["median_ms"])])
         r = py[case]
         q = r["best_joints_deg"]
@@ -297,11 +305,11 @@ def seed003_pso(data):
           "[13.34156399, 17.29916917] in 1.75-1.85 s per run (table 4). Those numbers fit radians with "
           "bounds 0..20 and a 100 mm target (case a); the stated intent, degrees with bounds 0..20 deg, is "
           "case b (see docs/kinematics.md). Both, "
-          f"{data['runs']} seeds each, medians; joints of the best run (case a: angles beyond 360 deg are "
-          "the seed's own unwrapped radians):\n\n")
+          f"{data['runs']} seeds each, medians (time: thread CPU time); joints of the best run (case a: angles "
+          "beyond 360 deg are the seed's own unwrapped radians):\n\n")
     md += table(["case", "solver", "median final cost [mm]", "worst final cost [mm]", "joints [deg]",
                  "median time per run [ms]"], rows)
-    b = lib.get(("b", "double"))
+    b = lib.get(("b", "double", "each"))
     summary = [("003", "table 4: PSO joint angles, cost, run time", "cost 1.14e-14, [13.34, 17.29], 1.8 s/run",
                 f"case b double: cost {fmt(b['median_cost_mm'])} mm, [{b['best_joints_deg'][0]:.2f}, "
                 f"{b['best_joints_deg'][1]:.2f}] deg, {fmt(b['median_ms'])} ms/run" if b else "-")]
@@ -309,42 +317,68 @@ def seed003_pso(data):
 
 
 def pso_vs_pyswarms(data):
-    lib = {(r["case"], r["scalar"]): r for r in data["strider"]}
+    # The seed-by-seed interleaved timings (pso_compare.py); older files had
+    # one Strider row per case in "strider".
+    timed = data.get("strider_interleaved") or [r for r in data["strider"] if r["scalar"] == "double"]
+    lib = {(r["case"], r.get("cost", "each")): r for r in timed}
     py = {r["case"]: r for r in data["pyswarms"]}
-    rows = []
+    rows, to_cost, full, wall = [], {}, {}, {}
     for c in data["comparison"]:
         case = c["case"]
-        lr, pr = lib[(case, "double")], py[case]
-        rows.append([case, f"{fmt(pr['median_ms'])} / {fmt(lr['median_ms'])}",
-                     f"{fmt(pr['median_cost_mm'])} / {fmt(lr['median_cost_mm'])}", f"**{c['ratio_full_run']:.0f}x**",
-                     f"{fmt(pr.get('median_iterations_to_1e-6'))} / {fmt(lr.get('median_iterations_to_1e-6'))}",
-                     f"{fmt(pr.get('median_ms_to_1e-6'))} / {fmt(lr.get('median_ms_to_1e-6'))}",
-                     f"**{c['ratio_to_1e-6']:.0f}x**" if "ratio_to_1e-6" in c else "-"])
-    to_cost = [c["ratio_to_1e-6"] for c in data["comparison"] if "ratio_to_1e-6" in c]
-    full = [c["ratio_full_run"] for c in data["comparison"]]
+        pr = py[case]
+        for cost in ("each", "swarm"):
+            lr, cr = lib.get((case, cost)), c.get(cost)
+            if lr is None or cr is None:
+                continue
+            rows.append([case, "swarm-vectorised (" + lr.get("cost_math", "") + ")" if cost == "swarm"
+                         else "per particle (" + lr.get("cost_math", "libm") + ")",
+                         f"{fmt(pr.get('median_iterations_to_1e-6'))} / {fmt(lr.get('median_iterations_to_1e-6'))}",
+                         f"{fmt(pr.get('median_ms_to_1e-6'))} / {fmt(lr.get('median_ms_to_1e-6'))}",
+                         f"**{cr['ratio_to_1e-6']:.0f}x**" if "ratio_to_1e-6" in cr else "-",
+                         f"{fmt(pr['median_ms'])} / {fmt(lr['median_ms'])}",
+                         f"{fmt(pr['median_cost_mm'])} / {fmt(lr['median_cost_mm'])}",
+                         f"**{cr['ratio_full_run']:.0f}x**"])
+            if "ratio_to_1e-6" in cr:
+                to_cost.setdefault(cost, []).append(cr["ratio_to_1e-6"])
+                wall.setdefault(cost, []).append(cr.get("ratio_to_1e-6_wall", cr["ratio_to_1e-6"]))
+            full.setdefault(cost, []).append(cr["ratio_full_run"])
     md = ("Seed 003's problem solved by pyswarms and by Strider's `kinematics/pso.h` (in double, the precision "
           "numpy uses) in the same run on the same machine "
-          f"({data['host_cpu']}, Python {data['python']}), {data['runs']} seeds each, medians of wall time. "
-          "Same settings (table 3) and cost (eq 15). Equal final cost: each run is timed until its best cost "
-          "first falls below 1e-6 mm (the convergence mark test/chain/test_pso.cpp uses for the seed's experiment; pyswarms is rerun with the same seed for exactly "
-          "the iterations it needed, so its time is measured, not scaled). Equal work: both run all 1000 "
-          "iterations (final costs in the table). Made by tools/pso_bench (pso_bench.cpp, pso_compare.py).\n\n")
-    md += table(["case", "iterations to 1e-6 mm pyswarms / Strider", "time to 1e-6 mm [ms] pyswarms / Strider",
-                 "speed-up at equal cost", "1000 iterations [ms] pyswarms / Strider",
-                 "final cost [mm] pyswarms / Strider", "speed-up at equal work"],
-                [[r[0], r[4], r[5], r[6], r[1], r[2], r[3]] for r in rows])
-    verdict = "met" if to_cost and min(to_cost) >= 100 else "NOT met"
-    if to_cost:
+          f"({data['host_cpu']}, Python {data['python']}), {data['runs']} seeds each, medians. Same settings "
+          "(table 3) and cost (eq 15). pyswarms calls its cost once per iteration for the whole swarm (numpy "
+          "arrays); Strider is timed both ways: `minimize_swarm()` with the cost vectorised over the swarm in "
+          "the same way (glibc's vector sin/cos), and `minimize()` with the cost called per particle (libm). "
+          "Equal final cost: each run is timed until its best cost first falls below 1e-6 mm (the convergence "
+          "mark test/chain/test_pso.cpp uses for the seed's experiment; pyswarms is rerun with the same seed for "
+          "exactly the iterations it needed, so its time is measured, not scaled). Equal work: both run all 1000 "
+          "iterations (final costs in the table). Times are thread CPU time, each side after an untimed warm-up "
+          "run, the seeds interleaved (Strider then pyswarms, then the other way round) so that both see the "
+          "same machine load; wall time would favour Strider under load, as the long pyswarms runs are "
+          "preempted more often. Made by tools/pso_bench (pso_bench.cpp, pso_compare.py).\n\n")
+    md += table(["case", "Strider's cost", "iterations to 1e-6 mm pyswarms / Strider",
+                 "time to 1e-6 mm [ms] pyswarms / Strider", "speed-up at equal cost",
+                 "1000 iterations [ms] pyswarms / Strider", "final cost [mm] pyswarms / Strider",
+                 "speed-up at equal work"], rows)
+    # The target compares like with like: both costs vectorised over the swarm.
+    head = "swarm" if "swarm" in to_cost else "each"
+    verdict = "met" if to_cost.get(head) and min(to_cost[head]) >= 100 else "NOT met"
+    if to_cost.get(head):
         md += (f"\nTarget: >= 100x faster at equal final cost: **{verdict}** (smallest speed-up "
-               f"{min(to_cost):.0f}x; at equal work {min(full):.0f}-{max(full):.0f}x).")
+               f"{min(to_cost[head]):.0f}x with the swarm-vectorised cost as pyswarms', "
+               f"{min(wall[head]):.0f}x in wall time, which favours Strider under load; at equal work {min(full[head]):.0f}-{max(full[head]):.0f}x)")
+        if head == "swarm" and to_cost.get("each"):
+            md += (f"; with the cost called per particle {min(to_cost['each']):.0f}-{max(to_cost['each']):.0f}x "
+                   f"at equal cost, {min(full['each']):.0f}-{max(full['each']):.0f}x at equal work")
+        md += "."
     else:
         md += "\nTarget: >= 100x faster at equal final cost: not measured (no run reached 1e-6 mm)."
-    md += (" Wall times, pyswarms' above all, depend on the machine and its load, so the ratio moves between "
-           "runs; this page shows one run. Float and fixed point, as the firmware runs them, are in the table "
-           "above.\n")
+    md += (" Times depend on the machine and its load, so the ratio moves between runs; this page shows one "
+           "run. Float and fixed point, as the firmware runs them, are in the table above.\n")
     summary = [("003", "PSO against pyswarms (same run)", ">= 100x faster at equal cost",
-                (f"{min(to_cost):.0f}x or more at equal cost, {verdict}; {min(full):.0f}x or more at equal work"
-                 if to_cost else "not measured"))]
+                (f"{min(to_cost[head]):.0f}x or more at equal cost, {verdict}; {min(full[head]):.0f}x or more at "
+                 "equal work" + (f" (per-particle cost: {min(to_cost['each']):.0f}x / {min(full['each']):.0f}x)"
+                                 if head == "swarm" and to_cost.get("each") else "")
+                 if to_cost.get(head) else "not measured"))]
     return md, summary
 
 
@@ -588,48 +622,54 @@ def gait_tuning(d):
             ("speed_mm_s", "forward speed [mm/s]"), ("max_tilt_deg", "max tilt [deg]"),
             ("lateral_pct", "sideways drift [% of distance]"), ("heading_deg", "heading change [deg]"),
             ("fell", "fell"), ("feasible", "meets the constraints")]
+    windows = d["windows"]
     rows = []
 
     def cell(v):
         return ("yes" if v else "no") if isinstance(v, bool) else fmt(v)
 
     for k, label in keys:
-        row = [label, cell(d["default"].get(k)), cell(d["tuned"].get(k))]
-        if "tuned_long" in d and k not in ("step_length_mm", "step_height_mm", "cycle_s"):
-            row += [cell(d["default_long"].get(k)), cell(d["tuned_long"].get(k))]
-        elif "tuned_long" in d:
-            row += ["", ""]
+        row = [label]
+        for i, w in enumerate(windows):
+            if k in ("step_length_mm", "step_height_mm", "cycle_s") and i > 0:
+                row += ["", ""]
+            else:
+                row += [cell(w["default"].get(k)), cell(w["tuned"].get(k))]
         rows.append(row)
     c, lo_hi = d["constraints"], d["bounds"]
     on_bound = [label.split(" [")[0] for (name, label), (lo, hi) in zip(keys[:3], lo_hi)
                 if min(abs(d["tuned"][name] - lo), abs(d["tuned"][name] - hi)) <= 1e-2 * (hi - lo)]
+    cps = " and ".join(f"{fmt(t)} s" for t in d["checkpoints_s"])
     md = (f"Strider's PSO (`kinematics/pso.h`, float, swarm {d['swarm']}, {d['iterations']} iterations, "
-          f"{d['evaluations']} rollouts in {fmt(d['tune_wall_s'])} s) tunes {d['robot']}'s {d['gait']} gait: step "
-          "length, step height and cycle time (defaults: the model's gait parameters), for forward speed. Each candidate is a "
-          "library-mode rollout in strider-sim's Bullet world (RobotApp, the firmware's chain, with the "
-          "candidate's gait parameters; `walk 500`, the gait engine caps the speed at what the parameters "
-          f"allow), scored over {fmt(d['walk_s'])} s of walking. Constraints: no fall, tilt <= "
+          f"{d['evaluations']} rollouts in {fmt(d['tune_wall_s'])} s"
+          + (f", {fmt(d['tune_cpu_s'])} s of CPU" if "tune_cpu_s" in d else "") + f") tunes {d['robot']}'s {d['gait']} gait: step "
+          "length, step height and cycle time (defaults: the model's gait parameters), for forward speed. Each "
+          "candidate is a library-mode rollout in strider-sim's Bullet world (RobotApp, the firmware's chain, with "
+          "the candidate's gait parameters; `walk 500`, the gait engine caps the speed at what the parameters "
+          f"allow), scored by its speed over {fmt(d['walk_s'])} s of walking. Constraints: no fall, tilt <= "
           f"{fmt(c['max_tilt_deg'])} deg, sideways drift <= {fmt(c['max_lateral_pct'])} % of the distance, "
-          f"turning <= {fmt(c['max_heading_deg_s'])} deg/s. Bounds: step length {fmt(lo_hi[0][0])}-"
+          f"turning <= {fmt(c['max_heading_deg_s'])} deg/s, each checked at {cps} of the rollout (a gait that "
+          "turns slowly drifts more the longer it walks); tuned with "
+          f"{d.get('margin_pct', 30)} % margin on drift and turning. Bounds: step length {fmt(lo_hi[0][0])}-"
           f"{fmt(lo_hi[0][1])} mm, height {fmt(lo_hi[1][0])}-{fmt(lo_hi[1][1])} mm, cycle {fmt(lo_hi[2][0])}-"
-          f"{fmt(lo_hi[2][1])} s; tuned with 30 % margin on drift and turning. Both gaits over the tuning "
-          f"window ({fmt(d['walk_s'])} s) and over a walk twice as long ({fmt(d['check_walk_s'])} s), the "
-          "constraints applied to each (tools/pso_bench/gait_tune.cpp):\n\n")
-    head = ["", f"default, {fmt(d['walk_s'])} s", f"tuned, {fmt(d['walk_s'])} s"]
-    if "tuned_long" in d:
-        head += [f"default, {fmt(d['check_walk_s'])} s", f"tuned, {fmt(d['check_walk_s'])} s"]
+          f"{fmt(lo_hi[2][1])} s. Both gaits over the checkpoints' windows and over a walk twice as long "
+          f"({fmt(d['check_walk_s'])} s, not seen by the tuning), the constraints applied to each (one rollout per "
+          "gait; the shorter windows are the start of the same walk; tools/pso_bench/gait_tune.cpp):\n\n")
+    head = [""]
+    for w in windows:
+        head += [f"default, {fmt(w['default']['walk_s'])} s", f"tuned, {fmt(w['tuned']['walk_s'])} s"]
     md += table(head, rows)
     if on_bound:
         md += (f"\nOn (within 1 % of) a bound of the search box: {', '.join(on_bound)}: a wider box may find a "
                "faster gait.\n")
     ratio = d["tuned"]["speed_mm_s"] / d["default"]["speed_mm_s"] if d["default"]["speed_mm_s"] > 0 else None
-    long_ok = d.get("tuned_long", {}).get("feasible")
-    verdict = ("meets the constraints" if d["tuned"].get("feasible") else "does NOT meet the constraints")
-    if "tuned_long" in d:
-        verdict += f"; over {fmt(d['check_walk_s'])} s it {'still does' if long_ok else 'does NOT'}"
+    ok = [w["tuned"].get("feasible") for w in windows]
+    verdict = ("meets the constraints over " + ", ".join(f"{fmt(w['tuned']['walk_s'])} s" for w in windows)
+               if all(ok) else "does NOT meet the constraints over " +
+               ", ".join(f"{fmt(w['tuned']['walk_s'])} s" for w, good in zip(windows, ok) if not good))
     summary = [("000", f"gait tuned by PSO in the simulator ({d['robot']})", "155 mm/s (seed 000's robot)",
-                f"{fmt(d['tuned']['speed_mm_s'])} mm/s tuned vs {fmt(d['default']['speed_mm_s'])} default"
-                + (f" ({ratio:.1f}x)" if ratio else "") + f"; {verdict}")]
+                f"{fmt(d['tuned']['speed_mm_s'])} mm/s tuned vs {fmt(d['default']['speed_mm_s'])} default over "
+                f"{fmt(d['walk_s'])} s" + (f" ({ratio:.2f}x)" if ratio else "") + f"; {verdict}")]
     return md, summary
 
 
@@ -775,6 +815,34 @@ def section(title, fn, *args):
     return f"## {title}\n\n{md}\n", summary
 
 
+SECTION_GROUPS = {"pso": ("Seed 003: PSO joint angles, table 4", "PSO: Strider against pyswarms"),
+                  "gait": ("Gait tuning by PSO (simulator rollouts)",)}
+
+
+def splice(old_text, parts, summary, notes):
+    """Replaces the regenerated sections and their summary rows in a page."""
+    text = old_text
+    for md in parts:
+        title = md.split("\n", 1)[0]
+        start = text.find(title + "\n")
+        if start < 0:
+            raise SystemExit(f"{title!r} is not on the page: regenerate it whole")
+        end = text.find("\n## ", start + len(title))
+        text = text[:start] + md.rstrip() + "\n" + (text[end:] if end >= 0 else "")
+    for seed, figure, paper, value in summary:
+        row = f"| {seed} | {figure} | {paper} | {value} |"
+        text, n = re.subn(r"^\| " + re.escape(seed) + r" \| " + re.escape(figure) + r" \|.*$",
+                          lambda _m: row, text, count=1, flags=re.M)
+        if n == 0:
+            raise SystemExit(f"summary row {figure!r} is not on the page: regenerate it whole")
+    # One note per group regenerated, after the page's "Generated" line.
+    for group, line in notes:
+        text = re.sub(r"^Regenerated since \(--only( " + re.escape(group) + r")?\):.*\n\n", "", text, flags=re.M)
+    head, sep, rest = text.partition("\n## Summary")
+    text = head.rstrip("\n") + "\n\n" + "\n\n".join(line for _, line in notes) + "\n" + sep + rest
+    return text
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--build", default=os.environ.get("STRIDER_BUILD_DIR", str(ROOT / "out" / "build")))
@@ -782,7 +850,13 @@ def main():
     ap.add_argument("--reuse", action="store_true", help="reuse out/results measurements when present")
     ap.add_argument("--quick", action="store_true", help="few samples: a check of the generator, not for docs")
     ap.add_argument("--no-slow", action="store_true", help="skip the PSO comparison and the simulator")
+    ap.add_argument("--only", help="comma-separated section groups (" + ", ".join(SECTION_GROUPS) + "): "
+                    "measure just those and replace them and their summary rows in the existing page")
     a = ap.parse_args()
+    only = set(a.only.split(",")) if a.only else None
+    if only and not only <= set(SECTION_GROUPS):
+        ap.error(f"--only takes {', '.join(SECTION_GROUPS)}")
+    wanted = {t for g in only for t in SECTION_GROUPS[g]} if only else None
     build = pathlib.Path(a.build).resolve()
     RESULTS.mkdir(parents=True, exist_ok=True)
     t0 = time.monotonic()
@@ -797,18 +871,20 @@ def main():
             return fn(cli, *args)
         return run
 
-    try:
-        if a.no_slow:
-            raise NotMeasured("skipped in this run (--no-slow)")
-        pso = pso_data(build, a.reuse, a.quick)[0]
-    except NotMeasured as e:
-        pso = e
-    try:
-        if a.no_slow:
-            raise NotMeasured("skipped in this run (--no-slow)")
-        sim = sim_metrics(build, a.reuse)
-    except NotMeasured as e:
-        sim = e
+    def slow(measure, *titles):
+        """A slow source, measured only when a section that needs it is wanted."""
+        if wanted is not None and not wanted & set(titles):
+            return NotMeasured("not wanted")
+        try:
+            if a.no_slow:
+                raise NotMeasured("skipped in this run (--no-slow)")
+            return measure()
+        except NotMeasured as e:
+            return e
+
+    pso = slow(lambda: pso_data(build, a.reuse, a.quick)[0], *SECTION_GROUPS["pso"])
+    sim = slow(lambda: sim_metrics(build, a.reuse), "Seed 000: speed and turning (simulator)",
+               "Seed 003: distances walked, table 5 (simulator)", "Simulator against pybullet and MuJoCo")
 
     def from_pso(fn):
         def run():
@@ -820,6 +896,8 @@ def main():
     parts, summary = [], []
 
     def add(title, fn, *args):
+        if wanted is not None and title not in wanted:
+            return
         md, rows = section(title, fn, *args)
         parts.append(md)
         summary.extend(rows)
@@ -837,14 +915,10 @@ def main():
 
     add("AVR cycles and sizes", avr_section)
     add("IK accuracy, float and fixed point", needs_cli(accuracy), a.quick)
-    parts.append(f"## Simulator scenarios\n\n{sim_table(sim)}\n")
+    if wanted is None:
+        parts.append(f"## Simulator scenarios\n\n{sim_table(sim)}\n")
     add("Simulator against pybullet and MuJoCo", physics_check, sim, cli_path, a.reuse)
-    try:
-        if a.no_slow:
-            raise NotMeasured("skipped in this run (--no-slow)")
-        tune = gait_tune_data(build, a.reuse)
-    except NotMeasured as e:
-        tune = e
+    tune = slow(lambda: gait_tune_data(build, a.reuse), *SECTION_GROUPS["gait"])
 
     def from_tune():
         if isinstance(tune, NotMeasured):
@@ -853,20 +927,28 @@ def main():
 
     add("Gait tuning by PSO (simulator rollouts)", from_tune)
 
-    head = ["# Results", "",
-            "<!-- Generated by tools/results/make_results.py (tools/dev results); edits here are overwritten. -->", "",
-            "What Strider measures against its seed papers and against other implementations. Everything on this "
-            "page is regenerated by one script, `tools/results/make_results.py` (run by `tools/dev results`); "
-            "numbers quoted from the papers say so. A figure whose source is not available says "
-            "\"not measured\" and why.", "",
-            f"Generated {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC from commit "
-            f"{git_describe()} on {cpu_name()}{' (--quick: reduced samples)' if a.quick else ''}.", "",
-            "## Summary", ""]
-    if not summary:
-        head.append(not_measured("no section produced a figure"))
+    stamp = (f"{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC from commit {git_describe()} on "
+             f"{cpu_name()}{' (--quick: reduced samples)' if a.quick else ''}"
+             f"{' (--reuse: measurements from out/results where present)' if a.reuse else ''}")
+    if only:
+        text = splice(pathlib.Path(a.out).read_text(), parts, summary,
+                      [(g, f"Regenerated since (--only {g}): {', '.join(SECTION_GROUPS[g])}, {stamp}.")
+                       for g in SECTION_GROUPS if g in only])
     else:
-        head.append(table(["seed", "figure", "paper / target", "Strider"], summary))
-    text = "\n".join(head) + "\n" + "\n".join(parts)
+        head = ["# Results", "",
+                "<!-- Generated by tools/results/make_results.py (tools/dev results); edits here are overwritten. -->",
+                "",
+                "What Strider measures against its seed papers and against other implementations. Everything on "
+                "this page is regenerated by one script, `tools/results/make_results.py` (run by `tools/dev "
+                "results`); numbers quoted from the papers say so. A figure whose source is not available says "
+                "\"not measured\" and why.", "",
+                f"Generated {stamp}.", "",
+                "## Summary", ""]
+        if not summary:
+            head.append(not_measured("no section produced a figure"))
+        else:
+            head.append(table(["seed", "figure", "paper / target", "Strider"], summary))
+        text = "\n".join(head) + "\n" + "\n".join(parts)
     text = re.sub(r"\n{3,}", "\n\n", text).rstrip() + "\n"
     pathlib.Path(a.out).write_text(text)
     print(f"wrote {a.out} in {time.monotonic() - t0:.1f} s ({cli.calls if cli else 0} CLI calls)", file=sys.stderr)

@@ -3,7 +3,8 @@
 //! in fixed arrays (no heap).
 //!
 //! Velocity and position updates, per particle and dimension d, with r1, r2
-//! drawn uniform in [0, 1) for every d:
+//! drawn uniform in [0, 1) for every d (one xorshift32 draw each: 32 random
+//! bits in double, 24 in float, 16 in Fixed):
 //!   v = w v + c1 r1 (pbest - x) + c2 r2 (gbest - x)                (eq 12)
 //!   x = clamp(x + v, lo, hi)                                       (eq 13)
 //! This is the form pyswarms implements and the seed ran. Eq 12 as printed
@@ -13,12 +14,13 @@
 //! "nearest"; its GlobalBestPSO default is "periodic"), and a velocity
 //! component that left the box is reversed and halved, so a particle does not
 //! stay pressed against a bound (seed 003 problem, bounds 0..20 rad, 2000
-//! seeds: 1.3 % of runs stalled on a bound with plain clamping, 0.25 % with
-//! this; bounds 0..20 deg: 0.9 % and none). Initial
+//! seeds: 1.05 % of runs stalled on a bound with plain clamping, 0.35 % with
+//! this; bounds 0..20 deg: 0.85 % and none). Initial
 //! positions are uniform in the bounds, initial velocities zero (pyswarms
-//! draws U[0, 1) whatever the bounds). Each iteration evaluates the swarm,
-//! updates the personal and the
-//! global bests, stops when the best cost is below cost_threshold, then
+//! draws U[0, 1) whatever the bounds). Each iteration evaluates the swarm
+//! (minimize: one cost call per particle; minimize_swarm: one call for the
+//! whole swarm, as pyswarms' costs are), updates the personal and the global
+//! bests, stops when the best cost is below cost_threshold, then
 //! moves the swarm; it ends after max_iterations evaluations at the latest.
 //! The same seed gives the same result on the host and on the AVR for Fixed.
 #ifndef STRIDER_KINEMATICS_PSO_H
@@ -67,7 +69,7 @@ struct PsoResult {
   PsoStatus status;
 };
 
-//! The swarm state; keep one (static on the AVR: about Capacity * (12 D + 4)
+//! The swarm state; keep one (static on the AVR: about Capacity * (12 D + 8)
 //! bytes for float) and call minimize() as often as needed.
 template <typename S, uint8_t D, uint8_t Capacity = 20>
 class ParticleSwarm {
@@ -78,9 +80,17 @@ class ParticleSwarm {
   using Point = JointVector<S, D>;
 
   //! Minimises cost(const Point&) -> S over the box of `p` (seed 003
-  //! algorithm 1).
+  //! algorithm 1), the particles evaluated one by one in index order.
   template <typename Cost>
   PsoResult<S, D> minimize(const PsoParams<S, D>& p, Cost&& cost) {
+    return minimize_swarm(p, EachParticle<Cost>{cost});
+  }
+
+  //! The same with a cost vectorised over the swarm, as pyswarms' costs are:
+  //! cost(const Point* x, uint8_t n, S* c) sets c[i] to the cost of x[i] for
+  //! every i < n (one call per iteration, so a cost may batch its math).
+  template <typename SwarmCost>
+  PsoResult<S, D> minimize_swarm(const PsoParams<S, D>& p, SwarmCost&& cost) {
     PsoResult<S, D> r;
     r.iterations = 0;
     r.cost = S(0);
@@ -94,16 +104,16 @@ class ParticleSwarm {
     Prng rng(p.seed);
     for (uint8_t i = 0; i < n; ++i) {
       for (uint8_t d = 0; d < D; ++d) {
-        x_[i][d] = clamp(rng.uniform(p.lo[d], p.hi[d]), p.lo[d], p.hi[d]);
+        x_[i][d] = clamp(p.lo[d] + (p.hi[d] - p.lo[d]) * unit(rng, static_cast<S*>(nullptr)), p.lo[d], p.hi[d]);
         v_[i][d] = S(0);
       }
     }
     uint8_t g = 0;  // index of the global best among the personal bests
     for (uint16_t t = 0; t < p.max_iterations; ++t) {
+      cost(static_cast<const Point*>(x_), n, cost_);
       for (uint8_t i = 0; i < n; ++i) {
-        const S c = cost(static_cast<const Point&>(x_[i]));
-        if (t == 0 || c < pbest_cost_[i]) {
-          pbest_cost_[i] = c;
+        if (t == 0 || cost_[i] < pbest_cost_[i]) {
+          pbest_cost_[i] = cost_[i];
           pbest_[i] = x_[i];
         }
         if (pbest_cost_[i] < pbest_cost_[g]) g = i;
@@ -120,20 +130,54 @@ class ParticleSwarm {
   }
 
  private:
-  // Eqs 12-13 in pyswarms' form (see the file comment).
+  template <typename Cost>
+  struct EachParticle {
+    Cost& cost;
+    void operator()(const Point* x, uint8_t n, S* c) const {
+      for (uint8_t i = 0; i < n; ++i) c[i] = cost(x[i]);
+    }
+  };
+
+  // Uniform in [0, 1): float 24 bits and Fixed 16 bits of one draw (as
+  // Prng::uniform); double the 32 bits of one draw, exact in a 64-bit
+  // double: xorshift32 has 32 bits of state, so the second draw that
+  // Prng::uniform<double> spends on 53 bits would add no randomness (and the
+  // generator's serial chain is the swarm update's critical path). On the
+  // AVR double is a 32-bit float: there it takes float's 24 bits.
+  static float unit(Prng& rng, float*) { return rng.uniform<float>(); }
+  static Fixed unit(Prng& rng, Fixed*) { return rng.uniform<Fixed>(); }
+  static double unit(Prng& rng, double*) {
+    return sizeof(double) >= 8 ? double(rng.next_u32()) * (1.0 / 4294967296.0) : double(rng.uniform<float>());
+  }
+
+  // Eqs 12-13 in pyswarms' form (see the file comment). The parameters are
+  // copied to locals: the stores to the swarm could otherwise alias them
+  // (they are S too), and every read would be repeated per dimension.
   void move(const PsoParams<S, D>& p, uint8_t g, Prng& rng) {
-    for (uint8_t i = 0; i < p.swarm_size; ++i) {
+    const S w = p.w, c1 = p.c1, c2 = p.c2;
+    S lo[D], hi[D], vmax[D];
+    for (uint8_t d = 0; d < D; ++d) {
+      lo[d] = p.lo[d];
+      hi[d] = p.hi[d];
+      vmax[d] = p.velocity_clamp * (hi[d] - lo[d]);
+    }
+    const bool clamp_v = S(0) < p.velocity_clamp;
+    const Point gbest = pbest_[g];
+    const uint8_t n = p.swarm_size;
+    for (uint8_t i = 0; i < n; ++i) {
+      Point& xi = x_[i];
+      Point& vi = v_[i];
+      const Point& pi = pbest_[i];
       for (uint8_t d = 0; d < D; ++d) {
-        const S r1 = rng.uniform<S>();
-        const S r2 = rng.uniform<S>();
-        S v = p.w * v_[i][d] + p.c1 * r1 * (pbest_[i][d] - x_[i][d]) + p.c2 * r2 * (pbest_[g][d] - x_[i][d]);
-        if (S(0) < p.velocity_clamp) {
-          const S vmax = p.velocity_clamp * (p.hi[d] - p.lo[d]);
-          v = clamp(v, -vmax, vmax);
-        }
-        const S x = x_[i][d] + v;
-        v_[i][d] = (x < p.lo[d] || p.hi[d] < x) ? v * S(-0.5) : v;
-        x_[i][d] = clamp(x, p.lo[d], p.hi[d]);
+        const S r1 = unit(rng, static_cast<S*>(nullptr));
+        const S r2 = unit(rng, static_cast<S*>(nullptr));
+        const S xd = xi[d];
+        S v = w * vi[d] + c1 * r1 * (pi[d] - xd) + c2 * r2 * (gbest[d] - xd);
+        if (clamp_v) v = clamp(v, -vmax[d], vmax[d]);
+        const S x = xd + v;
+        const bool out = x < lo[d] || hi[d] < x;
+        vi[d] = out ? v * S(-0.5) : v;
+        xi[d] = clamp(x, lo[d], hi[d]);
       }
     }
   }
@@ -142,6 +186,7 @@ class ParticleSwarm {
   Point v_[Capacity];
   Point pbest_[Capacity];
   S pbest_cost_[Capacity];
+  S cost_[Capacity];  // this iteration's costs
 };
 
 //! PSO as inverse kinematics: the cost of joints q is the distance from

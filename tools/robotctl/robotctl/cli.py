@@ -18,6 +18,14 @@ from .script import ScriptError, parse_script, play
 EXIT_OK, EXIT_ERR_REPLY, EXIT_USAGE, EXIT_TIMEOUT, EXIT_LINK = 0, 1, 2, 3, 4
 
 
+def _sim_range(text: str) -> str:
+    from .sim import parse_range
+    try:
+        return parse_range(text)
+    except ValueError as e:
+        raise argparse.ArgumentTypeError(str(e)) from e
+
+
 def add_common(ap: argparse.ArgumentParser, top: bool) -> None:
     """The link options; also accepted after the command (`robotctl send
     --port P ...`), where they must not reset what was given before it."""
@@ -35,6 +43,9 @@ def add_common(ap: argparse.ArgumentParser, top: bool) -> None:
     ap.add_argument("--elf", default=d(None), help="sim: the firmware ELF (default: the model's in the build dir, $STRIDER_ELF)")
     ap.add_argument("--eeprom", default=d(None), help="sim: EEPROM image file kept between runs")
     ap.add_argument("--build-dir", default=d(None), help="sim: CMake build directory (default $STRIDER_BUILD_DIR or out/build)")
+    ap.add_argument("--sim-range", default=d(None), metavar="MM|none", type=_sim_range,
+                    help="sim: the virtual sonar's echo distance in mm, or none for no echo (a sensor fault); "
+                         "default 2000, open space")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -105,7 +116,7 @@ class Drive:
             self.link.wait_for(r"^info strider .*ready", wait)
 
     def _start_sim(self, spec):
-        from .sim import VirtualMega, build_dir, find_elf, find_vbench
+        from .sim import DEFAULT_RANGE_MM, VirtualMega, build_dir, find_elf, find_vbench
         bd = build_dir(self.args.build_dir)
         vbench = find_vbench(self.args.vbench, bd)
         elf = find_elf(spec, self.args.elf, bd)
@@ -113,7 +124,7 @@ class Drive:
             raise LinkError("sim: no vbench executable (build tools/vbench, or give --vbench)")
         if not elf:
             raise LinkError(f"sim: no firmware ELF for '{spec or 'sprawl8'}' (build it, or give --elf)")
-        self.vm = VirtualMega(vbench, elf, self.args.eeprom)
+        self.vm = VirtualMega(vbench, elf, self.args.eeprom, range_mm=self.args.sim_range or DEFAULT_RANGE_MM)
         return self.vm.start()
 
     def _on_event(self, ev):

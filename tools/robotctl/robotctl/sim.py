@@ -5,6 +5,7 @@ import os
 import pathlib
 import shutil
 import subprocess
+import tempfile
 import threading
 from collections import deque
 from typing import Deque, List, Optional
@@ -12,6 +13,23 @@ from typing import Deque, List, Optional
 from .link import LinkError
 
 DEFAULT_MODEL = "sprawl8"
+#: The virtual sonar's echo [mm] unless told otherwise: an open room, so that
+#: the robot may walk forward (with no echo at all the firmware reports a
+#: sensor fault and avoidance holds forward motion back).
+DEFAULT_RANGE_MM = "2000"
+
+
+def parse_range(text: str) -> str:
+    """`--sim-range`: millimetres >= 0 or `none` (no echo), as vbench's `range` directive."""
+    t = text.strip().lower()
+    if t == "none":
+        return t
+    try:
+        if float(t) >= 0:
+            return t
+    except ValueError:
+        pass
+    raise ValueError(f"sim range must be millimetres >= 0 or none, not {text!r}")
 
 
 def repo_root(start: Optional[pathlib.Path] = None) -> Optional[pathlib.Path]:
@@ -65,10 +83,19 @@ def find_elf(spec: str, explicit: Optional[str] = None, build: Optional[pathlib.
 class VirtualMega:
     """A running `vbench --pty`; use as a context manager."""
 
-    def __init__(self, vbench: str, elf: str, eeprom: Optional[str] = None, extra: Optional[List[str]] = None):
+    def __init__(self, vbench: str, elf: str, eeprom: Optional[str] = None, extra: Optional[List[str]] = None,
+                 range_mm: Optional[str] = None):
+        """range_mm: the sonar's echo from the start (millimetres or `none`);
+        None leaves vbench's own default (no echo)."""
         self.cmd = [vbench, "--elf", elf, "--pty"]
         if eeprom:
             self.cmd += ["--eeprom", eeprom]
+        self.script: Optional[str] = None
+        if range_mm is not None:
+            fd, self.script = tempfile.mkstemp(prefix="robotctl-", suffix=".vbench")
+            with os.fdopen(fd, "w") as f:
+                f.write(f"at 0 range {parse_range(range_mm)}\n")
+            self.cmd += ["--script", self.script]
         self.cmd += list(extra or [])
         self.proc: Optional[subprocess.Popen] = None
         self.pty: Optional[str] = None
@@ -110,6 +137,12 @@ class VirtualMega:
             except subprocess.TimeoutExpired:
                 self.proc.kill()
                 self.proc.wait()
+        if self.script is not None:
+            try:
+                os.unlink(self.script)
+            except OSError:
+                pass
+            self.script = None
 
     def __enter__(self) -> "VirtualMega":
         self.start()
