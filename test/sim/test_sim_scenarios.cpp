@@ -60,7 +60,7 @@ TEST(SimScenarios, Sprawl8WalksForward) {
 TEST(SimScenarios, Sprawl8TurnsAFullCircle) {
   const Metrics m = run_file("sprawl8_turn").metrics;
   EXPECT_FALSE(m.fell);
-  EXPECT_GT(m.heading_change_deg, 360.0);  // anticlockwise, 8 s at 60 deg/s asked
+  EXPECT_GT(m.heading_change_deg, 360.0);  // anticlockwise, 8 s at 80 deg/s asked
   ASSERT_GT(m.turn_360_s, 0.0);
   EXPECT_LT(m.turn_360_s, 9.0);            // seed target 6 s
   EXPECT_LT(m.distance_mm, 50.0);          // in place
@@ -175,10 +175,11 @@ TEST(SimScenarios, Dog12StandsAndTrotsForward) {
     }
 }
 
-// Seed 000: 360 deg in 6 s. Measured: 7.44 s (`turn 120`): the gait engine
-// caps turning in place at 58.9 deg/s (workspace and servo speed: 6.1 s at
-// best) and the feet slide ~12 %, 52 deg/s at the body.
-TEST(SimTargets, DISABLED_Sprawl8Turns360InSixSeconds) {
+// Seed 000: 360 deg in 6 s. The trot turns in place at up to 82.6 deg/s
+// (servo speed, at most 0.4 rad per stance); the feet slide ~12 %, so the
+// scenario asks 80 deg/s for the seed's 60 at the body. Measured: 5.6 s
+// (70.7 deg/s at the body; 7.44 s when the stance turn was capped at 0.25 rad).
+TEST(SimTargets, Sprawl8Turns360InSixSeconds) {
   EXPECT_LE(run_file("sprawl8_turn").metrics.turn_360_s, 6.0);
 }
 
