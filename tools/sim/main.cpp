@@ -13,12 +13,12 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: strider-sim SCENARIO --out DIR [--firmware ELF] [--step SECONDS] [--iterations N]\n"
-               "                   [--solver auto|pgs|mlcp] [--friction MU] [--quiet]\n"
+               "                   [--solver mlcp|pgs] [--friction MU] [--quiet]\n"
                "  SCENARIO  scenario file (robot, duration, obstacle box, at T send TEXT)\n"
                "  --out     output folder: metrics.json, trace.csv, robot.log\n"
                "  --firmware  run the firmware ELF on the virtual Mega instead of the library\n"
                "  --step    physics step [s] (default 0.004)\n"
-               "  --solver  constraint solver: auto (default: mlcp up to 12 joints), pgs, mlcp\n");
+               "  --solver  constraint solver: mlcp (default, exact) or pgs (iterative)\n");
   return 2;
 }
 
@@ -48,10 +48,8 @@ int main(int argc, char** argv) {
       if (!value(&v)) return usage();
       opt.world.solver_iterations = std::atoi(v.c_str());
     } else if (a == "--solver") {
-      if (!value(&v) || (v != "auto" && v != "pgs" && v != "mlcp")) return usage();
-      opt.world.solver = v == "mlcp"  ? strider_sim::Solver::kMlcp
-                         : v == "pgs" ? strider_sim::Solver::kPgs
-                                      : strider_sim::Solver::kAuto;
+      if (!value(&v) || (v != "pgs" && v != "mlcp")) return usage();
+      opt.world.solver = v == "pgs" ? strider_sim::Solver::kPgs : strider_sim::Solver::kMlcp;
     } else if (a == "--residual") {
       if (!value(&v)) return usage();
       opt.world.solver_residual = std::atof(v.c_str());

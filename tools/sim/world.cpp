@@ -62,11 +62,6 @@ double gjk_distance(const btConvexShape* a, const btTransform& ta, const btConve
   return out.m_hasResult ? double(out.m_distance) : kFar;
 }
 
-Solver resolve_solver(Solver s, const strider::RobotModel& model) {
-  if (s != Solver::kAuto) return s;
-  return model.joint_count() <= 12 ? Solver::kMlcp : Solver::kPgs;
-}
-
 }  // namespace
 
 struct JointDrive {
@@ -117,7 +112,7 @@ struct World::Impl {
 };
 
 World::World(const strider::RobotModel& model, const WorldConfig& cfg, const std::vector<ObstacleBox>& obstacles)
-    : model_(model), cfg_(cfg), impl_(new Impl(resolve_solver(cfg.solver, model))) {
+    : model_(model), cfg_(cfg), impl_(new Impl(cfg.solver)) {
   Impl& w = *impl_;
   w.world.setGravity(btVector3(0, 0, btScalar(-9.81)));
   w.world.getSolverInfo().m_numIterations = cfg.solver_iterations;

@@ -26,13 +26,11 @@ struct ObstacleBox {
 // The constraint solver. PGS (Bullet's default, iterative): with a body ten
 // to twenty times heavier than a leg and four feet down, 40 iterations leave
 // a residual that sags loaded knees by 1.5-5 deg and lets stance feet creep
-// backward (mammal8's walk went backward on it; docs/simulator.md). MLCP:
-// the same contact and motor problem solved exactly each step (Dantzig;
-// Bullet falls back to PGS for a step it cannot solve), as fast as PGS for
-// 8-12 joints. Auto: MLCP up to 12 joints; PGS for hexapod18, whose tripod
-// walks the same on both (554 mm) and which MLCP slows from 22-24x to 15x
-// real time.
-enum class Solver { kAuto, kPgs, kMlcp };
+// backward (mammal8's walk went backward on it; docs/simulator.md). MLCP
+// (default): the same contact and motor problem solved exactly each step
+// (Dantzig; Bullet falls back to PGS for a step it cannot solve), and no
+// slower than 40 PGS iterations for any model here.
+enum class Solver { kPgs, kMlcp };
 
 struct WorldConfig {
   // 4 ms and 40 iterations: within ~3 % of a 1 ms / 50 iteration reference on
@@ -40,7 +38,7 @@ struct WorldConfig {
   // 2 ms / 25 the solver's cost per simulated second is twice as high.
   double step_s = 0.004;           // physics step [s]
   int solver_iterations = 40;
-  Solver solver = Solver::kAuto;
+  Solver solver = Solver::kMlcp;
   double solver_residual = 0;      // early exit of the solver's iterations (0: run them all)
   double foot_friction = 0.8;      // rubber foot caps on a laminate (Formica) board
   double body_friction = 0.4;      // aluminium or plastic on the same board
