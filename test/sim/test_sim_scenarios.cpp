@@ -197,8 +197,8 @@ TEST(SimScenarios, SameScenarioSameMetrics) {
 // ---- the seeds' figures ------------------------------------------------------
 
 // Seed 000: 155 mm/s forward (the gait asked for 330 mm/s, see the scenario).
-// Measured: 178 mm/s, drift 3 % (174-179 mm/s from 1 ms / 50 iterations to
-// 4 ms / 40).
+// Measured: 163 mm/s, drift 0.25 % (1236-1239 mm from 1 to 4 ms steps; 178 mm/s
+// with the PGS solver).
 TEST(SimTargets, Sprawl8Reaches155MmPerSecond) {
   const Metrics m = run_file("sprawl8_forward").metrics;
   EXPECT_FALSE(m.fell);
@@ -225,8 +225,9 @@ TEST(SimScenarios, Dog12StandsAndTrotsForward) {
 
 // Seed 000: 360 deg in 6 s. The trot turns in place at up to 82.6 deg/s
 // (servo speed, at most 0.4 rad per stance); the feet slide ~12 %, so the
-// scenario asks 80 deg/s for the seed's 60 at the body. Measured: 5.6 s
-// (70.7 deg/s at the body; 7.44 s when the stance turn was capped at 0.25 rad).
+// scenario asks 80 deg/s for the seed's 60 at the body. Measured: 5.5 s
+// (72 deg/s at the body; PGS 5.6 s; 7.44 s when the stance turn was capped at
+// 0.25 rad).
 TEST(SimTargets, Sprawl8Turns360InSixSeconds) {
   EXPECT_LE(run_file("sprawl8_turn").metrics.turn_360_s, 6.0);
 }
