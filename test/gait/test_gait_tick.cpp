@@ -231,3 +231,33 @@ TYPED_TEST(GaitTickTest, LegFrameTransformIsTheMounts) {
 
 }  // namespace
 }  // namespace gaittest
+
+namespace gaittest {
+namespace {
+
+TYPED_TEST(GaitTickTest, StraightBodyStepIsTheSeriesStep) {
+  using S = TypeParam;
+  using strider::BodyStep;
+  // BodyStep::make skips the turn's series when wz is 0: the same step as
+  // the series at theta = 0, exactly (sign of a zero aside).
+  const double speeds[] = {0.0, 1.0, -37.5, 80.25, 212.0};
+  const double dts[] = {0.02, 0.013, 0.1};
+  for (double vx : speeds)
+    for (double vy : speeds)
+      for (double dt : dts) {
+        const S svx = sc<S>(vx), svy = sc<S>(vy), sdt = sc<S>(dt);
+        const BodyStep<S> fast = BodyStep<S>::make(svx, svy, S(0), sdt);
+        const S th = S(0) * sdt;
+        S a, b, c, s;
+        strider::small_angle_arc(th, a, b);
+        strider::small_angle_cos_sin(th, c, s);
+        EXPECT_TRUE(fast.dx_mm == (a * svx - b * svy) * sdt) << vx << " " << vy << " " << dt;
+        EXPECT_TRUE(fast.dy_mm == (a * svy + b * svx) * sdt) << vx << " " << vy << " " << dt;
+        EXPECT_TRUE(fast.dyaw == th);
+        EXPECT_TRUE(fast.cos_yaw == c);
+        EXPECT_TRUE(fast.sin_yaw == s);
+      }
+}
+
+}  // namespace
+}  // namespace gaittest

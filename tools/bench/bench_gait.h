@@ -10,6 +10,9 @@
 //   gait_engine_tick_<model>_S  its first part, GaitEngine::tick(0.02)
 //   servo_frame_<model>_S       write_servo_frame of every joint (ServoTickMap)
 //   control_tick_<model>_S      both, into a servo output that drops the data
+//   set_command_<model>_S       GaitEngine::set_command() while walking (the
+//                               plan of a new command: half / full speed,
+//                               with and without turning, every other tick)
 // Info lines: "size NAME BYTES" (sizeof of the walker's parts), and after
 // each timed walk "walk <model>_S h h ..." (gait_scenario.h's walk_record,
 // hex), which test/avr compares with the host's replay.
@@ -219,6 +222,20 @@ void bench_model(void* storage, const strider::RobotModel& m, const char* scalar
     const strider::ServoStatus s = rig.frame();
     stop();
     asm volatile("" : : "r"(uint8_t(s)));
+  }
+  // Command changes from the middle of the walk on.
+  rig.restart();
+  for (uint16_t k = 0; k < ticks / 2; ++k) rig.walker.tick(dt);
+  begin_entry(PSTR("set_command"), m.name, scalar_P);
+  const uint8_t changes = uint8_t(32 / stride);
+  for (uint8_t k = 0; k < changes; ++k) {
+    const S v = (k & 1) ? rig.vx : rig.vx * strider::scalar<S>(0.5);
+    const S wz = (k & 2) ? strider::scalar<S>(0.3) : S(0);
+    start();
+    rig.walker.engine().set_command(v, S(0), wz);
+    stop();
+    rig.walker.tick(dt);
+    rig.walker.tick(dt);
   }
   rig.~GaitRig<S>();
 }

@@ -70,6 +70,34 @@ void exact_binary_ops(Sink& out) {
     const Fixed a = Fixed::from_raw(rng.any_raw()), b = Fixed::from_raw(rng.any_raw());
     emit(out, a.raw(), b.raw(), (a * b).raw());
   }
+  // Products with a factor below 1 in magnitude (the AVR's short product),
+  // on either side.
+  for (uint8_t k = 0; k < kExactRandomCases; ++k) {
+    const Fixed a = Fixed::from_raw(rng.any_raw()), b = Fixed::from_raw(rng.within(0x10000));
+    emit(out, a.raw(), b.raw(), (a * b).raw());
+    emit(out, b.raw(), a.raw(), (b * a).raw());
+  }
+  // Sums and differences, saturating (the AVR's overflow-flag path).
+  out.section(STRIDER_BENCH_STR("fixed_add"));
+  for (uint8_t i = 0; i < kEdgeCount; ++i)
+    for (uint8_t j = 0; j < kEdgeCount; ++j) {
+      const Fixed a = Fixed::from_raw(edge_raw(i)), b = Fixed::from_raw(edge_raw(j));
+      emit(out, a.raw(), b.raw(), (a + b).raw());
+    }
+  for (uint8_t k = 0; k < kExactRandomCases; ++k) {
+    const Fixed a = Fixed::from_raw(rng.any_raw()), b = Fixed::from_raw(rng.any_raw());
+    emit(out, a.raw(), b.raw(), (a + b).raw());
+  }
+  out.section(STRIDER_BENCH_STR("fixed_sub"));
+  for (uint8_t i = 0; i < kEdgeCount; ++i)
+    for (uint8_t j = 0; j < kEdgeCount; ++j) {
+      const Fixed a = Fixed::from_raw(edge_raw(i)), b = Fixed::from_raw(edge_raw(j));
+      emit(out, a.raw(), b.raw(), (a - b).raw());
+    }
+  for (uint8_t k = 0; k < kExactRandomCases; ++k) {
+    const Fixed a = Fixed::from_raw(rng.any_raw()), b = Fixed::from_raw(rng.any_raw());
+    emit(out, a.raw(), b.raw(), (a - b).raw());
+  }
   out.section(STRIDER_BENCH_STR("fixed_div"));
   for (uint8_t i = 0; i < kEdgeCount; ++i)
     for (uint8_t j = 0; j < kEdgeCount; ++j) {

@@ -24,6 +24,7 @@
 #define STRIDER_GAIT_GAIT_ENGINE_H
 
 #include "../kinematics/body_pose.h"
+#include "../kinematics/leg_ik_common.h"
 #include "body_shift.h"
 #include "gait_config.h"
 #include "gait_table.h"
@@ -98,7 +99,10 @@ class GaitEngine {
     set_command(S(0), S(0), S(0));
   }
   //! Body pose offsets to move to (rate limited), also while walking.
-  void set_body_offsets(const BodyOffsets<S>& o) { goal_pose_ = o; }
+  void set_body_offsets(const BodyOffsets<S>& o) {
+    goal_pose_ = o;
+    pose_at_goal_ = false;  // step_pose() compares
+  }
 
   // ---- per tick --------------------------------------------------------------
 
@@ -235,8 +239,11 @@ class GaitEngine {
   void step_command(S dt);
 
   static Stride lerp(const Stride& a, const Stride& b, S t) {
-    return Stride{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.yaw + (b.yaw - a.yaw) * t, a.hz + (b.hz - a.hz) * t};
+    return Stride{mix(a.x, b.x, t), mix(a.y, b.y, t), mix(a.yaw, b.yaw, t), mix(a.hz, b.hz, t)};
   }
+  //! a + (b - a) t; a itself when b has a's bits (a ramp's unchanged parts:
+  //! the yaw of a straight walk, a rate kept), the formula's value then.
+  static S mix(S a, S b, S t) { return leg_ik::same_bits(a, b) ? a : a + (b - a) * t; }
 
   bool near_home(uint8_t i) const {
     return abs(foot_[i].x - cfg_.home[i].x) <= cfg_.home_tolerance_mm &&
@@ -296,7 +303,7 @@ class GaitEngine {
   S cmd_vx_ = S(0), cmd_vy_ = S(0), cmd_wz_ = S(0);
   VelocityPlan<S> to_{};
   Stride from_s_{}, to_s_{}, now_s_{}, land_s_{};
-  S ramp_ = S(1), ramp_per_cycle_ = S(1);
+  S ramp_ = S(1), ramp_per_cycle_ = S(1), ramp_cycles_ = S(1);  // ramp_cycles_ = 1 / ramp_per_cycle_
   S vx_ = S(0), vy_ = S(0), wz_ = S(0), hz_ = S(1);
 
   PhaseClock clock_;
@@ -327,6 +334,7 @@ class GaitEngine {
   S window_inv_ = S(0);
 
   BodyOffsets<S> pose_{}, goal_pose_{};
+  bool pose_at_goal_ = true;  // pose_ == goal_pose_ known: step_pose() has nothing to do
   mutable S margin_ = S(0);
   mutable bool margin_fresh_ = false;
   // Per-tick work that only changes with the command: the body step and the

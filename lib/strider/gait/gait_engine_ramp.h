@@ -30,6 +30,7 @@ void GaitEngine<S>::configure(const GaitConfig<S>& config, const GaitTable& gait
   ramp_ = S(1);
   shift_.reset();
   pose_ = goal_pose_ = BodyOffsets<S>::zero();
+  pose_at_goal_ = true;
   odo_x_ = odo_y_ = odo_yaw_ = S(0);
   odo_c_ = S(1);
   odo_s_ = S(0);
@@ -63,10 +64,13 @@ void GaitEngine<S>::step_transition(S dt) {
 template <typename S>
 void GaitEngine<S>::step_pose(S dt) {
   // At its goal (the usual case): nothing to move, no products.
+  if (pose_at_goal_) return;
   if (pose_.translation_mm.x == goal_pose_.translation_mm.x && pose_.translation_mm.y == goal_pose_.translation_mm.y &&
       pose_.translation_mm.z == goal_pose_.translation_mm.z && pose_.roll_rad == goal_pose_.roll_rad &&
-      pose_.pitch_rad == goal_pose_.pitch_rad && pose_.yaw_rad == goal_pose_.yaw_rad)
+      pose_.pitch_rad == goal_pose_.pitch_rad && pose_.yaw_rad == goal_pose_.yaw_rad) {
+    pose_at_goal_ = true;
     return;
+  }
   const S dp = cfg_.pose_speed_mm_s * dt, da = cfg_.pose_rate_rad_s * dt;
   pose_.translation_mm.x += clamp(goal_pose_.translation_mm.x - pose_.translation_mm.x, -dp, dp);
   pose_.translation_mm.y += clamp(goal_pose_.translation_mm.y - pose_.translation_mm.y, -dp, dp);
@@ -127,6 +131,7 @@ void GaitEngine<S>::replan() {
   const S dw = abs(to_.wz_rad_s - wz_);
   const S time = max_of(dv / cfg_.accel_mm_s2, dw / cfg_.yaw_accel_rad_s2);
   const S cycles = max_of(time * max_of(to_s_.hz, from_s_.hz), S(1));
+  ramp_cycles_ = cycles;
   ramp_per_cycle_ = S(1) / cycles;
   ramp_ = S(0);
 }
@@ -216,10 +221,12 @@ void GaitEngine<S>::update_landing() {
   land_s_ = now_s_;
   if (ramp_ < S(1)) {
     const S left = S(1) - ramp_;              // ramp still to go
-    const S finish = left / ramp_per_cycle_;  // its length [cycles]
+    // Products, not divisions, on every tick of a ramp: the ramp's length
+    // and 1 / duty are at hand.
+    const S finish = left * ramp_cycles_;  // its length [cycles]
     // lag = (integral over the stance of (1 - ramp)) / stance
     constexpr S half = scalar<S>(0.5);
-    const S lag = finish >= duty_ ? left - ramp_per_cycle_ * duty_ * half : left * finish * half / duty_;
+    const S lag = finish >= duty_ ? left - ramp_per_cycle_ * duty_ * half : left * finish * half * inv_stance_;
     land_s_ = lerp(from_s_, to_s_, S(1) - lag);
   }
   if (!(land_s_.x == was.x && land_s_.y == was.y && land_s_.yaw == was.yaw)) invalidate_touchdown();

@@ -96,13 +96,22 @@ void GaitEngine<S>::step_walk(S dt) {
     swing_elapsed_[i] = crossed ? uint32_t(Phase16(clock_.now() - offset_[i])) : 0u;
     target_[i] = touchdown(i);
     settled_[i] = true;
-    apex_[i] = swing_apex_mm(cfg_.shape, hypot(target_[i].x - lift_[i].x, target_[i].y - lift_[i].y),
-                             cfg_.step_height_mm);
+    // Only the semicircle's apex depends on the step's length (a square root).
+    apex_[i] = cfg_.shape == SwingShape::kSemicircle
+                   ? swing_apex_mm(cfg_.shape, hypot(target_[i].x - lift_[i].x, target_[i].y - lift_[i].y),
+                                   cfg_.step_height_mm)
+                   : cfg_.step_height_mm;
     changed = true;
   }
   // Feet in the air follow the swing shape toward a touch-down point that
   // moves at most max_step per tick (command and gait changes).
   const S max_step = cfg_.target_speed_mm_s * dt;
+  // Feet of one swing group (a tripod's three) share their swing phase:
+  // the swing point of the last foot is reused when the phase is the same.
+  SwingPoint<S> sp{S(0), S(0)};
+  uint32_t sp_elapsed = 0;
+  S sp_inv = S(0), sp_apex = S(0), sp_lift = S(0);
+  bool sp_known = false, lift_known = false;  // lift_known: sp_lift = sp_apex * sp.w
   for (uint8_t i = 0; i < n; ++i) {
     if (contact_[i]) continue;
     if (!settled_[i]) {
@@ -111,10 +120,24 @@ void GaitEngine<S>::step_walk(S dt) {
       target_[i].y += clamp(want.y - target_[i].y, -max_step, max_step);
       settled_[i] = target_[i].x == want.x && target_[i].y == want.y;
     }
-    const SwingPoint<S> sp = swing_point(cfg_.shape, phase_to<S>(swing_elapsed_[i]) * leg_inv_swing_[i]);
+    if (!sp_known || swing_elapsed_[i] != sp_elapsed || leg_inv_swing_[i] != sp_inv) {
+      sp_elapsed = swing_elapsed_[i];
+      sp_inv = leg_inv_swing_[i];
+      sp = swing_point(cfg_.shape, phase_to<S>(sp_elapsed) * sp_inv);
+      sp_known = true;
+      lift_known = false;
+    }
+    if (!lift_known || apex_[i] != sp_apex) {
+      sp_apex = apex_[i];
+      sp_lift = sp_apex * sp.w;
+      lift_known = true;
+    }
+    // A foot that lifted from the ground line (no stance depth) keeps its
+    // height but for the lift: no product for the zero difference.
+    const S dz = cfg_.home[i].z - lift_[i].z;
     foot_[i] = Vec3<S>(lift_[i].x + (target_[i].x - lift_[i].x) * sp.u,
                        lift_[i].y + (target_[i].y - lift_[i].y) * sp.u,
-                       lift_[i].z + (cfg_.home[i].z - lift_[i].z) * sp.u + apex_[i] * sp.w);
+                       (dz == S(0) ? lift_[i].z : lift_[i].z + dz * sp.u) + sp_lift);
   }
   for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
     if (!contact_[i]) continue;
@@ -135,11 +158,12 @@ void GaitEngine<S>::step_walk(S dt) {
 
 template <typename S>
 void GaitEngine<S>::step_shift(S dt) {
-  const S max_step = cfg_.shift_speed_mm_s * dt;
   if (!table_.shift_body) {
-    shift_.step_toward(S(0), S(0), max_step);
+    // Back to no shift (after a gait change); once there, nothing to move.
+    if (shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) shift_.step_toward(S(0), S(0), cfg_.shift_speed_mm_s * dt);
     return;
   }
+  const S max_step = cfg_.shift_speed_mm_s * dt;
   const uint8_t n = cfg_.leg_count;
   const S ref_x = cfg_.com_x_mm + pose_.translation_mm.x, ref_y = cfg_.com_y_mm + pose_.translation_mm.y;
   bool any_swing = false;

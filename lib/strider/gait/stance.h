@@ -53,6 +53,9 @@ struct BodyStep {
   //! turning at wz [rad/s] for dt [s]: the arc d = dt (A v + B J v).
   static BodyStep make(S vx, S vy, S wz, S dt) {
     const S th = wz * dt;
+    // Not turning: A = 1, B = 0, cos = 1, sin = th (+-0): the same step
+    // without the series' products.
+    if (wz == S(0)) return BodyStep{vx * dt, vy * dt, th, S(1), th};
     S a, b;
     small_angle_arc(th, a, b);
     BodyStep st{(a * vx - b * vy) * dt, (a * vy + b * vx) * dt, th, S(1), S(0)};

@@ -90,32 +90,68 @@ class Walker {
  private:
   void solve() {
     const BodyPose<S> pose = engine_.body_pose();
-    const bool turned = pose.roll_rad != S(0) || pose.pitch_rad != S(0) || pose.yaw_rad != S(0);
-    const Transform<S> body = turned ? body_transform(pose) : Transform<S>::identity();
+    using leg_ik::is_zero;  // integer tests of float bits (a float comparison is a call on the AVR)
+    if (!is_zero(pose.roll_rad) || !is_zero(pose.pitch_rad) || !is_zero(pose.yaw_rad)) {
+      const Transform<S> body = body_transform(pose);
+      solve_legs(&body, pose.translation_mm);
+    } else {
+      solve_legs(nullptr, pose.translation_mm);  // no rotation to build
+    }
+  }
+
+  //! Every leg for the body posed by `body` (nullptr: not turned, only
+  //! moved by `shift` [mm]). Vectors are copied field by field, as avr-gcc
+  //! copies a whole Vec3 with a byte loop.
+  void solve_legs(const Transform<S>* body, const Vec3<S>& shift) {
     // The body at the stance frame's origin (a trot or tripod standing tall):
     // the feet are already in the body frame.
-    const Vec3<S>& shift = pose.translation_mm;
-    const bool still = shift.x == S(0) && shift.y == S(0) && shift.z == S(0);
+    const bool still = leg_ik::is_zero(shift.x) && leg_ik::is_zero(shift.y) && leg_ik::is_zero(shift.z);
+    const bool projects = proj_.projects();
     for (uint8_t i = 0; i < leg_count(); ++i) {
       LegResult<S>& r = out_[i];
       const Vec3<S>& p = engine_.foot(i);
-      r.target_mm = turned ? foot_in_body(body, p) : still ? p : p - pose.translation_mm;
+      if (body != nullptr) {
+        r.target_mm = foot_in_body(*body, p);
+      } else if (still) {
+        copy(p, r.target_mm);
+      } else {
+        r.target_mm.x = p.x - shift.x;
+        r.target_mm.y = p.y - shift.y;
+        r.target_mm.z = p.z - shift.z;
+      }
       r.contact = engine_.contact(i);
       const Vec3<S> leg_target = to_leg_unchecked(i, r.target_mm);
-      S moved = S(0);
-      const Vec3<S> t = proj_.projects() ? proj_.apply(leg_target, moved) : leg_target;
-      r.clamp_mm = moved;
       Vec3<S> reached;
-      r.ik_status = legs_[i].ik(t, r.q, reached);
-      // A target reached as given and not projected is the body-frame target
-      // itself: no transform back (4 products) for the usual 3-DOF foot.
+      if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
+        r.clamp_mm = S(0);
+        r.ik_status = legs_[i].ik(leg_target, r.q, reached, ik_options_);
+        r.status = r.ik_status;
+        // A target reached as given is the body-frame target itself: no
+        // transform back (4 products).
+        if (r.ik_status == IkStatus::kUnreachable) continue;
+        if (same(reached, leg_target)) {
+          copy(r.target_mm, r.foot_mm);
+        } else {
+          r.foot_mm = to_body(i, reached);
+        }
+        continue;
+      }
+      S moved = S(0);
+      const Vec3<S> t = proj_.apply(leg_target, moved);
+      r.clamp_mm = moved;
+      r.ik_status = legs_[i].ik(t, r.q, reached, ik_options_);
       if (r.ik_status != IkStatus::kUnreachable)
         r.foot_mm = moved == S(0) && same(reached, leg_target) ? r.target_mm : to_body(i, reached);
       constexpr S tolerance = scalar<S>(kClampToleranceMm);
-      const bool projected = proj_.projects();  // else t is leg_target and nothing slid
-      const bool slid = projected && (r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance);
+      const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
       r.status = worst(r.ik_status, slid ? IkStatus::kClamped : IkStatus::kOk);
     }
+  }
+
+  static void copy(const Vec3<S>& from, Vec3<S>& to) {
+    to.x = from.x;
+    to.y = from.y;
+    to.z = from.z;
   }
 
   void reset_legs(const RobotModel& model) {
@@ -131,27 +167,30 @@ class Walker {
   // by 0 degrees (the quadrupeds) or +-90 (a hexapod's middle legs) none,
   // products by 0 and 1 being exact (float's cos 90 deg, 4e-8, taken as 0);
   // by +-45 or +-135 degrees (cos = +-sin) two instead of four, within a
-  // rounding step of LegMount's (test/gait).
+  // rounding step of LegMount's (test/gait; float's cos 45 deg stands for
+  // both when its sine differs in the last bit).
   enum MountTurn : uint8_t { kTurned = 0, kStraight = 1, kLeft = 2, kRight = 3, kDiagonal = 4, kAntiDiagonal = 5 };
   static uint8_t turn_of(const LegMount<S>& m) {
     constexpr S tiny = scalar<S>(1e-6);
     if (m.sin_yaw == S(0) && m.cos_yaw == S(1)) return kStraight;
     if (abs(m.cos_yaw) <= tiny && m.sin_yaw == S(1)) return kLeft;
     if (abs(m.cos_yaw) <= tiny && m.sin_yaw == S(-1)) return kRight;
-    if (m.cos_yaw == m.sin_yaw) return kDiagonal;
-    if (m.cos_yaw == -m.sin_yaw) return kAntiDiagonal;
+    // float's cos and sin of 45 or 135 degrees may differ in the last bit.
+    if (abs(m.cos_yaw - m.sin_yaw) <= tiny) return kDiagonal;
+    if (abs(m.cos_yaw + m.sin_yaw) <= tiny) return kAntiDiagonal;
     return kTurned;
   }
   Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
     const LegMount<S>& m = legs_[i].mount();
     if (turn_[i] == kTurned) return m.body_to_leg(p);
-    const Vec3<S> d = p - m.origin_mm;
+    // Scalars, not a Vec3 difference (an out-of-line call on the AVR).
+    const S dx = p.x - m.origin_mm.x, dy = p.y - m.origin_mm.y, dz = p.z - m.origin_mm.z;
     switch (turn_[i]) {
-      case kStraight: return d;
-      case kLeft: return Vec3<S>(d.y, -d.x, d.z);
-      case kRight: return Vec3<S>(-d.y, d.x, d.z);
-      case kDiagonal: return Vec3<S>(m.cos_yaw * (d.x + d.y), m.cos_yaw * (d.y - d.x), d.z);
-      default: return Vec3<S>(m.cos_yaw * (d.x - d.y), m.cos_yaw * (d.x + d.y), d.z);
+      case kStraight: return Vec3<S>(dx, dy, dz);
+      case kLeft: return Vec3<S>(dy, -dx, dz);
+      case kRight: return Vec3<S>(-dy, dx, dz);
+      case kDiagonal: return Vec3<S>(m.cos_yaw * (dx + dy), m.cos_yaw * (dy - dx), dz);
+      default: return Vec3<S>(m.cos_yaw * (dx - dy), m.cos_yaw * (dx + dy), dz);
     }
   }
   Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const {
@@ -159,7 +198,11 @@ class Walker {
     return turn_[i] == kStraight ? p + m.origin_mm : m.leg_to_body(p);
   }
 
-  static bool same(const Vec3<S>& a, const Vec3<S>& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+  // Same bits (an IK that reached its target copies it): for float no
+  // comparison calls; a +0 against -0 only takes the transform back.
+  static bool same(const Vec3<S>& a, const Vec3<S>& b) {
+    return leg_ik::same_bits(a.x, b.x) && leg_ik::same_bits(a.y, b.y) && leg_ik::same_bits(a.z, b.z);
+  }
 
   bool build_legs(const RobotModel& model) {
     model_ = nullptr;
@@ -176,6 +219,7 @@ class Walker {
   AnyLeg<S> legs_[kMaxLegs];
   uint8_t turn_[kMaxLegs] = {};  // MountTurn of each leg's mount
   ReachProjection<S> proj_{};
+  IkOptions<S> ik_options_{};  // the defaults, built once rather than per leg and tick
   GaitEngine<S> engine_;
   LegResult<S> out_[kMaxLegs];
 };

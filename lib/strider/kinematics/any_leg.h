@@ -135,9 +135,24 @@ class AnyLeg {
     for (uint8_t j = 0; j < N; ++j) r[j] = q[j];
     return r;
   }
+  // A leg with every joint slot (3-DOF) solves into q and reached directly:
+  // its ik() has the same contract (writes both unless kUnreachable), so
+  // the copies are not needed.
+  template <bool kFull>
+  struct Full {};
   template <typename Leg>
   static IkStatus solve(const Leg& leg, const Vec3<S>& target, Joints& q, Vec3<S>& reached,
                         const IkOptions<S>& opt) {
+    return solve(leg, target, q, reached, opt, Full<Leg::kDof == kMaxDof>());
+  }
+  template <typename Leg>
+  static IkStatus solve(const Leg& leg, const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+                        const IkOptions<S>& opt, Full<true>) {
+    return leg.ik(target, q, reached, opt);
+  }
+  template <typename Leg>
+  static IkStatus solve(const Leg& leg, const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+                        const IkOptions<S>& opt, Full<false>) {
     typename Leg::Joints sol;
     Vec3<S> at;
     const IkStatus s = leg.ik(target, sol, at, opt);

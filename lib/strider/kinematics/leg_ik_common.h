@@ -72,6 +72,9 @@ STRIDER_ALWAYS_INLINE bool lt(float a, float b) { return detail::float_less(a, b
 STRIDER_ALWAYS_INLINE bool lt(Fixed a, Fixed b) { return a < b; }
 STRIDER_ALWAYS_INLINE bool is_zero(float v) { return detail::float_is_zero(v); }
 STRIDER_ALWAYS_INLINE bool is_zero(Fixed v) { return v.raw() == 0; }
+//! Same bits, so the same value (for float not the only way: +0 and -0).
+STRIDER_ALWAYS_INLINE bool same_bits(float a, float b) { return detail::float_bits(a) == detail::float_bits(b); }
+STRIDER_ALWAYS_INLINE bool same_bits(Fixed a, Fixed b) { return a == b; }
 
 //! a s for a sine or cosine s (|s| <= 1), as the legs' fk multiplies
 //! lengths by them: for Fixed the same result as a * s, bit for bit, from

@@ -7,7 +7,8 @@
 //!   loop (~6 cycles per bit), so shifts here are whole bytes plus at most a
 //!   few bits, and variable shifts go through shr_var();
 //! - it often turns (uint32_t)a * b of 16-bit values into a 32x32 library
-//!   call (~100 cycles), so mul_u16() is four MUL instructions (~20 cycles).
+//!   call (~100 cycles), so mul_u16() (mul16.h) is four MUL instructions
+//!   (~20 cycles).
 //! Note that `int` is 16 bits on the AVR: every intermediate above 0xFFFF is
 //! a uint32_t.
 #ifndef STRIDER_MATH_FIXED_OPS_H
@@ -16,38 +17,10 @@
 #include <stdint.h>
 
 #include "fixed_tables.h"
+#include "mul16.h"
 
 namespace strider {
 namespace detail {
-
-//! a * b, exact.
-STRIDER_ALWAYS_INLINE uint32_t mul_u16(uint16_t a, uint16_t b) {
-#if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
-  uint32_t r;
-  // Schoolbook 16x16 from four 8x8 MULs; MUL writes r1:r0, and r1 is gcc's
-  // zero register, cleared again before use (CLR leaves the carry alone).
-  __asm__(
-      "mul  %A1, %A2\n\t"
-      "movw %A0, r0\n\t"
-      "mul  %B1, %B2\n\t"
-      "movw %C0, r0\n\t"
-      "mul  %B1, %A2\n\t"
-      "add  %B0, r0\n\t"
-      "adc  %C0, r1\n\t"
-      "clr  __zero_reg__\n\t"
-      "adc  %D0, __zero_reg__\n\t"
-      "mul  %A1, %B2\n\t"
-      "add  %B0, r0\n\t"
-      "adc  %C0, r1\n\t"
-      "clr  __zero_reg__\n\t"
-      "adc  %D0, __zero_reg__"
-      : "=&r"(r)
-      : "r"(a), "r"(b));
-  return r;
-#else
-  return uint32_t(a) * uint32_t(b);
-#endif
-}
 
 //! The high 16 bits of x.
 STRIDER_ALWAYS_INLINE uint16_t hi16(uint32_t x) { return uint16_t(x >> 16); }
