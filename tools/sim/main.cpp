@@ -12,11 +12,13 @@ namespace {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: strider-sim SCENARIO --out DIR [--firmware ELF] [--step SECONDS] [--quiet]\n"
+               "usage: strider-sim SCENARIO --out DIR [--firmware ELF] [--step SECONDS] [--iterations N]\n"
+               "                   [--solver mlcp|pgs] [--friction MU] [--quiet]\n"
                "  SCENARIO  scenario file (robot, duration, obstacle box, at T send TEXT)\n"
                "  --out     output folder: metrics.json, trace.csv, robot.log\n"
                "  --firmware  run the firmware ELF on the virtual Mega instead of the library\n"
-               "  --step    physics step [s] (default 0.004)\n");
+               "  --step    physics step [s] (default 0.004)\n"
+               "  --solver  constraint solver: mlcp (default, exact) or pgs (iterative)\n");
   return 2;
 }
 
@@ -45,6 +47,9 @@ int main(int argc, char** argv) {
     } else if (a == "--iterations") {
       if (!value(&v)) return usage();
       opt.world.solver_iterations = std::atoi(v.c_str());
+    } else if (a == "--solver") {
+      if (!value(&v) || (v != "pgs" && v != "mlcp")) return usage();
+      opt.world.solver = v == "pgs" ? strider_sim::Solver::kPgs : strider_sim::Solver::kMlcp;
     } else if (a == "--residual") {
       if (!value(&v)) return usage();
       opt.world.solver_residual = std::atof(v.c_str());

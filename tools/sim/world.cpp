@@ -7,6 +7,8 @@
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyMLCPConstraintSolver.h>
+#include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
@@ -74,11 +76,18 @@ struct JointDrive {
 };
 
 struct World::Impl {
+  explicit Impl(Solver kind)
+      : solver(kind == Solver::kMlcp ? new btMultiBodyMLCPConstraintSolver(&dantzig) : new btMultiBodyConstraintSolver),
+        world(&dispatcher, &broadphase, solver.get(), &config) {}
+
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher{&config};
   btDbvtBroadphase broadphase;
-  btMultiBodyConstraintSolver solver;
-  btMultiBodyDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
+  // Constraint solver: Bullet's projected Gauss-Seidel, or the exact mixed
+  // LCP (Dantzig; Bullet falls back to PGS for a step it cannot solve).
+  btDantzigSolver dantzig;
+  std::unique_ptr<btMultiBodyConstraintSolver> solver;
+  btMultiBodyDynamicsWorld world;
 
   btStaticPlaneShape ground_shape{btVector3(0, 0, 1), 0};
   std::unique_ptr<btCollisionObject> ground;
@@ -103,7 +112,7 @@ struct World::Impl {
 };
 
 World::World(const strider::RobotModel& model, const WorldConfig& cfg, const std::vector<ObstacleBox>& obstacles)
-    : model_(model), cfg_(cfg), impl_(new Impl) {
+    : model_(model), cfg_(cfg), impl_(new Impl(cfg.solver)) {
   Impl& w = *impl_;
   w.world.setGravity(btVector3(0, 0, btScalar(-9.81)));
   w.world.getSolverInfo().m_numIterations = cfg.solver_iterations;

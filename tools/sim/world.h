@@ -23,12 +23,22 @@ struct ObstacleBox {
   double sx_mm = 0, sy_mm = 0, sz_mm = 0;  // full sizes [mm]
 };
 
+// The constraint solver. PGS (Bullet's default, iterative): with a body ten
+// to twenty times heavier than a leg and four feet down, 40 iterations leave
+// a residual that sags loaded knees by 1.5-5 deg and lets stance feet creep
+// backward (mammal8's walk went backward on it; docs/simulator.md). MLCP
+// (default): the same contact and motor problem solved exactly each step
+// (Dantzig; Bullet falls back to PGS for a step it cannot solve), and no
+// slower than 40 PGS iterations for any model here.
+enum class Solver { kPgs, kMlcp };
+
 struct WorldConfig {
   // 4 ms and 40 iterations: within ~3 % of a 1 ms / 50 iteration reference on
   // every scenario (docs/simulator.md), and hexapod18 runs 24x real time; at
   // 2 ms / 25 the solver's cost per simulated second is twice as high.
   double step_s = 0.004;           // physics step [s]
   int solver_iterations = 40;
+  Solver solver = Solver::kMlcp;
   double solver_residual = 0;      // early exit of the solver's iterations (0: run them all)
   double foot_friction = 0.8;      // rubber foot caps on a laminate (Formica) board
   double body_friction = 0.4;      // aluminium or plastic on the same board

@@ -62,8 +62,12 @@ constexpr double kServoSpeedShare = 0.75;
 constexpr double kStrideShare = 0.9;
 //! Most the body may turn during one stance [rad]: feet on the ground move
 //! on arcs about the turning centre, and the straight-line stride check
-//! covers an arc only while it is short (sag r (1 - cos 0.125) < 0.8 % of r).
-constexpr double kMaxStanceTurnRad = 0.25;
+//! covers an arc only while it is short: its sag r (1 - cos 0.2) is 2 % of
+//! r (3 mm for sprawl8's 150 mm), inside the 10 % of the stride that
+//! kStrideShare keeps free. (0.25 rad capped sprawl8's trot at 58.9 deg/s,
+//! short of seed 000's 360 deg in 6 s; with 0.4 the servo speed binds at
+//! 82.6 deg/s.)
+constexpr double kMaxStanceTurnRad = 0.4;
 
 template <typename S>
 struct VelocityPlan {
