@@ -7,8 +7,8 @@
 //!
 //! The caller owns the hardware: it passes bytes in, pings the sonar when
 //! sonar().ping_due() says so and hands the echo samples back, calls tick()
-//! every kTickPeriodUs and reports how long the tick took. Time comes in as
-//! now_us (wrapping micros()).
+//! every kTickPeriodUs and reports how long the tick took. Time is a parameter:
+//! now_us, a wrapping microsecond count that the caller reads from its clock.
 //!
 //! Template parameters: S the scalar (float or Fixed); Output a ServoOutput
 //! (hal_interfaces.h) with `void flush()` ending a frame; Store a ByteStore;
