@@ -182,7 +182,9 @@ class Walker {
     if (abs(m.cos_yaw + m.sin_yaw) <= tiny) return kAntiDiagonal;
     return kTurned;
   }
-  Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
+  // Inline: the tick's one call site would pay ~100 cycles per leg for the
+  // call, its register saves and the returned vector.
+  STRIDER_ALWAYS_INLINE Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
     const LegMount<S>& m = legs_[i].mount();
     if (turn_[i] == kTurned) return m.body_to_leg(p);
     // Scalars, not a Vec3 difference (an out-of-line call on the AVR), and
@@ -203,7 +205,7 @@ class Walker {
 
   // Same bits (an IK that reached its target copies it): for float no
   // comparison calls; a +0 against -0 only takes the transform back.
-  static bool same(const Vec3<S>& a, const Vec3<S>& b) {
+  STRIDER_ALWAYS_INLINE static bool same(const Vec3<S>& a, const Vec3<S>& b) {
     return leg_ik::same_bits(a.x, b.x) && leg_ik::same_bits(a.y, b.y) && leg_ik::same_bits(a.z, b.z);
   }
 
