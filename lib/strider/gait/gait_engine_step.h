@@ -71,7 +71,8 @@ void GaitEngine<S>::step_walk(S dt) {
   // Feet on the ground stay on the ground: they move by the inverse step.
   for (uint8_t i = 0; i < n; ++i) {
     if (!contact_[i] || landed[i]) continue;
-    foot_[i] = step.move_ground_point(foot_[i]);
+    // Field by field (leg_ik::copy_point): avr-gcc copies a whole Vec3 with a byte loop.
+    leg_ik::copy_point(step.move_ground_point(foot_[i]), foot_[i]);
     stance_elapsed_[i] = min_of(stance_elapsed_[i] + int32_t(delta), int32_t(kPhaseOne));
   }
   // Lift-offs when the clock passes a foot's offset.
@@ -136,9 +137,9 @@ void GaitEngine<S>::step_walk(S dt) {
     // A foot that lifted from the ground line (no stance depth) keeps its
     // height but for the lift: no product for the zero difference.
     const S dz = sub_inline(cfg_.home[i].z, lift_[i].z);
-    foot_[i] = Vec3<S>(add_inline(lift_[i].x, sub_inline(target_[i].x, lift_[i].x) * sp.u),
-                       add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u),
-                       add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift));
+    foot_[i].x = add_inline(lift_[i].x, sub_inline(target_[i].x, lift_[i].x) * sp.u);
+    foot_[i].y = add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u);
+    foot_[i].z = add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift);
   }
   for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
     if (!contact_[i]) continue;
