@@ -48,13 +48,17 @@ using detail::magnitude_bits;
 
 //! ticks = (d [Q16.16] * k) >> shift + base [Q16.16], rounded (shift in
 //! [3, 17], d in [0, 4) rad: configure()). d has 18 significant bits, so the
-//! product is 24 x 16 bits: one 16 x 16 and one 8 x 16-bit product, summed
-//! 8 bits down (whole bytes); the usual shift of 8 (a slope of 128 to 255
-//! ticks per rad, every 50 Hz servo) then needs no shift at all.
+//! product is 18 x 16 bits: one 16 x 16-bit product and up to two adds for
+//! d's integer part, summed 8 bits down (whole bytes); the usual shift of 8
+//! (a slope of 128 to 255 ticks per rad, every 50 Hz servo) then needs no
+//! shift at all.
 inline uint16_t ticks_of(Fixed d, uint16_t k, uint8_t shift, uint32_t base_q16) {
   const uint32_t u = uint32_t(d.raw());                         // < 2^18
   const uint32_t lo = detail::mul_u16(uint16_t(u), k);          // bits 0-31 of d k
-  const uint32_t hi = detail::mul_u16(uint8_t(u >> 16), k);     // bits 16-41 (< 2^18)
+  // Bits 16-17 of d times k (< 2^18): d's integer part is 0-3, two adds.
+  const uint8_t whole = uint8_t(u >> 16);
+  uint32_t hi = (whole & 1u) ? uint32_t(k) : 0u;
+  if (whole & 2u) hi += uint32_t(k) << 1;
   uint32_t p;
   if (shift >= 8) {
     p = (lo >> 8) + (hi << 8);  // d k 2^-8, exact (< 2^26)
