@@ -3,6 +3,13 @@
 //
 //   avr_cycles --elf strider_bench.elf [--json out/bench/avr.json]
 //              [--size-tool avr-size] [--quick] [--max-cycles N]
+//              [--profile ENTRY --nm-tool avr-nm]
+//
+// --profile prints where ENTRY's cycles go: the cycles of every instruction
+// run inside its timed calls, summed per function (symbols from `avr-nm -S
+// -C`) and divided by its number of calls, largest first; with --json FILE
+// it also writes FILE's neighbour ENTRY.profile.txt with cycles per
+// instruction address, for reading against `avr-objdump -d`.
 //
 // Cycles are counted between the firmware's start and end markers minus the
 // marker overhead (the "baseline" entry: an empty window). They include
@@ -169,9 +176,74 @@ bool write_json(const std::string& path, const RunResult& r, double overhead, co
   return std::fclose(f) == 0;
 }
 
+struct Symbol {
+  uint32_t addr = 0, size = 0;
+  std::string name;
+};
+
+// Function symbols (text, weak) with their sizes from `avr-nm -S -C`.
+std::vector<Symbol> read_symbols(const std::string& nm_tool, const std::string& elf) {
+  std::vector<Symbol> syms;
+  const std::string cmd = "'" + nm_tool + "' -S -C '" + elf + "'";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return syms;
+  char buf[1024];
+  while (std::fgets(buf, sizeof buf, p)) {
+    unsigned long addr = 0, size = 0;
+    char type = 0;
+    int used = 0;
+    if (std::sscanf(buf, "%lx %lx %c %n", &addr, &size, &type, &used) != 3) continue;
+    if (type != 't' && type != 'T' && type != 'w' && type != 'W') continue;
+    Symbol s;
+    s.addr = uint32_t(addr);
+    s.size = uint32_t(size);
+    s.name = buf + used;
+    while (!s.name.empty() && (s.name.back() == '\n' || s.name.back() == '\r')) s.name.pop_back();
+    syms.push_back(s);
+  }
+  pclose(p);
+  return syms;
+}
+
+// The per-function table of --profile.
+void print_profile(const RunResult& r, const std::string& entry, const std::string& nm_tool,
+                   const std::string& elf, const std::string& dump_path) {
+  const BenchEntry* e = r.find_entry(entry);
+  if (!e || e->calls == 0) {
+    std::fprintf(stderr, "avr_cycles: no timed calls of %s to profile\n", entry.c_str());
+    return;
+  }
+  const std::vector<Symbol> syms = read_symbols(nm_tool, elf);
+  std::vector<std::pair<std::string, uint64_t>> per_fn;
+  uint64_t total = 0;
+  for (const auto& pc : r.profile) {
+    std::string name = "(no symbol)";
+    for (const Symbol& s : syms)
+      if (pc.first >= s.addr && pc.first < s.addr + s.size) name = s.name;
+    bool found = false;
+    for (auto& f : per_fn)
+      if (f.first == name) { f.second += pc.second; found = true; }
+    if (!found) per_fn.emplace_back(name, pc.second);
+    total += pc.second;
+  }
+  for (size_t i = 1; i < per_fn.size(); ++i)
+    for (size_t j = i; j > 0 && per_fn[j].second > per_fn[j - 1].second; --j) std::swap(per_fn[j], per_fn[j - 1]);
+  const double calls = double(e->calls);
+  std::printf("profile of %s: %.1f cycles per call (markers included), %" PRIu64 " calls\n", entry.c_str(),
+              double(total) / calls, e->calls);
+  for (const auto& f : per_fn) std::printf("%10.1f  %.150s\n", double(f.second) / calls, f.first.c_str());
+  if (dump_path.empty()) return;
+  FILE* f = std::fopen(dump_path.c_str(), "w");
+  if (!f) return;
+  for (const auto& pc : r.profile) std::fprintf(f, "%05" PRIx32 " %.2f\n", pc.first, double(pc.second) / calls);
+  std::fclose(f);
+  std::printf("wrote %s\n", dump_path.c_str());
+}
+
 int usage() {
   std::fprintf(stderr,
-               "usage: avr_cycles --elf FILE [--json FILE] [--size-tool avr-size] [--quick] [--max-cycles N]\n");
+               "usage: avr_cycles --elf FILE [--json FILE] [--size-tool avr-size] [--quick] [--max-cycles N]\n"
+               "                  [--profile ENTRY --nm-tool avr-nm]\n");
   return 2;
 }
 
@@ -179,7 +251,7 @@ int usage() {
 
 int main(int argc, char** argv) {
   strider_sim::RunOptions opt;
-  std::string json_path, size_tool;
+  std::string json_path, size_tool, nm_tool;
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -189,9 +261,11 @@ int main(int argc, char** argv) {
     else if (a == "--size-tool" && has_value) size_tool = argv[++i];
     else if (a == "--max-cycles" && has_value) opt.max_cycles = std::strtoull(argv[++i], nullptr, 10);
     else if (a == "--quick") quick = true;
+    else if (a == "--profile" && has_value) opt.profile_entry = argv[++i];
+    else if (a == "--nm-tool" && has_value) nm_tool = argv[++i];
     else return usage();
   }
-  if (opt.elf_path.empty()) return usage();
+  if (opt.elf_path.empty() || (!opt.profile_entry.empty() && nm_tool.empty())) return usage();
   opt.mode = STRIDER_BENCH_MODE_NO_EXACT | (quick ? STRIDER_BENCH_MODE_QUICK : 0);
 
   const RunResult r = strider_sim::run_firmware(opt);
@@ -216,6 +290,15 @@ int main(int argc, char** argv) {
       return 1;
     }
     std::printf("wrote %s\n", json_path.c_str());
+  }
+  if (!opt.profile_entry.empty()) {
+    std::string dump;
+    if (!json_path.empty()) {
+      const size_t slash = json_path.find_last_of('/');
+      dump = (slash == std::string::npos ? std::string() : json_path.substr(0, slash + 1)) + opt.profile_entry +
+             ".profile.txt";
+    }
+    print_profile(r, opt.profile_entry, nm_tool, opt.elf_path, dump);
   }
   return complete ? 0 : 1;
 }

@@ -34,6 +34,8 @@ struct Monitor {
   RunResult* result = nullptr;
   std::string line;
   bool in_call = false;
+  const std::string* profile_entry = nullptr;  // entry to profile, or null
+  bool profiling = false;                      // inside a timed call of it
   avr_cycle_count_t call_start = 0;
   bool done = false;
   std::string protocol_error;
@@ -42,6 +44,7 @@ struct Monitor {
     if (result->entries.empty()) protocol_error = "timed call before any entry name";
     in_call = true;
     call_start = now;
+    profiling = profile_entry && !result->entries.empty() && result->entries.back().name == *profile_entry;
   }
   void on_end(avr_cycle_count_t now) {
     if (!in_call || result->entries.empty()) {
@@ -49,6 +52,7 @@ struct Monitor {
       return;
     }
     in_call = false;
+    profiling = false;
     BenchEntry& e = result->entries.back();
     const uint64_t d = now - call_start;
     ++e.calls;
@@ -168,6 +172,7 @@ RunResult run_firmware(const RunOptions& options) {
 
   Monitor monitor;
   monitor.result = &result;
+  if (!options.profile_entry.empty()) monitor.profile_entry = &options.profile_entry;
   avr_register_io_write(avr.get(), STRIDER_BENCH_ADDR_START, hook_start, &monitor);
   avr_register_io_write(avr.get(), STRIDER_BENCH_ADDR_END, hook_end, &monitor);
   avr_register_io_write(avr.get(), STRIDER_BENCH_ADDR_TEXT, hook_text, &monitor);
@@ -177,12 +182,21 @@ RunResult run_firmware(const RunOptions& options) {
   uint16_t lowest_sp = ramend;
   const auto t0 = std::chrono::steady_clock::now();
   int state = cpu_Running;
+  // avr_run() executes one instruction: the cycles it advances belong to
+  // the PC it started at. Indexed by word address (256 KB of flash).
+  std::vector<uint64_t> pc_cycles(monitor.profile_entry ? 0x20000 : 0, 0);
   while (state != cpu_Done && state != cpu_Crashed && avr->cycle < options.max_cycles) {
+    const bool sample = monitor.profiling;
+    const uint32_t pc = avr->pc;
+    const avr_cycle_count_t c0 = avr->cycle;
     state = avr_run(avr.get());
+    if (sample) pc_cycles[(pc >> 1) & 0x1FFFF] += avr->cycle - c0;
     const uint16_t sp = uint16_t(avr->data[R_SPL] | (avr->data[R_SPH] << 8));
     if (sp < lowest_sp) lowest_sp = sp;
   }
   const auto t1 = std::chrono::steady_clock::now();
+  for (uint32_t w = 0; w < pc_cycles.size(); ++w)
+    if (pc_cycles[w]) result.profile.emplace_back(w * 2, pc_cycles[w]);
   if (!monitor.line.empty()) monitor.parse_line();
 
   result.cycles = avr->cycle;

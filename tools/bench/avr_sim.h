@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace strider_sim {
@@ -30,6 +31,7 @@ struct RunOptions {
   uint8_t mode = 0;                          // STRIDER_BENCH_MODE_* bits
   uint32_t f_cpu = 16000000;                 // [Hz]
   uint64_t max_cycles = 4000000000ull;       // about 50 s of simulation
+  std::string profile_entry;                 // when set: cycles per PC inside its timed calls
 };
 
 struct RunResult {
@@ -40,6 +42,9 @@ struct RunResult {
   uint32_t stack_peak_bytes = 0;  // RAMEND - lowest stack pointer seen
   std::vector<std::string> info;  // "I" lines
   std::vector<BenchEntry> entries;
+  //! With RunOptions::profile_entry: (byte address, cycles) of every
+  //! instruction executed inside that entry's timed calls, by address.
+  std::vector<std::pair<uint32_t, uint64_t>> profile;
   std::vector<ExactSection> sections;
 
   const BenchEntry* find_entry(const std::string& name) const;
