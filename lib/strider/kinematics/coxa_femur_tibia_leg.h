@@ -56,7 +56,7 @@ STRIDER_ALWAYS_INLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& tar
   // rho >= 1/16 unit keeps ~16 significant bits; rho < 8 units fits wide units.
   if (rho2 < 0x10000UL || rho2 >= 0x40000000UL) return false;
   const int32_t h = wide::sqrt_sq(rho2) - wide::from_unit(leg.coxa_unit);  // eq 11, row 1
-  if (!solve_wide(leg.link, h, v, leg.branch, sol[1], sol[2])) return false;
+  if (!solve_wide_inline(leg.link, h, v, leg.branch, sol[1], sol[2])) return false;
   sol[0] = Fixed::from_raw(detail::atan2_lean_raw(target.y.raw(), target.x.raw()));  // eq 12
   return true;
 }

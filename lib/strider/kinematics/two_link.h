@@ -225,7 +225,9 @@ STRIDER_ALWAYS_INLINE uint32_t sqrt_product(uint32_t p, uint32_t q) {
 //! annulus, with the identities of TwoLink::solve in 16/32-bit integers.
 //! Returns false, leaving ta and tb alone, when the point is not strictly
 //! inside or the links are 8 units or longer: then use solve().
-inline bool solve_wide(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch, Fixed& ta, Fixed& tb) {
+//! Always inlined: solve_wide() below is the shared out-of-line copy.
+STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch,
+                                             Fixed& ta, Fixed& tb) {
   if (link.outer2.raw() >= (int32_t(64) << 16)) return false;  // a1 + a2 >= 8 units
   const uint32_t d2 = wide::sq(h) + wide::sq(v);
   const uint32_t outer2 = uint32_t(link.outer2.raw()) << 8, inner2 = uint32_t(link.inner2.raw()) << 8;
@@ -249,6 +251,11 @@ inline bool solve_wide(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBra
   }
   ta = Fixed::from_raw(a);
   return true;
+}
+
+//! solve_wide_inline() as one out-of-line copy for the leg types that share it.
+inline bool solve_wide(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch, Fixed& ta, Fixed& tb) {
+  return solve_wide_inline(link, h, v, branch, ta, tb);
 }
 
 }  // namespace leg_ik
