@@ -46,13 +46,14 @@ bool cft_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 3>&) {
 }
 template <typename Leg>
 STRIDER_ALWAYS_INLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 3>& sol) {
-  int32_t x, y, v;
+  uint32_t x = 0, y = 0;  // |x|, |y|: only their squares are needed
+  int32_t v;
   Fixed dz;
-  if (!wide::from_mm(target.x, leg.unit_shift, x) || !wide::from_mm(target.y, leg.unit_shift, y) ||
+  if (!wide::from_mm_abs(target.x, leg.unit_shift, x) || !wide::from_mm_abs(target.y, leg.unit_shift, y) ||
       !wide::sub_raw(target.z, leg.d1_mm, dz) || !wide::from_mm(dz, leg.unit_shift, v) ||
       leg.coxa_unit.raw() >= (int32_t(8) << 16))
     return false;
-  const uint32_t rho2 = wide::sq(x) + wide::sq(y);  // [Q6.24]
+  const uint32_t rho2 = wide::sq_abs(x) + wide::sq_abs(y);  // [Q6.24]
   // rho >= 1/16 unit keeps ~16 significant bits; rho < 8 units fits wide units.
   if (rho2 < 0x10000UL || rho2 >= 0x40000000UL) return false;
   const int32_t h = wide::sqrt_sq(rho2) - wide::from_unit(leg.coxa_unit);  // eq 11, row 1

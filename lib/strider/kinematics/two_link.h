@@ -135,6 +135,23 @@ STRIDER_ALWAYS_INLINE bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
   return from_mm_general(v_mm, shift, out);
 }
 
+//! |v| of from_mm(), for a coordinate that is only squared: no sign to put
+//! back and take off again.
+STRIDER_ALWAYS_INLINE bool from_mm_abs(Fixed v_mm, int8_t shift, uint32_t& out) {
+  const uint8_t down = uint8_t(shift - 4);
+  uint32_t m = Fixed::abs_raw(v_mm.raw());
+  if (down - 1U < 7U && m < 0x1000000UL) {  // as in from_mm()
+    m <<= 8;
+    for (uint8_t r = down; r != 0; --r) m >>= 1;
+    out = m;
+    return true;
+  }
+  int32_t w;
+  if (!from_mm_general(v_mm, shift, w)) return false;
+  out = detail::abs_u32(w);
+  return true;
+}
+
 //! A Fixed length [unit] below 8 units in wide units (exact): raw 2^12,
 //! modulo 2^32, from one 16x16 product and a 16-bit shift (avr-gcc loops
 //! 12 times for a 32-bit shift by 12).
@@ -170,12 +187,15 @@ STRIDER_ALWAYS_INLINE bool sub_raw(Fixed a, Fixed b, Fixed& out) {
   return true;
 }
 
-//! w^2 in Q6.24 for a wide w, within 2 LSB below (the low half's square is dropped).
-STRIDER_ALWAYS_INLINE uint32_t sq(int32_t w) {
-  const uint32_t u = detail::abs_u32(w);
+//! u^2 in Q6.24 for a wide magnitude u < 2^31, within 2 LSB below (the low
+//! half's square is dropped).
+STRIDER_ALWAYS_INLINE uint32_t sq_abs(uint32_t u) {
   const uint16_t uh = detail::hi16(u);  // < 2^15
   return detail::mul_u16(uh, uh) + detail::hi16(detail::mul_u16(uint16_t(uh << 1), uint16_t(u)));
 }
+
+//! w^2 in Q6.24 for a wide w: sq_abs(|w|).
+STRIDER_ALWAYS_INLINE uint32_t sq(int32_t w) { return sq_abs(detail::abs_u32(w)); }
 
 //! Shift that brings u (!= 0) into [2^31, 2^32): whole bytes, then bits.
 STRIDER_ALWAYS_INLINE uint8_t normalize_top(uint32_t& u) {
