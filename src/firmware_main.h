@@ -5,9 +5,10 @@
 //
 // Included once per build, by the file of src/models/ that PlatformIO
 // (build_src_filter) or CMake (per target) picks, which first defines
-// STRIDER_FIRMWARE_MODEL (the model) and STRIDER_LEG_KINDS (its leg kind,
-// robots/robot_model.h): the model is a compile-time constant here and only
-// its leg type is compiled in.
+// STRIDER_FIRMWARE_MODEL (the model), STRIDER_LEG_KINDS (its leg kind) and,
+// for a quadruped, STRIDER_WALKER_LEGS 4 (robots/robot_model.h): the model is
+// a compile-time constant here, only its leg type is compiled in and the
+// walking state has as many legs as the model.
 #ifndef STRIDER_FIRMWARE_MAIN_H
 #define STRIDER_FIRMWARE_MAIN_H
 
@@ -33,6 +34,7 @@ namespace {
 
 constexpr const strider::RobotModel& kModel = STRIDER_FIRMWARE_MODEL;
 static_assert(strider::kCompiledLegKinds == (1u << uint8_t(kModel.kind)), "STRIDER_LEG_KINDS: the model's leg kind alone");
+static_assert(strider::kWalkerLegs == kModel.leg_count, "STRIDER_WALKER_LEGS: the model's leg count");
 
 // Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.
 using Scalar = strider::Fixed;

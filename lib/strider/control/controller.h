@@ -49,6 +49,9 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     speed_pct_ = settings_.speed_pct;
     sink_.apply_settings(settings_);
   }
+  //! The same from the settings the store gave (settings_store.h).
+  Controller(Sink& sink, Store& store, const LoadedSettings& loaded)
+      : Controller(sink, store, loaded.settings, loaded.status) {}
 
   //! One received byte at now_ms. Returns true when *w holds a reply line
   //! (without line ending) to send.
@@ -98,6 +101,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   const Twist& command() const { return cmd_; }      //!< operator's velocity
   const Twist& output() const { return out_; }       //!< after avoidance
   const Settings& settings() const { return settings_; }
+  SettingsStatus load_status() const { return load_status_; }
   uint8_t speed_pct() const { return speed_pct_; }
 
  private:

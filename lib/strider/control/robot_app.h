@@ -83,9 +83,8 @@ class RobotApp {
   RobotApp(const RobotModel& model, Output& out, Store& store)
       : model_(model),
         out_(out),
-        load_status_(load_settings(store, &loaded_)),
         sink_(*this),
-        controller_(sink_, store, loaded_, load_status_) {}
+        controller_(sink_, store, LoadedSettings(store)) {}
 
   //! Power-up: walker (sitting), servo map, boot notices; the soft start
   //! begins with the first tick. False (and an `err` notice) when the model
@@ -165,7 +164,7 @@ class RobotApp {
   const Controller<Sink, Store, false>& controller() const { return controller_; }
   const WalkerMotion<S>& motion() const { return motion_; }
   const ServoStage<S, kJoints>& servos() const { return stage_; }
-  SettingsStatus load_status() const { return load_status_; }
+  SettingsStatus load_status() const { return controller_.load_status(); }
   uint16_t overruns() const { return overruns_; }
   uint32_t tick_max_us() const { return tick_max_us_; }
 
@@ -211,8 +210,8 @@ class RobotApp {
     w.field(FlashText{app_text::kJoints}, stage_.joint_count()).field(FlashText{app_text::kBoards}, pca_board_count(model_));
     link.send_line(kAllPorts, buf);
     ReplyWriter e(buf, sizeof buf);
-    e.text(FlashText{app_text::kInfoEeprom}).text(to_flash(load_status_));
-    if (load_status_ != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
+    e.text(FlashText{app_text::kInfoEeprom}).text(to_flash(load_status()));
+    if (load_status() != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
     link.send_line(kAllPorts, buf);
   }
 
@@ -263,8 +262,6 @@ class RobotApp {
 
   const RobotModel& model_;
   Output& out_;
-  Settings loaded_;
-  SettingsStatus load_status_;
   WalkerMotion<S> motion_;
   ServoStage<S, kJoints> stage_;
   Sink sink_;

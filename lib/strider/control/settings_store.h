@@ -75,6 +75,15 @@ SettingsStatus load_settings(const Store& store, Settings* out, uint16_t base = 
   return SettingsStatus::kOk;
 }
 
+//! What load_settings() gave, with its status: handed to a constructor as a
+//! temporary, so that no copy of the settings stays in RAM after start-up.
+struct LoadedSettings {
+  Settings settings;
+  SettingsStatus status;
+  template <typename Store>
+  explicit LoadedSettings(const Store& store, uint16_t base = 0) : status(load_settings(store, &settings, base)) {}
+};
+
 //! Writes s at base and reads it back. Refuses invalid settings (kInvalid).
 template <typename Store>
 SettingsStatus save_settings(Store& store, const Settings& s, uint16_t base = 0) {

@@ -46,7 +46,7 @@ class Walker {
   //! or velocity limits this build cannot give (gait_config.h).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
                  bool sitting = false) {
-    if (gait.leg_count != model.leg_count || !velocity_limits_known(model, params, shape) || !build_legs(model))
+    if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || !velocity_limits_known(model, params, shape) || !build_legs(model))
       return false;
     engine_.configure(model, legs_, params, shape, gait, sitting);  // the configuration built in place
     reset_legs(model);
@@ -57,7 +57,8 @@ class Walker {
   //! search, so a robot can switch configurations quickly.
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>& config,
                  bool sitting = false) {
-    if (gait.leg_count != model.leg_count || config.leg_count != model.leg_count) return false;
+    if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || config.leg_count != model.leg_count)
+      return false;
     if (model_ != &model && !build_legs(model)) return false;
     engine_.configure(config, gait, sitting);
     reset_legs(model);
@@ -218,12 +219,12 @@ class Walker {
   }
 
   const RobotModel* model_ = nullptr;
-  AnyLeg<S> legs_[kMaxLegs];
-  uint8_t turn_[kMaxLegs] = {};  // MountTurn of each leg's mount
+  AnyLeg<S> legs_[kWalkerLegs];
+  uint8_t turn_[kWalkerLegs] = {};  // MountTurn of each leg's mount
   ReachProjection<S> proj_{};
   IkOptions<S> ik_options_{};  // the defaults, built once rather than per leg and tick
   GaitEngine<S> engine_;
-  LegResult<S> out_[kMaxLegs];
+  LegResult<S> out_[kWalkerLegs];
 };
 
 }  // namespace strider
