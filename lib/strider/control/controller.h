@@ -195,7 +195,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     switch (c.kind) {
       case CommandKind::kCalStart:
         stop();
-        cal_.start();
+        cal_.start(settings_);
         mode_ = RobotMode::kCalibrating;
         w.text(FlashText{text::kOkCalStart});
         return;
@@ -221,14 +221,14 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
       case CommandKind::kCalSave: {
         if (!cal_.active()) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
         if (cal_.save(store_, settings_) != CalStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
-        settings_ = cal_.saved();
+        settings_ = cal_.live();  // what was saved
         mode_ = RobotMode::kStanding;
         w.text(FlashText{text::kOkCalSaved});
         return;
       }
       case CommandKind::kCalAbort:
         if (!cal_.active()) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
-        cal_.abort();
+        cal_.abort(settings_);
         sink_.apply_settings(cal_.live());
         mode_ = RobotMode::kStanding;
         w.text(FlashText{text::kOkCalAborted});

@@ -37,7 +37,7 @@ class ServoStage {
     count_ = model.joint_count() <= N ? make_channel_map<S>(model, channels_) : uint8_t(0);
     dof_ = model.dof();
     legs_ = model.leg_count;
-    for (uint8_t j = 0; j < dof_; ++j) speed_deg_s_[j] = servo_speed_deg_s(model.servo[j]);
+    for (uint8_t j = 0; j < dof_; ++j) speed_deg_s_[j] = servo_travel(model.servo[j]).speed_deg_s;
     for (uint8_t k = 0; k < N; ++k) { on_[k] = false; ticks_[k] = 0; }
     enabled_legs_ = 0;
     relax_pending_ = true;

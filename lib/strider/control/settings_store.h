@@ -51,7 +51,7 @@ constexpr uint16_t kSettingsRecordBytes = kSettingsHeaderBytes + kSettingsPayloa
 //! afterwards: the record on kOk, the factory defaults otherwise.
 template <typename Store>
 SettingsStatus load_settings(const Store& store, Settings* out, uint16_t base = 0) {
-  *out = default_settings();
+  set_default_settings(out);
   if (uint32_t(base) + kSettingsRecordBytes > store.size()) return SettingsStatus::kNoSpace;
   uint8_t rec[kSettingsRecordBytes];
   bool erased = true;

@@ -193,6 +193,8 @@ class GaitEngine {
   //! The share of a leg's longest stride beyond which a foot is at its edge.
   static constexpr double edge_share() { return kEdgeShare; }
   const GaitTable& table() const { return table_; }
+  //! The gait as given to configure() or set_gait() (table() may be relabelled).
+  const GaitTable& gait() const { return base_; }
   const GaitConfig<S>& config() const { return cfg_; }
   const SupportPolygon<S>& support() const {
     if (support_dirty_) build_support();

@@ -123,6 +123,14 @@ struct RobotModel {
   constexpr uint8_t joint_count() const { return uint8_t(leg_count * dof()); }
 };
 
+//! The model without its legs' names, which only the host tools print (a
+//! firmware's flash copy of its model would otherwise keep their strings in
+//! RAM on the AVR).
+constexpr RobotModel without_leg_names(RobotModel m) {
+  for (uint8_t i = 0; i < kMaxLegs; ++i) m.legs[i].name = nullptr;
+  return m;
+}
+
 // ---- constexpr helpers for writing models ------------------------------------
 
 namespace model_math {
