@@ -27,6 +27,7 @@
 #include "serial_link.h"
 
 #include <Arduino.h>
+#include <avr/sleep.h>
 #include <avr/wdt.h>
 
 #include "board_pins.h"
@@ -146,6 +147,14 @@ void loop() {
     g_led_ms = now_ms;
     digitalWrite(pins::kHeartbeatLed, !digitalRead(pins::kHeartbeatLed));
   }
+  // Idle until the next interrupt instead of spinning: Timer0's millis
+  // overflow (every 1.024 ms), a received byte, a sonar echo edge or a UART
+  // ready for more wakes the CPU, so the loop still runs at least once a
+  // millisecond (the tick starts within 1.024 ms of its time; the watchdog is
+  // fed). Idle mode keeps the timers, UARTs and TWI running and saves about
+  // half the MCU's current between ticks.
+  set_sleep_mode(SLEEP_MODE_IDLE);
+  sleep_mode();
 }
 
 #endif  // STRIDER_FIRMWARE_MAIN_H

@@ -202,9 +202,12 @@ class Robot {
     const uint64_t start = mega_.now_us() + settle_us;
     const uint64_t end = start + duration_us;
     // Feet on the ground (within 3 mm of the lowest) move backwards at the
-    // body's speed: sum their displacement between samples.
+    // body's speed: their displacement between samples, per sample (NaN: no
+    // foot down). Summed over whole step periods only: a gait that shifts
+    // its body moves the stance feet back and forth within a period, which
+    // cancels over whole periods but not over a part of one.
     std::vector<strider::Vec3<float>> prev_feet;
-    double travel_mm = 0, travel_s = 0;
+    std::vector<double> travel;
     while (mega_.now_us() < end) {
       if (mega_.now_us() >= next_key) {
         mega_.send(1, keep_alive);
@@ -224,15 +227,11 @@ class Robot {
             dx += double(f[i].x - prev_feet[i].x);
             ++down;
           }
-        if (down > 0) {
-          travel_mm += -dx / down;
-          travel_s += 0.02;
-        }
+        travel.push_back(down > 0 ? -dx / down : std::nan(""));
       }
       prev_feet = f;
     }
     Motion m;
-    m.walked_mm_s = travel_s > 0 ? travel_mm / travel_s : 0.0;
     int busiest = -1;
     double busiest_path = 0;
     for (int c = 0; c < n; ++c) {
@@ -246,6 +245,18 @@ class Robot {
       }
     }
     if (busiest >= 0) m.period_s = period_s(series[size_t(busiest)], 0.02);
+    size_t used = travel.size();
+    if (m.period_s > 0) {
+      const double whole = std::floor(double(travel.size()) * 0.02 / m.period_s) * m.period_s;
+      used = std::min(used, size_t(std::lround(whole / 0.02)));
+    }
+    double travel_mm = 0, travel_s = 0;
+    for (size_t i = 0; i < used; ++i)
+      if (!std::isnan(travel[i])) {
+        travel_mm += travel[i];
+        travel_s += 0.02;
+      }
+    m.walked_mm_s = travel_s > 0 ? travel_mm / travel_s : 0.0;
     return m;
   }
 
@@ -353,10 +364,12 @@ TEST_P(FirmwareWalk, BootStandWalkAvoidStop) {
   // higher step rate, a longer stride or both) and the walked speed rises.
   // (10 %: some gaits top out below 30 % of the app's 155 mm/s.)
   r.mega().send(1, "1");
-  const Robot::Motion slow = r.measure(1000000, 3000000, "F");
+  // 6 s windows: three of mammal8's 2 s walk cycles (the period needs two
+  // in the window, and the speed is taken over whole periods).
+  const Robot::Motion slow = r.measure(1000000, 6000000, "F");
   const double vx_slow = std::atof(r.status()["vx"].c_str());
   r.mega().send(1, "q");
-  const Robot::Motion fast = r.measure(1000000, 3000000, "F");
+  const Robot::Motion fast = r.measure(1000000, 6000000, "F");
   auto st = r.status();
   const double vx_fast = std::atof(st["vx"].c_str());
   std::printf("%s: 10 %%: vx %.1f mm/s, walked %.1f mm/s, step period %.2f s, joints %.0f us/s; "

@@ -31,11 +31,12 @@ struct AvoidConfig {
   uint16_t slow_mm;           //!< obstacle nearer -> slow down [mm], >= stop_mm
   uint16_t hysteresis_mm;     //!< clear means >= stop_mm + this [mm]
   uint16_t clear_hold_ms;     //!< keep stepping sideways this long after clear [ms]
+  uint16_t clear_mm;          //!< ... and at least this far, walked (the body's half-width) [mm]
   uint16_t side_timeout_ms;   //!< one side this long without success -> other side [ms]
   int32_t min_side_speed;     //!< sidestep speed at least this [0.1 mm/s]
 };
 
-constexpr AvoidConfig default_avoid_config() { return AvoidConfig{true, 200, 400, 50, 600, 5000, 300}; }
+constexpr AvoidConfig default_avoid_config() { return AvoidConfig{true, 200, 400, 50, 600, 0, 5000, 300}; }
 constexpr uint8_t kAvoidMinSlowPct = 25;  //!< forward speed at the edge of the stop distance [%]
 
 enum class AvoidState : uint8_t {
@@ -67,7 +68,12 @@ class Avoidance {
  public:
   //! One control tick: the operator's command, the sonar, the time -> the
   //! command to walk. Seed 000 only avoids while walking forward.
-  Twist update(const Twist& cmd, const SonarReading& sonar, uint32_t now_ms, const AvoidConfig& cfg) {
+  //! walked_vy: the sideways speed the body really walks [0.1 mm/s] (the
+  //! gait's, after its limits and ramp), for cfg.clear_mm; kUnknownSpeed:
+  //! taken as the commanded sidestep speed.
+  static constexpr int32_t kUnknownSpeed = -0x7FFFFFFF - 1;
+  Twist update(const Twist& cmd, const SonarReading& sonar, uint32_t now_ms, const AvoidConfig& cfg,
+               int32_t walked_vy = kUnknownSpeed) {
     if (!cfg.enabled || cmd.vx <= 0) {
       state_ = AvoidState::kPassThrough;
       reset_side();
@@ -91,6 +97,8 @@ class Avoidance {
       case AvoidState::kSidestep:
         if (clear) {
           enter(AvoidState::kClearing, now_ms);
+          cleared_ = 0;
+          last_ms_ = now_ms;
         } else if (elapsed(now_ms, since_ms_) >= uint32_t(cfg.side_timeout_ms) + extra_ms_) {
           if (switched_) {
             enter(AvoidState::kBlocked, now_ms);
@@ -105,7 +113,7 @@ class Avoidance {
         break;
       case AvoidState::kClearing:
         if (near) enter(AvoidState::kSidestep, now_ms);
-        else if (elapsed(now_ms, since_ms_) >= cfg.clear_hold_ms) {
+        else if (cleared(cmd, cfg, now_ms, walked_vy)) {
           state_ = AvoidState::kForward;
           reset_side();
         }
@@ -130,16 +138,40 @@ class Avoidance {
     extra_ms_ = 0;
   }
 
+  //! Clearing done: held clear_hold_ms and walked clear_mm sideways (the
+  //! sensor's beam is narrow: the way is clear for the sensor before it is
+  //! for the body and its feet), or side_timeout_ms passed (a gait that
+  //! cannot walk sideways must not hold this state for ever).
+  bool cleared(const Twist& cmd, const AvoidConfig& cfg, uint32_t now_ms, int32_t walked_vy) {
+    const uint32_t dt = elapsed(now_ms, last_ms_);
+    last_ms_ = now_ms;
+    int32_t v = walked_vy == kUnknownSpeed ? side_speed(cmd, cfg) : walked_vy;
+    if (v < 0) v = v < -kMaxSpeed ? kMaxSpeed : -v;
+    if (v > kMaxSpeed) v = kMaxSpeed;
+    // [0.1 mm/s] x [ms] = 1e-4 mm: at most 1e5 x 1e3 per tick, and the sum
+    // saturates instead of wrapping.
+    const uint32_t step = uint32_t(v) * (dt > 1000u ? 1000u : dt);
+    cleared_ = step >= 0xFFFFFFFFu - cleared_ ? 0xFFFFFFFFu : cleared_ + step;
+    const uint32_t held = elapsed(now_ms, since_ms_);
+    if (held >= cfg.side_timeout_ms) return true;
+    return held >= cfg.clear_hold_ms && cleared_ >= uint32_t(cfg.clear_mm) * 10000u;
+  }
+
+  static constexpr int32_t kMaxSpeed = 100000;  //!< 10 m/s [0.1 mm/s]: more is taken as this
+
+  static int32_t side_speed(const Twist& cmd, const AvoidConfig& cfg) {
+    return cmd.vx > cfg.min_side_speed ? cmd.vx : cfg.min_side_speed;
+  }
+
   void enter(AvoidState s, uint32_t now_ms) {
     state_ = s;
     since_ms_ = now_ms;
   }
 
   Twist output(const Twist& cmd, uint16_t d, const AvoidConfig& cfg) const {
-    const int32_t side_speed = cmd.vx > cfg.min_side_speed ? cmd.vx : cfg.min_side_speed;
     switch (state_) {
       case AvoidState::kSidestep:
-      case AvoidState::kClearing: return Twist{0, side_ * side_speed, 0};
+      case AvoidState::kClearing: return Twist{0, side_ * side_speed(cmd, cfg), 0};
       case AvoidState::kBlocked: return Twist{0, 0, 0};
       default: break;
     }
@@ -153,6 +185,8 @@ class Avoidance {
 
   uint32_t since_ms_ = 0;
   uint32_t extra_ms_ = 0;
+  uint32_t last_ms_ = 0;  //!< clearing: the previous tick
+  uint32_t cleared_ = 0;  //!< clearing: walked sideways since clear [1e-4 mm]
   AvoidState state_ = AvoidState::kPassThrough;
   int8_t side_ = 1;
   bool switched_ = false;

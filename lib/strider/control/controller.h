@@ -74,8 +74,10 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   }
 
   //! One control tick: deadman and avoidance; sends the walking command.
-  //! Returns true when *w holds a notice (`info ...`) to send.
-  bool tick(uint32_t now_ms, const SonarReading& sonar, ReplyWriter& w) {
+  //! walked_vy: the sideways speed the gait really walks [0.1 mm/s]
+  //! (Avoidance::update). Returns true when *w holds a notice (`info ...`).
+  bool tick(uint32_t now_ms, const SonarReading& sonar, ReplyWriter& w,
+            int32_t walked_vy = Avoidance::kUnknownSpeed) {
     sonar_ = sonar;
     if (mode_ == RobotMode::kWalking && deadman_.expired(now_ms, true)) {
       stop();
@@ -87,8 +89,9 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     cfg.enabled = settings_.avoid_enabled != 0;
     cfg.stop_mm = settings_.avoid_stop_mm;
     cfg.slow_mm = settings_.avoid_slow_mm;
+    cfg.clear_mm = avoid_clear_mm_;
     const AvoidState before = avoid_.state();
-    out_ = avoid_.update(cmd_, sonar, now_ms, cfg);
+    out_ = avoid_.update(cmd_, sonar, now_ms, cfg, walked_vy);
     sink_.set_velocity(out_);
     if (avoid_.state() != before && avoid_.state() != AvoidState::kPassThrough) {
       w.text(FlashText{text::kInfoAvoid_}).text(to_flash(avoid_.state()));
@@ -96,6 +99,10 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     }
     return false;
   }
+
+  //! How far the body walks sideways after the sensor sees the way clear:
+  //! the robot's half-width with its feet (RobotApp sets it from the model).
+  void set_avoid_clear_mm(uint16_t mm) { avoid_clear_mm_ = mm; }
 
   RobotMode mode() const { return mode_; }
   const Twist& command() const { return cmd_; }      //!< operator's velocity
@@ -276,6 +283,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   Twist cmd_{0, 0, 0};
   Twist out_{0, 0, 0};
   RobotMode mode_ = RobotMode::kStanding;
+  uint16_t avoid_clear_mm_ = 0;
   uint8_t speed_pct_ = 50;
 };
 

@@ -63,6 +63,20 @@ inline FlashText to_flash(GaitState s) { return flash_name(kGaitStateNames, 6, u
 inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uint8_t(s)); }
 }  // namespace app_text
 
+//! Avoidance's clearing distance: the widest standing foot's distance from
+//! the body's centre line plus kAvoidClearMarginMm [mm].
+constexpr float kAvoidClearMarginMm = 20.0f;
+inline uint16_t avoid_clear_mm(const RobotModel& m) {
+  float w = 0.0f;
+  for (uint8_t i = 0; i < m.leg_count && i < kMaxLegs; ++i) {
+    const float y = m.legs[i].stand_mm.y;
+    if (y > w) w = y;
+    if (-y > w) w = -y;
+  }
+  w += kAvoidClearMarginMm;
+  return w < 60000.0f ? uint16_t(w + 0.5f) : uint16_t(60000);
+}
+
 //! Microseconds (<= 1e6) -> seconds, without a division.
 inline void to_seconds(uint32_t us, float* s) { *s = float(us) * 1e-6f; }
 inline void to_seconds(uint32_t us, Fixed* s) { *s = Fixed::from_raw(int32_t((us * 4295ul) >> 16)); }  // 2^16 / 1e6 = 4295 / 2^16 (+1e-5)
@@ -106,6 +120,7 @@ class RobotApp {
     announce(link);
     if (!ok_) return false;
     stage_.set_settings(controller_.settings());
+    controller_.set_avoid_clear_mm(avoid_clear_mm(model_));
     stage_.apply_pending(out_);
     stage_.begin_soft_start(now_us / 1000u);
     last_tick_us_ = now_us;
@@ -257,7 +272,8 @@ class RobotApp {
     }
     char buf[kMaxReplyBytes];
     ReplyWriter w(buf, sizeof buf);
-    if (controller_.tick(now_ms, sonar_.reading(now_us), w)) link.send_line(kAllPorts, buf);
+    const int32_t walked_vy = to_tenths(motion_.walker().engine().vy());
+    if (controller_.tick(now_ms, sonar_.reading(now_us), w, walked_vy)) link.send_line(kAllPorts, buf);
   }
 
   //! After relax, the next motion command switches the servos on again.

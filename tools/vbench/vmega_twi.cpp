@@ -1,0 +1,112 @@
+// VirtualMega: the TWI bus with its PCA9685 boards (addressing, ALLCALL, general
+// call SWRST, repeated START) and the decoded pulse widths.
+#include "virtual_mega_impl.h"
+
+#include "avr_twi.h"
+
+namespace strider_vmega {
+
+using namespace regs;
+
+void VirtualMega::Impl::twi_ack(uint8_t addr8) {
+  avr_raise_irq(twi_irq + TWI_IRQ_INPUT, avr_twi_irq_msg(TWI_COND_ACK, addr8, 1));
+}
+
+void VirtualMega::Impl::end_transaction(bool stop) {
+  if (stop)
+    for (int i : selected) boards[size_t(i)].stop();
+  selected.clear();
+  general_call = false;
+  in_transaction = false;
+}
+
+void VirtualMega::Impl::on_twi(avr_irq_t*, uint32_t value, void* param) {
+  static_cast<Impl*>(param)->twi_message(value);
+}
+
+void VirtualMega::Impl::twi_message(uint32_t value) {
+  avr_twi_msg_irq_t m;
+  m.u.v = value;
+  const uint8_t msg = uint8_t(m.u.twi.msg);
+  const uint8_t addr8 = uint8_t(m.u.twi.addr);
+  const uint8_t data = uint8_t(m.u.twi.data);
+  if (msg & TWI_COND_STOP) {
+    end_transaction(true);
+    update_pulses();
+  }
+  if (msg & TWI_COND_START) {
+    // A repeated START keeps the boards' pending outputs until the STOP.
+    std::vector<int> keep = selected;
+    end_transaction(false);
+    pending_stop.insert(pending_stop.end(), keep.begin(), keep.end());
+    begin_transaction(addr8);
+  }
+  if ((msg & TWI_COND_WRITE) && in_transaction) {
+    ++i2c_log.back().bytes;
+    if (general_call) {
+      twi_ack(addr8);
+      if (data == 0x06)  // SWRST: every PCA9685 back to power-on values
+        for (Pca9685& b : boards) b.power_on_reset();
+    } else if (!selected.empty()) {
+      twi_ack(addr8);
+      for (int i : selected) boards[size_t(i)].write_byte(data, now_us());
+    }
+    update_pulses();
+  }
+  if ((msg & TWI_COND_READ) && in_transaction) {
+    ++i2c_log.back().bytes;
+    if (selected.size() == 1) {
+      const uint8_t v = boards[size_t(selected[0])].read_byte();
+      avr_raise_irq(twi_irq + TWI_IRQ_INPUT, avr_twi_irq_msg(TWI_COND_READ, addr8, v));
+    }
+  }
+}
+
+void VirtualMega::Impl::begin_transaction(uint8_t addr8) {
+  I2cTransaction t;
+  t.start_us = now_us();
+  t.address7 = uint8_t(addr8 >> 1);
+  t.read = (addr8 & 1) != 0;
+  t.bytes = 1;
+  in_transaction = true;
+  if (t.address7 == 0x00 && !t.read) {
+    general_call = true;
+  } else {
+    for (size_t i = 0; i < boards.size(); ++i) {
+      const Pca9685& b = boards[i];
+      const bool allcall = !t.read && (b.reg(Pca9685::kMode1) & Pca9685::kAllCall) &&
+                           t.address7 == (b.reg(0x05) >> 1);
+      if (b.address() == t.address7 || allcall) selected.push_back(int(i));
+    }
+  }
+  t.acked = general_call || !selected.empty();
+  if (t.acked) {
+    twi_ack(addr8);
+    if (!t.read)
+      for (int i : selected) boards[size_t(i)].begin_write();
+  }
+  i2c_log.push_back(t);
+  trim_log(i2c_log);
+}
+
+void VirtualMega::Impl::flush_pending_stop() {
+  for (int i : pending_stop) boards[size_t(i)].stop();
+  pending_stop.clear();
+}
+
+void VirtualMega::Impl::update_pulses() {
+  if (!in_transaction) flush_pending_stop();
+  const uint64_t t = now_us();
+  for (size_t b = 0; b < boards.size(); ++b)
+    for (int ch = 0; ch < Pca9685::kChannels; ++ch) {
+      const size_t g = b * Pca9685::kChannels + size_t(ch);
+      const double w = boards[b].pulse_us(ch);
+      if (w != last_width[g]) {
+        last_width[g] = w;
+        pulse_log.push_back(PulseChange{t, int(g), w});
+        trim_log(pulse_log);
+      }
+    }
+}
+
+}  // namespace strider_vmega
