@@ -37,7 +37,7 @@ class ServoStage {
     count_ = model.joint_count() <= N ? make_channel_map<S>(model, channels_) : uint8_t(0);
     dof_ = model.dof();
     legs_ = model.leg_count;
-    for (uint8_t j = 0; j < dof_; ++j) speed_deg_s_[j] = servo_travel(model.servo[j]).speed_deg_s;
+    for (uint8_t j = 0; j < dof_; ++j) part_[j] = model.servo[j];
     for (uint8_t k = 0; k < N; ++k) { on_[k] = false; ticks_[k] = 0; }
     enabled_legs_ = 0;
     relax_pending_ = true;
@@ -144,7 +144,8 @@ class ServoStage {
     fast_ = tick_map_.configure(channels_, count_, *settings_, timing_) == ServoTickStatus::kOk;
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
-      const float us = speed_deg_s_[j] * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f);
+      const float speed_deg_s = servo_travel(part_[j]).speed_deg_s;  // from flash
+      const float us = speed_deg_s * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f);
       const uint16_t t = timing_.pulse_ticks(uint16_t(us + 0.5f));
       step_[j] = t == 0 ? uint16_t(1) : t;
     }
@@ -156,7 +157,7 @@ class ServoStage {
   uint16_t ticks_[N];
   bool on_[N];
   uint16_t step_[kMaxLegDof] = {1, 1, 1};
-  float speed_deg_s_[kMaxLegDof] = {0.0f, 0.0f, 0.0f};
+  ServoPart part_[kMaxLegDof] = {ServoPart::kSg90, ServoPart::kSg90, ServoPart::kSg90};  // of joint j
   Pca9685Timing timing_;
   const Settings* settings_ = nullptr;  // set_settings()
   uint32_t next_leg_ms_ = 0;
