@@ -6,10 +6,11 @@
 //!
 //! Per joint and frame: d = base + direction * joint [rad] (the servo angle
 //! from its lowest limit), clamped into [0, travel]; ticks = round(ticks(0) +
-//! d * ticks_per_rad). For Fixed that is one 16 x 16 -> 32-bit product (d in
-//! Q2.14, ticks_per_rad scaled into 16 bits), a shift and an add: no 32-bit
-//! multiplication, no division; a few hundred cycles instead of ~2,000 for
-//! map_joint() (servo_map.h), whose rounding to whole microseconds it skips.
+//! d * ticks_per_rad). For Fixed that is a 24 x 16-bit product (d in Q16.16
+//! below 4 rad, ticks_per_rad scaled into 16 bits), a shift and an add: no
+//! 32-bit multiplication, no division; ~150 cycles per joint instead of
+//! ~2,000 for map_joint() (servo_map.h), whose rounding to whole
+//! microseconds it skips.
 //!
 //! Same contract as map_joint(): an angle outside the limits is clamped to
 //! them (kLimited), a NaN or infinite joint holds the centre (kNotFinite),
@@ -45,29 +46,28 @@ using detail::kFloatInfBits;
 using detail::kFloatSignBit;
 using detail::magnitude_bits;
 
-//! 2^(16 - n) for n in [1, 15] (entry 0 unused).
-template <typename Dummy = void>
-struct TickShiftTable {
-  static const uint16_t kPow2[16];
-};
-template <typename Dummy>
-const uint16_t TickShiftTable<Dummy>::kPow2[16] STRIDER_PROGMEM = {
-    0, 32768, 16384, 8192, 4096, 2048, 1024, 512, 256, 128, 64, 32, 16, 8, 4, 2};
-
-//! p >> n for n in [1, 15], exact: with m = 2^(16 - n) and p = h 2^16 + l,
-//! h m + (l m) / 2^16 (floor), two 16 x 16 products instead of avr-gcc's
-//! loop of n single-bit 32-bit shifts.
-inline uint32_t shr_by_products(uint32_t p, uint8_t n) {
-  const uint16_t m = flash_u16(TickShiftTable<>::kPow2, n);
-  return detail::mul_u16(detail::hi16(p), m) + detail::hi16(detail::mul_u16(uint16_t(p), m));
-}
-
-//! ticks = (d [Q2.14] * k) >> (shift - 2) + base [Q16.16], rounded
-//! (shift in [3, 17]: configure()).
+//! ticks = (d [Q16.16] * k) >> shift + base [Q16.16], rounded (shift in
+//! [3, 17], d in [0, 4) rad: configure()). d has 18 significant bits, so the
+//! product is 18 x 16 bits: one 16 x 16-bit product and up to two adds for
+//! d's integer part, summed 8 bits down (whole bytes); the usual shift of 8
+//! (a slope of 128 to 255 ticks per rad, every 50 Hz servo) then needs no
+//! shift at all.
 inline uint16_t ticks_of(Fixed d, uint16_t k, uint8_t shift, uint32_t base_q16) {
-  const uint16_t d14 = uint16_t(uint32_t(d.raw()) >> 2);  // 0 <= d < 4 rad: checked in configure()
-  uint32_t p = detail::mul_u16(d14, k);                    // 16 x 16 -> 32 bits
-  p = shr_by_products(p, uint8_t(shift - 2));
+  const uint32_t u = uint32_t(d.raw());                         // < 2^18
+  const uint32_t lo = detail::mul_u16(uint16_t(u), k);          // bits 0-31 of d k
+  // Bits 16-17 of d times k (< 2^18): d's integer part is 0-3, two adds.
+  const uint8_t whole = uint8_t(u >> 16);
+  uint32_t hi = (whole & 1u) ? uint32_t(k) : 0u;
+  if (whole & 2u) hi += uint32_t(k) << 1;
+  uint32_t p;
+  if (shift >= 8) {
+    p = (lo >> 8) + (hi << 8);  // d k 2^-8, exact (< 2^26)
+    for (uint8_t n = uint8_t(shift - 8); n != 0; --n) p >>= 1;
+  } else {
+    p = lo;
+    for (uint8_t n = shift; n != 0; --n) p >>= 1;
+    p += hi << (16 - shift);
+  }
   p += base_q16 + 0x8000u;
   const uint16_t t = uint16_t(p >> 16);
   return t > kPca9685MaxTick ? kPca9685MaxTick : t;
@@ -204,13 +204,7 @@ class ServoTickMap {
   //! (ServoOutput); returns the worst status.
   template <typename Output>
   ServoStatus write(Output& out, uint8_t first, const S* joint_rad, uint8_t n) const {
-    ServoStatus worst_status = ServoStatus::kOk;
-    for (uint8_t i = 0; i < n && uint8_t(first + i) < count_; ++i) {
-      const ServoCommand cmd = map(uint8_t(first + i), joint_rad[i]);
-      out.write_ticks(cmd.channel, cmd.ticks);
-      if (uint8_t(cmd.status) > uint8_t(worst_status)) worst_status = cmd.status;
-    }
-    return worst_status;
+    return write_joints(out, first, joint_rad, n);
   }
 
  private:
@@ -235,6 +229,45 @@ class ServoTickMap {
   }
   static uint16_t ticks(const ServoTickScale<float>& sc, float d) {
     return servo_ticks_detail::ticks_of(d, sc.ticks_per_rad, sc.base);
+  }
+
+  // Float: each joint through map().
+  template <typename Output>
+  ServoStatus write_joints(Output& out, uint8_t first, const float* joint_rad, uint8_t n) const {
+    ServoStatus worst_status = ServoStatus::kOk;
+    for (uint8_t i = 0; i < n && uint8_t(first + i) < count_; ++i) {
+      const ServoCommand cmd = map(uint8_t(first + i), joint_rad[i]);
+      out.write_ticks(cmd.channel, cmd.ticks);
+      if (uint8_t(cmd.status) > uint8_t(worst_status)) worst_status = cmd.status;
+    }
+    return worst_status;
+  }
+  // Fixed: what map() computes (bit for bit: test/control), walking the
+  // joints by pointer with the status kept as one flag. Written out rather
+  // than calling map(): avr-gcc recomputes the joint's address for every
+  // field and spills the command it returns, ~310 cycles per joint.
+  template <typename Output>
+  ServoStatus write_joints(Output& out, uint8_t first, const Fixed* joint_rad, uint8_t n) const {
+    if (first >= count_) return ServoStatus::kOk;
+    if (n > uint8_t(count_ - first)) n = uint8_t(count_ - first);
+    const ServoTickJoint<Fixed>* j = joint_ + first;
+    bool limited = false;
+    for (; n != 0; --n, ++j, ++joint_rad) {
+      // Fixed's saturating sum in place: avr-gcc keeps its operator out
+      // of line in a large firmware (a call per joint).
+      int32_t d = j->direction < 0 ? Fixed::sat_sub_fast(j->base_rad.raw(), joint_rad->raw())
+                                   : Fixed::sat_add_fast(j->base_rad.raw(), joint_rad->raw());
+      if (d < 0) {
+        d = 0;
+        limited = true;
+      } else if (d > j->travel_rad.raw()) {
+        d = j->travel_rad.raw();
+        limited = true;
+      }
+      const uint16_t t = servo_ticks_detail::ticks_of(Fixed::from_raw(d), j->scale.k, j->scale.shift, j->scale.base_q16);
+      out.write_ticks(j->channel, t < j->lo_ticks ? j->lo_ticks : t > j->hi_ticks ? j->hi_ticks : t);
+    }
+    return limited ? ServoStatus::kLimited : ServoStatus::kOk;
   }
 
   ServoTickJoint<S> joint_[N];

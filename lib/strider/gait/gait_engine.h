@@ -178,9 +178,10 @@ class GaitEngine {
   //! early, or, without the support to lift, holds the body still. Never
   //! while the command is steady (the plan keeps strides within the limits).
   bool beyond_edge(uint8_t i, const Vec3<S>& p) const {
-    const S dx = p.x - cfg_.home[i].x, dy = p.y - cfg_.home[i].y;
+    const S dx = sub_inline(p.x, cfg_.home[i].x), dy = sub_inline(p.y, cfg_.home[i].y);
     const S r = cfg_.edge_mm[i];
-    if (abs(dx) + abs(dy) <= r) return false;  // inside the shortest stride's diamond: no product
+    // inside the shortest stride's diamond: no product (sums in place, scalar.h)
+    if (add_inline(abs_inline(dx), abs_inline(dy)) <= r) return false;
     // Inside the shortest stride's circle (a little smaller, for rounding):
     // two products instead of the atan2, the square root and the lookup.
     const S ux = gait_units::to_unit(dx, cfg_.unit_shift), uy = gait_units::to_unit(dy, cfg_.unit_shift);

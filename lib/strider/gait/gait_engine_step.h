@@ -38,9 +38,10 @@ void GaitEngine<S>::step_walk(S dt) {
     odo_wx_ = odo_c_ * step.dx_mm - odo_s_ * step.dy_mm;
     odo_wy_ = odo_s_ * step.dx_mm + odo_c_ * step.dy_mm;
   }
-  odo_x_ += odo_wx_;
-  odo_y_ += odo_wy_;
-  odo_yaw_ += step.dyaw;
+  // Sums in place (scalar.h's add_inline: the same bits as operator+).
+  odo_x_ = add_inline(odo_x_, odo_wx_);
+  odo_y_ = add_inline(odo_y_, odo_wy_);
+  odo_yaw_ = add_inline(odo_yaw_, step.dyaw);
   if (step.dyaw != S(0)) {
     odo_dx_ = odo_dy_ = S(0);  // the heading changes: recompute next tick
     const S c = odo_c_ * step.cos_yaw - odo_s_ * step.sin_yaw;
@@ -70,7 +71,8 @@ void GaitEngine<S>::step_walk(S dt) {
   // Feet on the ground stay on the ground: they move by the inverse step.
   for (uint8_t i = 0; i < n; ++i) {
     if (!contact_[i] || landed[i]) continue;
-    foot_[i] = step.move_ground_point(foot_[i]);
+    // Field by field (leg_ik::copy_point): avr-gcc copies a whole Vec3 with a byte loop.
+    leg_ik::copy_point(step.move_ground_point(foot_[i]), foot_[i]);
     stance_elapsed_[i] = min_of(stance_elapsed_[i] + int32_t(delta), int32_t(kPhaseOne));
   }
   // Lift-offs when the clock passes a foot's offset.
@@ -134,10 +136,10 @@ void GaitEngine<S>::step_walk(S dt) {
     }
     // A foot that lifted from the ground line (no stance depth) keeps its
     // height but for the lift: no product for the zero difference.
-    const S dz = cfg_.home[i].z - lift_[i].z;
-    foot_[i] = Vec3<S>(lift_[i].x + (target_[i].x - lift_[i].x) * sp.u,
-                       lift_[i].y + (target_[i].y - lift_[i].y) * sp.u,
-                       (dz == S(0) ? lift_[i].z : lift_[i].z + dz * sp.u) + sp_lift);
+    const S dz = sub_inline(cfg_.home[i].z, lift_[i].z);
+    foot_[i].x = add_inline(lift_[i].x, sub_inline(target_[i].x, lift_[i].x) * sp.u);
+    foot_[i].y = add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u);
+    foot_[i].z = add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift);
   }
   for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
     if (!contact_[i]) continue;

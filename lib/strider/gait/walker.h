@@ -133,9 +133,9 @@ class Walker {
       } else if (still) {
         copy(p, r.target_mm);
       } else {
-        r.target_mm.x = p.x - shift.x;
-        r.target_mm.y = p.y - shift.y;
-        r.target_mm.z = p.z - shift.z;
+        r.target_mm.x = sub_inline(p.x, shift.x);
+        r.target_mm.y = sub_inline(p.y, shift.y);
+        r.target_mm.z = sub_inline(p.z, shift.z);
       }
       r.contact = engine_.contact(i);
       const Vec3<S> leg_target = to_leg_unchecked(i, r.target_mm);
@@ -198,17 +198,20 @@ class Walker {
     if (abs(m.cos_yaw + m.sin_yaw) <= tiny) return kAntiDiagonal;
     return kTurned;
   }
-  Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
+  // Inline: the tick's one call site would pay ~100 cycles per leg for the
+  // call, its register saves and the returned vector.
+  STRIDER_ALWAYS_INLINE Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
     const LegMount<S>& m = legs_[i].mount();
     if (turn_[i] == kTurned) return m.body_to_leg(p);
-    // Scalars, not a Vec3 difference (an out-of-line call on the AVR).
-    const S dx = p.x - m.origin_mm.x, dy = p.y - m.origin_mm.y, dz = p.z - m.origin_mm.z;
+    // Scalars, not a Vec3 difference (an out-of-line call on the AVR), and
+    // Fixed's sums in place (add_inline).
+    const S dx = sub_inline(p.x, m.origin_mm.x), dy = sub_inline(p.y, m.origin_mm.y), dz = sub_inline(p.z, m.origin_mm.z);
     switch (turn_[i]) {
       case kStraight: return Vec3<S>(dx, dy, dz);
-      case kLeft: return Vec3<S>(dy, -dx, dz);
-      case kRight: return Vec3<S>(-dy, dx, dz);
-      case kDiagonal: return Vec3<S>(m.cos_yaw * (dx + dy), m.cos_yaw * (dy - dx), dz);
-      default: return Vec3<S>(m.cos_yaw * (dx - dy), m.cos_yaw * (dx + dy), dz);
+      case kLeft: return Vec3<S>(dy, neg_inline(dx), dz);
+      case kRight: return Vec3<S>(neg_inline(dy), dx, dz);
+      case kDiagonal: return Vec3<S>(m.cos_yaw * add_inline(dx, dy), m.cos_yaw * sub_inline(dy, dx), dz);
+      default: return Vec3<S>(m.cos_yaw * sub_inline(dx, dy), m.cos_yaw * add_inline(dx, dy), dz);
     }
   }
   Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const {
@@ -218,7 +221,7 @@ class Walker {
 
   // Same bits (an IK that reached its target copies it): for float no
   // comparison calls; a +0 against -0 only takes the transform back.
-  static bool same(const Vec3<S>& a, const Vec3<S>& b) {
+  STRIDER_ALWAYS_INLINE static bool same(const Vec3<S>& a, const Vec3<S>& b) {
     return leg_ik::same_bits(a.x, b.x) && leg_ik::same_bits(a.y, b.y) && leg_ik::same_bits(a.z, b.z);
   }
 

@@ -102,7 +102,7 @@ class Fixed {
   //! sat_add and sat_sub for run time: on the AVR a 32-bit add or subtract
   //! and a branch on the overflow flag, which saturates toward the true
   //! result's sign (b's for a sum, the opposite of b's for a difference).
-  static inline int32_t sat_add_fast(int32_t a, int32_t b) {
+  STRIDER_ALWAYS_INLINE static int32_t sat_add_fast(int32_t a, int32_t b) {
 #if defined(__AVR__)
     asm("add %A0, %A1"     "\n\t" "adc %B0, %B1"     "\n\t" "adc %C0, %C1"     "\n\t" "adc %D0, %D1" "\n\t"
         "brvc 1f"          "\n\t"
@@ -117,7 +117,7 @@ class Fixed {
     return sat_add(a, b);
 #endif
   }
-  static inline int32_t sat_sub_fast(int32_t a, int32_t b) {
+  STRIDER_ALWAYS_INLINE static int32_t sat_sub_fast(int32_t a, int32_t b) {
 #if defined(__AVR__)
     asm("sub %A0, %A1"     "\n\t" "sbc %B0, %B1"     "\n\t" "sbc %C0, %C1"     "\n\t" "sbc %D0, %D1" "\n\t"
         "brvc 1f"          "\n\t"
