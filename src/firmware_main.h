@@ -5,9 +5,10 @@
 //
 // Included once per build, by the file of src/models/ that PlatformIO
 // (build_src_filter) or CMake (per target) picks, which first defines
-// STRIDER_FIRMWARE_MODEL (the model) and STRIDER_LEG_KINDS (its leg kind,
-// robots/robot_model.h): the model is a compile-time constant here and only
-// its leg type is compiled in.
+// STRIDER_FIRMWARE_MODEL (the model), STRIDER_LEG_KINDS (its leg kind) and,
+// for a quadruped, STRIDER_WALKER_LEGS 4 (robots/robot_model.h): the model is
+// a compile-time constant here, only its leg type is compiled in and the
+// walking state has as many legs as the model.
 #ifndef STRIDER_FIRMWARE_MAIN_H
 #define STRIDER_FIRMWARE_MAIN_H
 
@@ -15,6 +16,7 @@
 #error "include firmware_main.h from a file of src/models/ (STRIDER_FIRMWARE_MODEL, STRIDER_LEG_KINDS)"
 #endif
 #define STRIDER_VELOCITY_SEARCH 0  // the built-in models have stored velocity limits
+#define STRIDER_GAITS_IN_FLASH 1   // the gait tables stay in flash (gait_library.h)
 
 // Library headers before Arduino.h, which defines min, max, abs and
 // constrain as macros that would rewrite the library's own names.
@@ -32,17 +34,23 @@
 
 namespace {
 
-constexpr const strider::RobotModel& kModel = STRIDER_FIRMWARE_MODEL;
+constexpr const strider::RobotModel& kModel = STRIDER_FIRMWARE_MODEL;  // for constant expressions only
+// The model in flash: the RobotApp copies it to the stack for its start-up
+// configuration, and no RAM holds it (kModel itself is never read at run time).
+constexpr strider::RobotModel kModelInFlash PROGMEM = strider::without_leg_names(STRIDER_FIRMWARE_MODEL);
+constexpr uint8_t kBoards = strider::pca_board_count(kModel);
 static_assert(strider::kCompiledLegKinds == (1u << uint8_t(kModel.kind)), "STRIDER_LEG_KINDS: the model's leg kind alone");
+static_assert(strider::kWalkerLegs == kModel.leg_count, "STRIDER_WALKER_LEGS: the model's leg count");
 
 // Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.
 using Scalar = strider::Fixed;
 using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count()>;
 
-Pca9685Output g_servos;
+uint16_t g_servo_shadow[kBoards * strider::kPcaChannelsPerBoard];  // the boards this model uses
+Pca9685Output g_servos(g_servo_shadow, uint8_t(sizeof g_servo_shadow / sizeof g_servo_shadow[0]));
 EepromStore g_eeprom;
 SerialLink g_link;
-App g_app(kModel, g_servos, g_eeprom);  // reads the settings from EEPROM
+App g_app(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
 uint32_t g_next_tick_us = 0;
 uint32_t g_led_ms = 0;
 
@@ -105,7 +113,7 @@ void setup() {
   Serial.begin(pins::kUsbBaud);
   Serial1.begin(g_app.controller().settings().baud);
   hcsr04::begin();
-  const bool boards_ok = g_servos.begin(strider::pca_board_count(kModel));
+  const bool boards_ok = g_servos.begin(kBoards);
   if (g_reset_flags & _BV(WDRF)) notice(kInfoWatchdog);
   if (g_reset_flags & _BV(BORF)) notice(kInfoBrownOut);
   if (!boards_ok) notice(kInfoNoBoard);

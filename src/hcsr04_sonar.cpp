@@ -3,6 +3,7 @@
 #include "control/sonar_echo.h"  // before Arduino.h (its min/max macros)
 
 #include <Arduino.h>
+#include <avr/interrupt.h>
 #include <util/atomic.h>
 
 #include "board_pins.h"
@@ -12,15 +13,23 @@ namespace {
 
 strider::SonarEcho g_echo;
 
-void on_echo_edge() { g_echo.edge(digitalRead(pins::kSonarEcho) == HIGH, micros()); }
+static_assert(pins::kSonarEcho == 2, "ECHO on D2 = PE4 = INT4 (the ISR below)");
 
 }  // namespace
+
+// ECHO edges: INT4 set up by hand rather than with attachInterrupt(), whose
+// core file brings all eight external-interrupt handlers and their table
+// (about 0.9 KB of flash and 16 bytes of RAM) for the one used here.
+ISR(INT4_vect) { g_echo.edge((PINE & _BV(PE4)) != 0, micros()); }
 
 void begin() {
   pinMode(pins::kSonarTrig, OUTPUT);
   digitalWrite(pins::kSonarTrig, LOW);
   pinMode(pins::kSonarEcho, INPUT);
-  attachInterrupt(digitalPinToInterrupt(pins::kSonarEcho), on_echo_edge, CHANGE);
+  // What attachInterrupt(digitalPinToInterrupt(2), ..., CHANGE) does on the
+  // Mega: INT4 on any logical change (ISC41:40 = 01), then enabled.
+  EICRB = uint8_t((EICRB & ~(_BV(ISC40) | _BV(ISC41))) | _BV(ISC40));
+  EIMSK |= _BV(INT4);
 }
 
 bool busy() {

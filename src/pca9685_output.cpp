@@ -4,7 +4,7 @@
 
 bool Pca9685Output::begin(uint8_t boards) {
   boards_ = boards;
-  for (uint8_t i = 0; i < kChannels; ++i) off_[i] = kFullOff;
+  for (uint8_t i = 0; i < channels_; ++i) off_[i] = kFullOff;
   dirty_ = 0;
   return pca9685_bus::begin(boards);
 }
@@ -15,13 +15,13 @@ void Pca9685Output::flush() {
   bytes_ = 0;
   uint8_t burst[4 * pca9685_bus::kMaxBurstChannels];
   uint8_t ch = 0;
-  while (dirty_ != 0 && ch < kChannels) {
+  while (dirty_ != 0 && ch < channels_) {
     if (!(dirty_ & (uint32_t(1) << ch))) { ++ch; continue; }
     // A run of changed channels on one board, at most kMaxBurstChannels long.
     const uint8_t board = uint8_t(ch / strider::kPcaChannelsPerBoard);
     const uint8_t first = ch;
     uint8_t n = 0;
-    while (ch < kChannels && (dirty_ & (uint32_t(1) << ch)) && ch / strider::kPcaChannelsPerBoard == board &&
+    while (ch < channels_ && (dirty_ & (uint32_t(1) << ch)) && ch / strider::kPcaChannelsPerBoard == board &&
            n < pca9685_bus::kMaxBurstChannels) {
       const uint16_t off = off_[ch];
       burst[4 * n + 0] = 0;  // ON at tick 0

@@ -13,8 +13,14 @@
 
 class Pca9685Output {
  public:
-  static constexpr uint8_t kChannels = strider::kMaxPcaBoards * strider::kPcaChannelsPerBoard;
+  static constexpr uint8_t kMaxChannels = strider::kMaxPcaBoards * strider::kPcaChannelsPerBoard;
   static constexpr uint16_t kFullOff = 0x1000;  // LEDn_OFF_H bit 4
+
+  //! The shadow is the caller's: `channels` entries (at most kMaxChannels),
+  //! 16 per board its model uses, so that a one-board robot keeps no shadow
+  //! of a second board. Writes to other channels are ignored.
+  Pca9685Output(uint16_t* shadow, uint8_t channels)
+      : off_(shadow), channels_(channels <= kMaxChannels ? channels : kMaxChannels) {}
 
   //! Starts the bus and the boards; false when a board did not answer.
   bool begin(uint8_t boards);
@@ -30,12 +36,13 @@ class Pca9685Output {
 
  private:
   void set(uint8_t channel, uint16_t off) {
-    if (channel >= kChannels || off_[channel] == off) return;
+    if (channel >= channels_ || off_[channel] == off) return;
     off_[channel] = off;
     dirty_ |= uint32_t(1) << channel;
   }
 
-  uint16_t off_[kChannels];
+  uint16_t* off_;
+  uint8_t channels_;
   uint32_t dirty_ = 0;
   uint16_t bytes_ = 0;
   uint16_t errors_ = 0;

@@ -2,13 +2,14 @@
 // reply goes to the port its line came from, a notice to both. Lines end in
 // CR LF (what the phone terminal apps expect).
 //
-// Nothing here waits for the UART: what does not fit the core's 64-byte
-// transmit buffer waits in a 192-byte ring per port and is handed over by
-// poll() as the buffer drains (a 230-byte status line takes 0.24 s at 9600
-// baud: written blocking, it would stall twelve control ticks). Only a ring
-// that is full makes send_line() wait (a client sending lines faster than
-// their replies can go out); that wait keeps the watchdog fed, since the UART
-// always empties the buffer, and the missed ticks count as overruns.
+// What does not fit the core's 64-byte transmit buffer waits in a ring and is
+// handed over by poll() as the buffer drains. The Bluetooth ring has 192
+// bytes: a 235-byte status line takes 0.25 s at 9600 baud, and written
+// blocking it would stall twelve control ticks. The USB ring has 48 (RAM):
+// at 115200 baud the longest line (237 bytes) waits at most about 11 ms for
+// the UART, within the 20 ms tick period. Only a ring that is full makes send_line()
+// wait; that wait keeps the watchdog fed, since the UART always empties the
+// buffer, and ticks missed by whole periods count as overruns.
 #ifndef STRIDER_SERIAL_LINK_H
 #define STRIDER_SERIAL_LINK_H
 
@@ -31,8 +32,10 @@ class SerialLink {
   }
 
  private:
+  // One ring's code for both sizes (a template would duplicate it in flash).
   class Ring {
    public:
+    Ring(char* buf, uint8_t size) : buf_(buf), size_(size) {}
     void put_line(HardwareSerial& s, const char* line) {
       for (const char* p = line; *p != 0; ++p) put(s, *p);
       put(s, '\r');
@@ -41,33 +44,36 @@ class SerialLink {
     void drain(HardwareSerial& s) {
       while (len_ > 0 && s.availableForWrite() > 0) {
         s.write(uint8_t(buf_[head_]));
-        head_ = uint8_t((head_ + 1) % kSize);
+        head_ = uint8_t(head_ + 1 == size_ ? 0 : head_ + 1);
         --len_;
       }
     }
 
    private:
-    static constexpr uint8_t kSize = 192;  // with the UART's 64: the longest reply (status)
     void put(HardwareSerial& s, char c) {
       drain(s);
       if (len_ == 0 && s.availableForWrite() > 0) {  // nothing queued: straight to the UART
         s.write(uint8_t(c));
         return;
       }
-      while (len_ == kSize) {  // full: the only place that waits, and it always
+      while (len_ == size_) {  // full: the only place that waits, and it always
         wdt_reset();           // progresses (the UART sends a byte per ms at 9600 baud)
         drain(s);
       }
-      buf_[(head_ + len_) % kSize] = c;
+      const uint16_t at = uint16_t(head_) + len_;
+      buf_[at >= size_ ? at - size_ : at] = c;
       ++len_;
     }
-    char buf_[kSize];
+    char* buf_;
+    uint8_t size_;
     uint8_t head_ = 0;
     uint8_t len_ = 0;
   };
 
-  Ring usb_;
-  Ring bluetooth_;
+  char usb_buf_[48];         // 115200 baud: a long line waits <= ~11 ms for the UART
+  char bluetooth_buf_[192];  // with the UART's 64: the longest reply (status) at 9600 baud
+  Ring usb_{usb_buf_, sizeof usb_buf_};
+  Ring bluetooth_{bluetooth_buf_, sizeof bluetooth_buf_};
 };
 
 #endif

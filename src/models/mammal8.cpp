@@ -1,5 +1,6 @@
 // Entry point of the mammal8 firmware (PlatformIO env:mammal8, CMake strider_firmware_mammal8):
-// the whole firmware, compiled for this model and its planar legs alone.
+// the whole firmware, compiled for this model, its planar legs alone and four legs of walking state.
 #define STRIDER_FIRMWARE_MODEL strider::kMammal8
 #define STRIDER_LEG_KINDS (1u << uint8_t(strider::LegKind::kPlanar))
+#define STRIDER_WALKER_LEGS 4  // walking state for four legs, not six
 #include "../firmware_main.h"

@@ -64,7 +64,7 @@ int main() {
   strider::load_settings(g_store, &s);
   strider::save_settings(g_store, s);
   strider::Calibration cal(s);
-  cal.start();
+  cal.start(s);
   cal.set_trim(1, 20);
   cal.save(g_store, s);
   g_timing.configure(s.pca_osc_hz, s.pwm_hz);

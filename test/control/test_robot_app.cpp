@@ -5,6 +5,7 @@
 // pose/height refusals that change nothing. Every model, float and Fixed.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <map>
 #include <string>
 #include <vector>
@@ -274,7 +275,7 @@ TEST(RobotAppGaitParams, ReplaceTheDefaultsOrChangeNothing) {
   ASSERT_TRUE(r.app->set_gait_params(p));
   EXPECT_NEAR(double(r.app->motion().walker().engine().config().step_height_mm), double(p.step_height_mm), 1e-4);
   strider::GaitParams bad = p;
-  bad.default_gait = "gallop";
+  std::strcpy(bad.default_gait, "gallop");  // a name of no gait (fits kGaitNameBytes)
   EXPECT_FALSE(r.app->set_gait_params(bad));
   EXPECT_NEAR(double(r.app->motion().walker().engine().config().step_height_mm), double(p.step_height_mm), 1e-4);
   r.run_ms(strider::kSoftStartStepMs * 6 + 3000);

@@ -162,35 +162,38 @@ TEST(SettingsStore, WriteFailuresReported) {
 
 TEST(Calibration, AbortRestoresSaveKeeps) {
   FakeStore store;
-  const Settings saved = sample_settings();
+  Settings saved = sample_settings();  // the caller's settings in force (the controller's)
   ASSERT_EQ(strider::save_settings(store, saved), SettingsStatus::kOk);
   strider::Calibration cal(saved);
   EXPECT_EQ(cal.set_trim(0, 10), strider::CalStatus::kNotActive);
-  cal.start();
+  cal.start(saved);
   EXPECT_EQ(cal.set_trim(0, 123), strider::CalStatus::kOk);
   EXPECT_EQ(cal.set_trim(18, 0), strider::CalStatus::kOutOfRange);
   EXPECT_EQ(cal.set_trim(1, -301), strider::CalStatus::kOutOfRange);
   EXPECT_EQ(cal.set_oscillator(24500000), strider::CalStatus::kOk);
   EXPECT_EQ(cal.live().trim_decideg[0], 123);
-  cal.abort();
+  cal.abort(saved);
   EXPECT_TRUE(same(cal.live(), saved));
   EXPECT_FALSE(cal.active());
 
-  cal.start();
+  cal.start(saved);
   ASSERT_EQ(cal.set_trim(5, -45), strider::CalStatus::kOk);
   ASSERT_EQ(cal.set_oscillator(26500000), strider::CalStatus::kOk);
   EXPECT_EQ(cal.save(store, saved), strider::CalStatus::kOk);
+  EXPECT_FALSE(cal.active());
   Settings back{};
   ASSERT_EQ(strider::load_settings(store, &back), SettingsStatus::kOk);
   EXPECT_EQ(back.trim_decideg[5], -45);
   EXPECT_EQ(back.pca_osc_hz, 26500000u);
-  cal.start();
+  EXPECT_TRUE(same(cal.live(), back));  // live() is what was saved
+  saved = cal.live();                   // as the controller keeps it
+  cal.start(saved);
   cal.set_trim(5, 99);
-  cal.abort();
+  cal.abort(saved);
   EXPECT_EQ(cal.live().trim_decideg[5], -45);  // abort goes back to the last save
 
   store.fail_at_write = store.writes;  // next save fails: calibration stays active, live kept
-  cal.start();
+  cal.start(saved);
   cal.set_trim(2, 7);
   EXPECT_EQ(cal.save(store, saved), strider::CalStatus::kStoreFailed);
   EXPECT_TRUE(cal.active());

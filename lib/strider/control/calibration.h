@@ -1,6 +1,8 @@
 //! Calibration: live per-joint trims and oscillator edited over Bluetooth,
 //! with save (write to the store) and abort (restore what was saved).
 //! The controller applies live() to the servo map while calibration is active.
+//! The saved values are the caller's (the controller's settings in force):
+//! start() and abort() take them, so that no second copy stays in RAM.
 #ifndef STRIDER_CONTROL_CALIBRATION_H
 #define STRIDER_CONTROL_CALIBRATION_H
 
@@ -20,9 +22,13 @@ enum class CalStatus : uint8_t {
 class Calibration {
  public:
   //! Starts from the settings in force (normally what load_settings gave).
-  explicit Calibration(const Settings& saved) : saved_(saved), live_(saved) {}
+  explicit Calibration(const Settings& saved) : live_(saved) {}
 
-  void start() { active_ = true; live_ = saved_; }
+  //! Starts editing from `saved`, the settings in force.
+  void start(const Settings& saved) {
+    active_ = true;
+    live_ = saved;
+  }
   bool active() const { return active_; }
 
   CalStatus set_trim(uint8_t joint, int16_t decideg) {
@@ -46,8 +52,9 @@ class Calibration {
     return CalStatus::kOk;
   }
 
-  //! Writes the live values (with the other settings taken from `others`) and
-  //! makes them the saved ones. On a store failure calibration stays active.
+  //! Writes the live values (with the other settings taken from `others`);
+  //! live() is then what was saved, for the caller to keep as its settings.
+  //! On a store failure calibration stays active.
   template <typename Store>
   CalStatus save(Store& store, const Settings& others) {
     if (!active_) return CalStatus::kNotActive;
@@ -56,20 +63,20 @@ class Calibration {
     s.pwm_hz = live_.pwm_hz;
     for (uint8_t i = 0; i < kMaxServoJoints; ++i) s.trim_decideg[i] = live_.trim_decideg[i];
     if (save_settings(store, s) != SettingsStatus::kOk) return CalStatus::kStoreFailed;
-    saved_ = s;
     live_ = s;
     active_ = false;
     return CalStatus::kOk;
   }
 
-  //! Ends calibration and restores the saved trims and oscillator.
-  void abort() { live_ = saved_; active_ = false; }
+  //! Ends calibration and goes back to `saved`, the settings in force.
+  void abort(const Settings& saved) {
+    live_ = saved;
+    active_ = false;
+  }
 
-  const Settings& live() const { return live_; }    //!< values to drive the servos with
-  const Settings& saved() const { return saved_; }  //!< values last saved / loaded
+  const Settings& live() const { return live_; }  //!< values to drive the servos with
 
  private:
-  Settings saved_;
   Settings live_;
   bool active_ = false;
 };

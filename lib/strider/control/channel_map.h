@@ -56,7 +56,7 @@ constexpr int8_t joint_direction(const RobotModel& m, uint8_t leg, uint8_t j) {
 //! The servo channel of joint j of leg `leg` in scalar S.
 template <typename S>
 ServoChannel<S> make_joint_channel(const RobotModel& m, uint8_t leg, uint8_t j) {
-  const ServoSpec spec = servo_spec(m.servo[j]);
+  const ServoTravel spec = servo_travel(m.servo[j]);
   const JointRange& r = m.legs[leg].joint[j];
   const double half_range = 0.5 * (double(r.max_deg) - double(r.min_deg));
   const double centre = 0.5 * double(spec.travel_deg);
@@ -82,7 +82,7 @@ uint8_t make_channel_map(const RobotModel& m, ServoChannel<S>* out) {
   for (uint8_t leg = 0; leg < m.leg_count; ++leg)
     for (uint8_t j = 0; j < m.dof(); ++j) {
       const JointRange& r = m.legs[leg].joint[j];
-      if (r.max_deg - r.min_deg > servo_spec(m.servo[j]).travel_deg) return 0;
+      if (r.max_deg - r.min_deg > servo_travel(m.servo[j]).travel_deg) return 0;
       out[leg * m.dof() + j] = make_joint_channel<S>(m, leg, j);
     }
   return m.joint_count();

@@ -49,6 +49,9 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     speed_pct_ = settings_.speed_pct;
     sink_.apply_settings(settings_);
   }
+  //! The same from the settings the store gave (settings_store.h).
+  Controller(Sink& sink, Store& store, const LoadedSettings& loaded)
+      : Controller(sink, store, loaded.settings, loaded.status) {}
 
   //! One received byte at now_ms. Returns true when *w holds a reply line
   //! (without line ending) to send.
@@ -105,6 +108,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   const Twist& command() const { return cmd_; }      //!< operator's velocity
   const Twist& output() const { return out_; }       //!< after avoidance
   const Settings& settings() const { return settings_; }
+  SettingsStatus load_status() const { return load_status_; }
   uint8_t speed_pct() const { return speed_pct_; }
 
  private:
@@ -198,7 +202,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     switch (c.kind) {
       case CommandKind::kCalStart:
         stop();
-        cal_.start();
+        cal_.start(settings_);
         mode_ = RobotMode::kCalibrating;
         w.text(FlashText{text::kOkCalStart});
         return;
@@ -224,14 +228,14 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
       case CommandKind::kCalSave: {
         if (!cal_.active()) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
         if (cal_.save(store_, settings_) != CalStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
-        settings_ = cal_.saved();
+        settings_ = cal_.live();  // what was saved
         mode_ = RobotMode::kStanding;
         w.text(FlashText{text::kOkCalSaved});
         return;
       }
       case CommandKind::kCalAbort:
         if (!cal_.active()) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
-        cal_.abort();
+        cal_.abort(settings_);
         sink_.apply_settings(cal_.live());
         mode_ = RobotMode::kStanding;
         w.text(FlashText{text::kOkCalAborted});

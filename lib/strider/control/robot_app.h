@@ -88,18 +88,24 @@ inline int32_t to_tenths(Fixed v) {
   return t >= 0 ? (t + 32768) >> 16 : -((-t + 32768) >> 16);
 }
 
+//! Where RobotApp's model is: in RAM (host tools, the simulator), or in
+//! flash (the firmware: STRIDER_PROGMEM, no RAM copy of its ~370 bytes; the
+//! configuration reads a copy on the stack, in begin() only).
+enum class ModelMemory : uint8_t { kRam = 0, kFlash = 1 };
+
 template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints>
 class RobotApp {
   class Sink;
 
  public:
   //! Reads the settings from store (EEPROM) but touches no other hardware.
-  RobotApp(const RobotModel& model, Output& out, Store& store)
+  //! The model is read at start-up (begin(), set_gait_params()) only.
+  RobotApp(const RobotModel& model, Output& out, Store& store, ModelMemory where = ModelMemory::kRam)
       : model_(model),
+        model_in_flash_(where == ModelMemory::kFlash),
         out_(out),
-        load_status_(load_settings(store, &loaded_)),
         sink_(*this),
-        controller_(sink_, store, loaded_, load_status_) {}
+        controller_(sink_, store, LoadedSettings(store)) {}
 
   //! Power-up: walker (sitting), servo map, boot notices; the soft start
   //! begins with the first tick. False (and an `err` notice) when the model
@@ -107,8 +113,10 @@ class RobotApp {
   template <typename Link>
   bool begin(uint32_t now_us, Link& link) {
     // The walker's configuration needs the deepest stack of the whole
-    // firmware: nothing else (no line buffer) is on the stack meanwhile.
-    ok_ = motion_.configure(model_) && stage_.configure(model_);
+    // firmware: nothing else (no line buffer) is on the stack meanwhile,
+    // and its copy of the model is gone before announce() runs.
+    ok_ = configure_from_model();
+    if (ok_) motion_.walker().refresh();  // the legs' IK, with the model's copy off the stack
     announce(link);
     if (!ok_) return false;
     stage_.set_settings(controller_.settings());
@@ -125,7 +133,9 @@ class RobotApp {
   //! the walker first: meant for host tools (the AVR stack has no room for it).
   bool set_gait_params(const GaitParams& params) {
     WalkerMotion<S> trial = motion_;
-    if (!trial.configure(model_, params)) return false;
+    RobotModel model;
+    copy_model(&model);
+    if (!trial.configure(model, params)) return false;
     motion_ = trial;
     return true;
   }
@@ -180,7 +190,7 @@ class RobotApp {
   const Controller<Sink, Store, false>& controller() const { return controller_; }
   const WalkerMotion<S>& motion() const { return motion_; }
   const ServoStage<S, kJoints>& servos() const { return stage_; }
-  SettingsStatus load_status() const { return load_status_; }
+  SettingsStatus load_status() const { return controller_.load_status(); }
   uint16_t overruns() const { return overruns_; }
   uint32_t tick_max_us() const { return tick_max_us_; }
 
@@ -212,6 +222,25 @@ class RobotApp {
     RobotApp& app_;
   };
 
+  void copy_model(RobotModel* to) const {
+    if (model_in_flash_) flash_copy(to, &model_, sizeof *to);
+    else *to = model_;
+  }
+
+  //! Walker (legs' IK not yet solved) and servo stage from (a copy of) the
+  //! model; keeps its name and board count for announce().
+  STRIDER_NOINLINE bool configure_from_model() {
+    RobotModel model;
+    copy_model(&model);
+    name_ = model.name;
+    boards_ = pca_board_count(model);
+    GaitParams params;
+    return gait_params_of(model, &params) && motion_.configure(model, params, false) && configure_stage(model);
+  }
+  // Not inlined: the channel map's temporaries are not on the stack with
+  // the walker's configuration.
+  STRIDER_NOINLINE bool configure_stage(const RobotModel& model) { return stage_.configure(model); }
+
   //! The boot notices: model and boards, how the settings loaded.
   template <typename Link>
   STRIDER_NOINLINE void announce(Link& link) {
@@ -222,12 +251,12 @@ class RobotApp {
       link.send_line(kAllPorts, buf);
       return;
     }
-    w.text(FlashText{app_text::kInfoStrider}).text(model_.name).text(FlashText{app_text::kReady});
-    w.field(FlashText{app_text::kJoints}, stage_.joint_count()).field(FlashText{app_text::kBoards}, pca_board_count(model_));
+    w.text(FlashText{app_text::kInfoStrider}).text(name_).text(FlashText{app_text::kReady});
+    w.field(FlashText{app_text::kJoints}, stage_.joint_count()).field(FlashText{app_text::kBoards}, boards_);
     link.send_line(kAllPorts, buf);
     ReplyWriter e(buf, sizeof buf);
-    e.text(FlashText{app_text::kInfoEeprom}).text(to_flash(load_status_));
-    if (load_status_ != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
+    e.text(FlashText{app_text::kInfoEeprom}).text(to_flash(load_status()));
+    if (load_status() != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
     link.send_line(kAllPorts, buf);
   }
 
@@ -277,10 +306,11 @@ class RobotApp {
     if (stack_probe_ != nullptr) w.field(FlashText{app_text::kStackPeak}, stack_probe_());
   }
 
-  const RobotModel& model_;
+  const RobotModel& model_;  // in RAM or flash (model_in_flash_): read through copy_model() only
+  bool model_in_flash_;
+  const char* name_ = "";    // the model's name (the string is in RAM either way)
+  uint8_t boards_ = 0;       // PCA9685 boards the model uses
   Output& out_;
-  Settings loaded_;
-  SettingsStatus load_status_;
   WalkerMotion<S> motion_;
   ServoStage<S, kJoints> stage_;
   Sink sink_;

@@ -37,7 +37,7 @@ class ServoStage {
     count_ = model.joint_count() <= N ? make_channel_map<S>(model, channels_) : uint8_t(0);
     dof_ = model.dof();
     legs_ = model.leg_count;
-    for (uint8_t j = 0; j < dof_; ++j) speed_deg_s_[j] = servo_speed_deg_s(model.servo[j]);
+    for (uint8_t j = 0; j < dof_; ++j) part_[j] = model.servo[j];
     for (uint8_t k = 0; k < N; ++k) { on_[k] = false; ticks_[k] = 0; }
     enabled_legs_ = 0;
     relax_pending_ = true;
@@ -45,9 +45,12 @@ class ServoStage {
   }
 
   //! Trims now; oscillator and PWM frequency at the next frame (the bus may not
-  //! be up yet when settings are loaded).
+  //! be up yet when settings are loaded). Keeps a pointer, not a copy (RAM):
+  //! s must outlive the stage or the next call (RobotApp passes the
+  //! controller's settings or its calibration's live values), and must be
+  //! given before the first frame.
   void set_settings(const Settings& s) {
-    settings_ = s;
+    settings_ = &s;
     pwm_pending_ = true;
   }
 
@@ -102,7 +105,7 @@ class ServoStage {
       for (uint8_t j = 0; j < dof_; ++j) {
         const uint8_t k = uint8_t(leg * dof_ + j);
         const ServoCommand cmd = fast_ ? tick_map_.map(k, r.q[j])
-                                       : map_joint(channels_[k], r.q[j], trim_from_decideg<S>(settings_.trim_decideg[k]), timing_);
+                                       : map_joint(channels_[k], r.q[j], trim_from_decideg<S>(settings_->trim_decideg[k]), timing_);
         worst_status = worst(worst_status, cmd.status);
         uint16_t next = cmd.ticks;
         if (on_[k]) {
@@ -128,7 +131,7 @@ class ServoStage {
   void apply_pwm(Output& out) {
     pwm_pending_ = false;
     const uint32_t old_period = timing_.period_x64();
-    if (configure_servo_pwm(out, timing_, settings_) == PwmTimingStatus::kBadOscillator) return;
+    if (configure_servo_pwm(out, timing_, *settings_) == PwmTimingStatus::kBadOscillator) return;
     for (uint8_t k = 0; k < count_; ++k) {
       if (!on_[k]) continue;
       // ticks * old / new period, in two 16-bit halves of the period (no 64-bit).
@@ -138,10 +141,11 @@ class ServoStage {
     }
     // The per-joint constants of the fast map (one multiply per joint); a
     // channel it cannot represent keeps the general map_joint() path.
-    fast_ = tick_map_.configure(channels_, count_, settings_, timing_) == ServoTickStatus::kOk;
+    fast_ = tick_map_.configure(channels_, count_, *settings_, timing_) == ServoTickStatus::kOk;
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
-      const float us = speed_deg_s_[j] * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f);
+      const float speed_deg_s = servo_travel(part_[j]).speed_deg_s;  // from flash
+      const float us = speed_deg_s * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f);
       const uint16_t t = timing_.pulse_ticks(uint16_t(us + 0.5f));
       step_[j] = t == 0 ? uint16_t(1) : t;
     }
@@ -153,9 +157,9 @@ class ServoStage {
   uint16_t ticks_[N];
   bool on_[N];
   uint16_t step_[kMaxLegDof] = {1, 1, 1};
-  float speed_deg_s_[kMaxLegDof] = {0.0f, 0.0f, 0.0f};
+  ServoPart part_[kMaxLegDof] = {ServoPart::kSg90, ServoPart::kSg90, ServoPart::kSg90};  // of joint j
   Pca9685Timing timing_;
-  Settings settings_ = default_settings();
+  const Settings* settings_ = nullptr;  // set_settings()
   uint32_t next_leg_ms_ = 0;
   uint8_t count_ = 0;
   uint8_t dof_ = 0;

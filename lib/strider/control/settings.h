@@ -37,6 +37,22 @@ constexpr Settings default_settings() {
 
 //! True for the UART rates the HC-05 AT+UART command accepts that the Mega
 //! can run reliably at 16 MHz.
+//! *s = default_settings(), field by field: a copy of the constant would
+//! keep its 54 bytes in RAM on the AVR (const data is copied to RAM there).
+inline void set_default_settings(Settings* s) {
+  constexpr Settings d = default_settings();
+  s->pca_osc_hz = d.pca_osc_hz;
+  s->pwm_hz = d.pwm_hz;
+  s->baud = d.baud;
+  s->deadman_ms = d.deadman_ms;
+  s->avoid_stop_mm = d.avoid_stop_mm;
+  s->avoid_slow_mm = d.avoid_slow_mm;
+  s->avoid_enabled = d.avoid_enabled;
+  s->speed_pct = d.speed_pct;
+  for (uint8_t i = 0; i < kMaxServoJoints; ++i) s->trim_decideg[i] = 0;
+  static_assert(d.trim_decideg[0] == 0 && d.trim_decideg[kMaxServoJoints - 1] == 0, "default trims are zero");
+}
+
 constexpr bool valid_baud(uint32_t baud) {
   return baud == 9600ul || baud == 19200ul || baud == 38400ul || baud == 57600ul || baud == 115200ul;
 }

@@ -51,7 +51,7 @@ constexpr uint16_t kSettingsRecordBytes = kSettingsHeaderBytes + kSettingsPayloa
 //! afterwards: the record on kOk, the factory defaults otherwise.
 template <typename Store>
 SettingsStatus load_settings(const Store& store, Settings* out, uint16_t base = 0) {
-  *out = default_settings();
+  set_default_settings(out);
   if (uint32_t(base) + kSettingsRecordBytes > store.size()) return SettingsStatus::kNoSpace;
   uint8_t rec[kSettingsRecordBytes];
   bool erased = true;
@@ -74,6 +74,15 @@ SettingsStatus load_settings(const Store& store, Settings* out, uint16_t base = 
   *out = s;
   return SettingsStatus::kOk;
 }
+
+//! What load_settings() gave, with its status: handed to a constructor as a
+//! temporary, so that no copy of the settings stays in RAM after start-up.
+struct LoadedSettings {
+  Settings settings;
+  SettingsStatus status;
+  template <typename Store>
+  explicit LoadedSettings(const Store& store, uint16_t base = 0) : status(load_settings(store, &settings, base)) {}
+};
 
 //! Writes s at base and reads it back. Refuses invalid settings (kInvalid).
 template <typename Store>

@@ -33,11 +33,12 @@ class WalkerMotion {
 
   //! The same with other gait parameters (e.g. tuned ones), sitting; the
   //! velocity limits are searched unless `params` are the model's defaults.
-  bool configure(const RobotModel& model, const GaitParams& params) {
-    const GaitTable* gait = find_gait(model, params.default_gait);
-    if (gait == nullptr || !walker_.configure(model, *gait, params, params.shape, true)) return false;
-    model_ = &model;
-    gait_ = gait;
+  //! solve_now false: the legs' IK waits for walker().refresh().
+  bool configure(const RobotModel& model, const GaitParams& params, bool solve_now = true) {
+    GaitTable gait;
+    if (!load_gait(model, params.default_gait, &gait) ||
+        !walker_.configure(model, gait, params, params.shape, true, solve_now))
+      return false;
     offsets_ = BodyOffsets<S>::zero();
     have_command_ = false;
     stand_height_mm_ = -walker_.engine().config().home[0].z;
@@ -46,7 +47,7 @@ class WalkerMotion {
 
   Walker<S>& walker() { return walker_; }
   const Walker<S>& walker() const { return walker_; }
-  const GaitTable& gait() const { return *gait_; }
+  const GaitTable& gait() const { return walker_.engine().gait(); }
 
   //! Protocol velocity -> engine command (the controller applied the speed %).
   //! The controller repeats its command every tick: an unchanged one is not
@@ -69,7 +70,8 @@ class WalkerMotion {
   //! the legs are nearest to and stand up from there.
   void sit_now() {
     have_command_ = false;
-    walker_.configure(*model_, *gait_, walker_.engine().config(), true);
+    const GaitTable gait = walker_.engine().gait();  // a copy: restart() overwrites the engine's
+    walker_.restart(gait, walker_.engine().config(), true);
     walker_.engine().set_body_offsets(offsets_);
   }
 
@@ -79,10 +81,9 @@ class WalkerMotion {
 
   //! Switches gait by name, also while walking; false: no such gait here.
   bool set_gait(const char* name) {
-    const GaitTable* g = find_gait(*model_, name);
-    if (g == nullptr) return false;
-    gait_ = g;
-    walker_.engine().set_gait(*g);
+    GaitTable g;
+    if (!load_gait(walker_.leg_count(), name, &g)) return false;
+    walker_.engine().set_gait(g);
     return true;
   }
 
@@ -134,8 +135,6 @@ class WalkerMotion {
   }
 
   Walker<S> walker_;
-  const RobotModel* model_ = nullptr;
-  const GaitTable* gait_ = nullptr;
   BodyOffsets<S> offsets_ = BodyOffsets<S>::zero();
   S stand_height_mm_ = S(0);
   Twist last_{0, 0, 0};

@@ -20,7 +20,7 @@ inline bool velocity_limits_known(const RobotModel& model, const GaitParams& par
 template <typename S>
 struct GaitConfig {
   uint8_t leg_count = 0;
-  Vec3<S> home[kMaxLegs];       //!< standing feet, body frame [mm]
+  Vec3<S> home[kWalkerLegs];       //!< standing feet, body frame [mm]
   SwingShape shape = SwingShape::kEllipse;
   S step_height_mm = S(0);      //!< swing apex [mm]
   S stance_depth_mm = S(0);     //!< [mm]
@@ -41,7 +41,7 @@ struct GaitConfig {
   bool shift_x_only = false;    //!< planar legs: the body can only shift along x
   uint8_t min_support = 2;      //!< never lift a foot if fewer would stay down
   int8_t unit_shift = 0;        //!< working units of the support polygon (stability.h)
-  S edge_mm[kMaxLegs];          //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
+  S edge_mm[kWalkerLegs];          //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
   VelocityLimits<S> limits;
 };
 
@@ -59,6 +59,10 @@ enum class LimitsSource : uint8_t {
 template <typename S>
 void fill_gait_config(GaitConfig<S>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
                       SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {
+  if (model.leg_count > kWalkerLegs) {  // more legs than this build's walker holds
+    c.leg_count = 0;
+    return;
+  }
   c.leg_count = model.leg_count;
   S reach = S(0);
   for (uint8_t i = 0; i < model.leg_count; ++i) {

@@ -194,6 +194,8 @@ class GaitEngine {
   //! The share of a leg's longest stride beyond which a foot is at its edge.
   static constexpr double edge_share() { return kEdgeShare; }
   const GaitTable& table() const { return table_; }
+  //! The gait as given to configure() or set_gait() (table() may be relabelled).
+  const GaitTable& gait() const { return base_; }
   const GaitConfig<S>& config() const { return cfg_; }
   const SupportPolygon<S>& support() const {
     if (support_dirty_) build_support();
@@ -280,7 +282,7 @@ class GaitEngine {
   //! The touch-down points changed: every swinging foot steers again.
   void invalidate_touchdown() {
     td_fresh_ = false;
-    for (uint8_t i = 0; i < kMaxLegs; ++i) settled_[i] = false;
+    for (uint8_t i = 0; i < kWalkerLegs; ++i) settled_[i] = false;
   }
 
   static constexpr uint8_t kNoGroup = 0xFF;
@@ -289,7 +291,7 @@ class GaitEngine {
   GaitConfig<S> cfg_;
   GaitTable base_{};   // as given
   GaitTable table_{};  // as walked (relabelled)
-  Phase16 offset_[kMaxLegs] = {};
+  Phase16 offset_[kWalkerLegs] = {};
   uint32_t swing_len_ = 0;
   S duty_ = scalar<S>(0.5), inv_swing_ = S(2), inv_stance_ = S(2);
   Phase16 start_phase_ = 0;
@@ -308,22 +310,22 @@ class GaitEngine {
   S vx_ = S(0), vy_ = S(0), wz_ = S(0), hz_ = S(1);
 
   PhaseClock clock_;
-  Vec3<S> foot_[kMaxLegs];
-  bool contact_[kMaxLegs] = {};
-  bool pending_[kMaxLegs] = {};
-  Vec3<S> lift_[kMaxLegs];
-  Vec3<S> target_[kMaxLegs];
-  S apex_[kMaxLegs];
-  S leg_inv_swing_[kMaxLegs];
-  uint32_t leg_swing_len_[kMaxLegs] = {};
-  uint32_t swing_elapsed_[kMaxLegs] = {};
-  int32_t stance_elapsed_[kMaxLegs] = {};  // phase since touch-down (may start negative)
+  Vec3<S> foot_[kWalkerLegs];
+  bool contact_[kWalkerLegs] = {};
+  bool pending_[kWalkerLegs] = {};
+  Vec3<S> lift_[kWalkerLegs];
+  Vec3<S> target_[kWalkerLegs];
+  S apex_[kWalkerLegs];
+  S leg_inv_swing_[kWalkerLegs];
+  uint32_t leg_swing_len_[kWalkerLegs] = {};
+  uint32_t swing_elapsed_[kWalkerLegs] = {};
+  int32_t stance_elapsed_[kWalkerLegs] = {};  // phase since touch-down (may start negative)
 
   mutable SupportPolygon<S> support_;
   mutable bool support_dirty_ = true;
   SupportPolygon<S> next_support_;
-  S edge_r2_[kMaxLegs] = {};  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
-  bool settled_[kMaxLegs] = {};  // swinging foot's touch-down point already at touchdown(i)
+  S edge_r2_[kWalkerLegs] = {};  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
+  bool settled_[kWalkerLegs] = {};  // swinging foot's touch-down point already at touchdown(i)
   bool vel_fresh_ = false;       // vx_, vy_, wz_ are now_s_ x hz_
   // Odometry step in the world frame, kept while the body does not turn.
   S odo_dx_ = S(0), odo_dy_ = S(0), odo_wx_ = S(0), odo_wy_ = S(0);

@@ -19,7 +19,7 @@ void GaitEngine<S>::step_walk(S dt) {
   // A foot on the ground at the edge of its reach that this step would take
   // farther out holds the body for this tick (it lifts as soon as it can).
   held_ = false;
-  bool edge[kMaxLegs] = {};
+  bool edge[kWalkerLegs] = {};
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
   for (uint8_t i = 0; i < cfg_.leg_count && !held_; ++i) {
     if (!edge[i]) continue;
@@ -56,7 +56,7 @@ void GaitEngine<S>::step_walk(S dt) {
   const uint32_t delta = Phase16(clock_.now() - clock_.before());
   const uint8_t n = cfg_.leg_count;
   bool changed = false;
-  bool landed[kMaxLegs] = {};
+  bool landed[kWalkerLegs] = {};
   // Touch-downs first, so a foot landing this tick counts as support.
   for (uint8_t i = 0; i < n; ++i) {
     if (contact_[i]) continue;
@@ -198,7 +198,7 @@ void GaitEngine<S>::step_shift(S dt) {
     if (lead != window_group_) {
       window_group_ = lead;
       if (lead != kNoGroup) {
-        bool stays[kMaxLegs];
+        bool stays[kWalkerLegs];
         for (uint8_t i = 0; i < n; ++i) stays[i] = contact_[i] && offset_[i] != offset_[lead];
         next_support_.build(foot_, stays, n, cfg_.foot_radius_mm, cfg_.unit_shift);
         const Phase16 len = Phase16(Phase16(now + ahead) - window_start_);

@@ -9,7 +9,21 @@
 
 #include <string.h>
 
+#include "../math/flash_table.h"
 #include "gait_table.h"
+
+//! STRIDER_GAITS_IN_FLASH 1 (the firmware, firmware_main.h): the gait tables
+//! and their lists are in flash on the AVR (no RAM for the seven tables) and
+//! only load_gait() reads them; find_gait() and gaits_for() are not built.
+//! Default 0: plain constants (host tools, benchmarks).
+#ifndef STRIDER_GAITS_IN_FLASH
+#define STRIDER_GAITS_IN_FLASH 0
+#endif
+#if STRIDER_GAITS_IN_FLASH
+#define STRIDER_GAIT_STORAGE STRIDER_PROGMEM
+#else
+#define STRIDER_GAIT_STORAGE
+#endif
 
 namespace strider {
 
@@ -19,13 +33,13 @@ namespace strider {
 //! swings give the body time to carry its CoM into the next support
 //! triangle (seed 003 section 3; duty >= 0.75 is the least for one leg at a
 //! time, McGhee and Frank's creeping gait).
-constexpr GaitTable kGaitWalk = {"walk", 4, 0.85f, {0.25f, 0.75f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
+constexpr GaitTable kGaitWalk STRIDER_GAIT_STORAGE = {"walk", 4, 0.85f, {0.25f, 0.75f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
 
 //! Trot, seed 003 section 4 C: diagonal pairs (LF + RH, LH + RF) alternate.
-constexpr GaitTable kGaitTrot = {"trot", 4, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, false, false};
+constexpr GaitTable kGaitTrot STRIDER_GAIT_STORAGE = {"trot", 4, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, false, false};
 
 //! Pace, seed 003 section 4 B: lateral pairs (LF + LH, RH + RF) alternate.
-constexpr GaitTable kGaitPace = {"pace", 4, 0.5f, {0.0f, 0.0f, 0.5f, 0.5f, 0.0f, 0.0f}, false, false};
+constexpr GaitTable kGaitPace STRIDER_GAIT_STORAGE = {"pace", 4, 0.5f, {0.0f, 0.0f, 0.5f, 0.5f, 0.0f, 0.0f}, false, false};
 
 //! Seed 000 section 3.3's six-step crawl (A stand, B lift one diagonal
 //! pair, C move the body on the other pair, D swap the pairs, E move the
@@ -37,20 +51,20 @@ constexpr GaitTable kGaitPace = {"pace", 4, 0.5f, {0.0f, 0.0f, 0.5f, 0.5f, 0.0f,
 //! its CoM from one support diagonal to the other. With two point feet the
 //! support "polygon" is a line: the wide feet (foot_radius_mm in
 //! gait_params.h) make it a strip the CoM can stay in.
-constexpr GaitTable kGaitCrawl = {"crawl", 4, 2.0f / 3.0f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
+constexpr GaitTable kGaitCrawl STRIDER_GAIT_STORAGE = {"crawl", 4, 2.0f / 3.0f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
 
 //! Tripod: alternating tripods {front left, rear left, middle right} and
 //! {middle left, rear right, front right}.
-constexpr GaitTable kGaitTripod = {"tripod", 6, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.5f}, false, false};
+constexpr GaitTable kGaitTripod STRIDER_GAIT_STORAGE = {"tripod", 6, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.5f}, false, false};
 
 //! Ripple: a back-to-front wave on each side, the sides half a cycle
 //! apart; two legs in the air at a time, each for a third of the cycle.
-constexpr GaitTable kGaitRipple = {
+constexpr GaitTable kGaitRipple STRIDER_GAIT_STORAGE = {
     "ripple", 6, 2.0f / 3.0f, {2.0f / 3.0f, 1.0f / 3.0f, 0.0f, 0.5f, 5.0f / 6.0f, 1.0f / 6.0f}, false, false};
 
 //! Wave: one leg at a time, rear to front on the left, then rear to front
 //! on the right; five feet always down.
-constexpr GaitTable kGaitWave = {
+constexpr GaitTable kGaitWave STRIDER_GAIT_STORAGE = {
     "wave", 6, 5.0f / 6.0f, {2.0f / 6.0f, 1.0f / 6.0f, 0.0f, 3.0f / 6.0f, 4.0f / 6.0f, 5.0f / 6.0f}, false, false};
 
 static_assert(gait_table::valid(kGaitWalk) && gait_table::valid(kGaitTrot) && gait_table::valid(kGaitPace) &&
@@ -73,10 +87,48 @@ struct GaitList {
 };
 
 namespace gait_library_detail {
-constexpr const GaitTable* kQuadruped[] = {&kGaitWalk, &kGaitTrot, &kGaitPace, &kGaitCrawl};
-constexpr const GaitTable* kHexapod[] = {&kGaitTripod, &kGaitRipple, &kGaitWave};
+constexpr const GaitTable* kQuadruped[] STRIDER_GAIT_STORAGE = {&kGaitWalk, &kGaitTrot, &kGaitPace, &kGaitCrawl};
+constexpr const GaitTable* kHexapod[] STRIDER_GAIT_STORAGE = {&kGaitTripod, &kGaitRipple, &kGaitWave};
+//! A name in RAM equal to one in flash (strcmp_P, without avr/pgmspace.h).
+inline bool same_as_flash(const char* name, const char* flash_name) {
+  for (uint8_t i = 0;; ++i) {
+    const char c = char(flash_u8(flash_name + i));
+    if (c != name[i]) return false;
+    if (c == 0) return true;
+  }
+}
 }  // namespace gait_library_detail
 
+//! The gait called `name` with `leg_count` legs into *out (copied out of
+//! flash when the tables are there); false (out untouched) when there is none.
+inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
+  if (name == nullptr) return false;
+  const GaitTable* const* items = leg_count == 4   ? gait_library_detail::kQuadruped
+                                  : leg_count == 6 ? gait_library_detail::kHexapod
+                                                   : nullptr;
+  const uint8_t count = leg_count == 4 ? 4 : leg_count == 6 ? 3 : 0;
+  for (uint8_t i = 0; i < count; ++i) {
+#if STRIDER_GAITS_IN_FLASH && defined(__AVR__)
+    static_assert(sizeof(const GaitTable*) == 2, "AVR data pointers are 16-bit");
+    const GaitTable* g = reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i));
+    if (!gait_library_detail::same_as_flash(name, g->name)) continue;
+    flash_copy(out, g, sizeof *out);
+#else
+    const GaitTable* g = items[i];
+    if (strcmp(g->name, name) != 0) continue;
+    *out = *g;
+#endif
+    return true;
+  }
+  return false;
+}
+
+//! The gait called `name` that `model` supports into *out; false when none.
+inline bool load_gait(const RobotModel& model, const char* name, GaitTable* out) {
+  return load_gait(model.leg_count, name, out);
+}
+
+#if !STRIDER_GAITS_IN_FLASH
 //! The gaits for a body with `leg_count` legs (none for other counts).
 constexpr GaitList gaits_for_legs(uint8_t leg_count) {
   return leg_count == 4   ? GaitList{gait_library_detail::kQuadruped, 4}
@@ -95,6 +147,7 @@ inline const GaitTable* find_gait(const RobotModel& model, const char* name) {
     if (strcmp(list.items[i]->name, name) == 0) return list.items[i];
   return nullptr;
 }
+#endif
 
 }  // namespace strider
 

@@ -12,13 +12,19 @@
 
 #include "../math/flash_table.h"
 #include "../robots/all_robots.h"
+#include "gait_table.h"
 #include "swing_trajectory.h"
 
 namespace strider {
 
+//! Longest model name in GaitParams, its terminating zero included.
+constexpr uint8_t kRobotNameBytes = 10;
+
 struct GaitParams {
-  const char* robot;          //!< model name (kAllRobots order)
-  const char* default_gait;   //!< gait used when none is named
+  // Arrays, not pointers: kGaitParams is in flash on the AVR, and so are its
+  // names (pointers would keep the strings in RAM).
+  char robot[kRobotNameBytes];         //!< model name (kAllRobots order)
+  char default_gait[kGaitNameBytes];   //!< gait used when none is named
   SwingShape shape;           //!< default swing trajectory
   float step_height_mm;       //!< swing apex above the ground [mm]
   float step_length_mm;       //!< preferred stride [mm]: faster walking raises the step rate first

@@ -21,8 +21,13 @@
 
 namespace strider {
 
+//! Longest gait name, its terminating zero included.
+constexpr uint8_t kGaitNameBytes = 7;
+
 struct GaitTable {
-  const char* name;          //!< CLI name, e.g. "walk"
+  //! CLI name, e.g. "walk". An array, not a pointer: a table kept in flash
+  //! (gait_library.h) keeps its name there too.
+  char name[kGaitNameBytes];
   uint8_t leg_count;         //!< 4 or 6
   float duty;                //!< fraction of the cycle each foot is on the ground, (0, 1)
   float offset[kMaxLegs];    //!< lift-off phase of each leg, [0, 1); unused slots 0

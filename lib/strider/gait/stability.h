@@ -39,13 +39,13 @@ class SupportPolygon {
     shift_ = shift;
     radius_ = foot_radius_mm;
     count_ = 0;
-    uint8_t pts[kMaxLegs];
+    uint8_t pts[kWalkerLegs];
     uint8_t m = 0;
-    for (uint8_t i = 0; i < n && i < kMaxLegs; ++i)
+    for (uint8_t i = 0; i < n && i < kWalkerLegs; ++i)
       if (contact[i]) pts[m++] = i;
     if (m == 0) return;
     // The feet in working units once (the wrapping visits each many times).
-    Vec3<S> pu[kMaxLegs];
+    Vec3<S> pu[kWalkerLegs];
     for (uint8_t k = 0; k < m; ++k) pu[pts[k]] = at(feet, pts[k]);
     // Gift wrapping from the lowest-x (then lowest-y) foot, counter-clockwise.
     uint8_t start = pts[0];
@@ -68,7 +68,7 @@ class SupportPolygon {
       current = next;
     } while (current != start && count_ < m);
     if (count_ == 2 && dist2(pu, idx_[0], idx_[1]) == S(0)) count_ = 1;
-    Vec3<S> e[kMaxLegs];
+    Vec3<S> e[kWalkerLegs];
     for (uint8_t k = 0; k < count_; ++k) {
       e[k] = pu[idx_[next(k)]] - pu[idx_[k]];
       const S len = sqrt(e[k].x * e[k].x + e[k].y * e[k].y);
@@ -122,8 +122,8 @@ class SupportPolygon {
   //! nearest x the region allows on its line y (the middle if none does).
   void constrain(const Vec3<S>* feet, S& x_mm, S& y_mm, S want_mm, bool x_only) const {
     if (count_ == 0) return;
-    Vec3<S> v[kMaxLegs], u[kMaxLegs];
-    S len[kMaxLegs];
+    Vec3<S> v[kWalkerLegs], u[kWalkerLegs];
+    S len[kWalkerLegs];
     const uint8_t n = region(feet, unit(want_mm), v, u, len);
     const Vec3<S> p(unit(x_mm), unit(y_mm), S(0));
     Vec3<S> q = p;
@@ -208,7 +208,7 @@ class SupportPolygon {
     }
     const S shrink = max_of(want - r, S(0));
     // The vertices in working units once (each is in two edges).
-    Vec3<S> a[kMaxLegs];
+    Vec3<S> a[kWalkerLegs];
     for (uint8_t k = 0; k < count_; ++k) a[k] = at(feet, idx_[k]);
     for (uint8_t k = 0; k < count_; ++k) {
       u[k] = (a[next(k)] - a[k]) * inv_len_[k];
@@ -257,9 +257,9 @@ class SupportPolygon {
   }
 
   uint8_t count_ = 0;
-  uint8_t idx_[kMaxLegs] = {};
-  S inv_len_[kMaxLegs] = {};
-  S corner_[kMaxLegs] = {};  //!< vertex k of the shrunk polygon: a_k + d (n_k + corner_k u_k)
+  uint8_t idx_[kWalkerLegs] = {};
+  S inv_len_[kWalkerLegs] = {};
+  S corner_[kWalkerLegs] = {};  //!< vertex k of the shrunk polygon: a_k + d (n_k + corner_k u_k)
   S radius_ = S(0);
   int8_t shift_ = 0;
 };

@@ -43,13 +43,15 @@ class Walker {
  public:
   //! Builds the legs, the configuration (velocity limits: a few thousand IK
   //! calls) and the engine. Returns false for a gait of another leg count,
-  //! or velocity limits this build cannot give (gait_config.h).
+  //! or velocity limits this build cannot give (gait_config.h). solve_now
+  //! false leaves the legs' IK to a later refresh() (the firmware's start-up
+  //! solves them once its copy of the model is off the stack).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
-                 bool sitting = false) {
-    if (gait.leg_count != model.leg_count || !velocity_limits_known(model, params, shape) || !build_legs(model))
+                 bool sitting = false, bool solve_now = true) {
+    if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || !velocity_limits_known(model, params, shape) || !build_legs(model))
       return false;
     engine_.configure(model, legs_, params, shape, gait, sitting);  // the configuration built in place
-    reset_legs(model);
+    reset_legs(solve_now);
     return true;
   }
 
@@ -57,10 +59,21 @@ class Walker {
   //! search, so a robot can switch configurations quickly.
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>& config,
                  bool sitting = false) {
-    if (gait.leg_count != model.leg_count || config.leg_count != model.leg_count) return false;
+    if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || config.leg_count != model.leg_count)
+      return false;
     if (model_ != &model && !build_legs(model)) return false;
     engine_.configure(config, gait, sitting);
-    reset_legs(model);
+    reset_legs();
+    return true;
+  }
+
+  //! Starts over with the legs built before and `config` (which may be the
+  //! engine's own), without the model: false when no legs are built or the
+  //! leg counts differ.
+  bool restart(const GaitTable& gait, const GaitConfig<S>& config, bool sitting = false) {
+    if (dof_ == 0 || gait.leg_count != config.leg_count || config.leg_count != leg_count()) return false;
+    engine_.configure(config, gait, sitting);
+    reset_legs();
     return true;
   }
 
@@ -68,13 +81,16 @@ class Walker {
   const GaitEngine<S>& engine() const { return engine_; }
   const AnyLeg<S>& leg_model(uint8_t i) const { return legs_[i]; }
   uint8_t leg_count() const { return engine_.leg_count(); }
-  uint8_t dof() const { return model_ == nullptr ? 0 : model_->dof(); }
+  uint8_t dof() const { return dof_; }
 
   //! One control tick of dt [s]: engine, then every leg.
   void tick(S dt) {
     engine_.tick(dt);
     solve();
   }
+
+  //! Every leg's IK for the engine's targets as they are (no tick).
+  void refresh() { solve(); }
 
   const LegResult<S>& leg(uint8_t i) const { return out_[i]; }
   //! A body-frame point [mm] in leg i's frame, as the walker computes it
@@ -156,13 +172,13 @@ class Walker {
     to.z = from.z;
   }
 
-  void reset_legs(const RobotModel& model) {
-    for (uint8_t i = 0; i < model.leg_count; ++i) {
+  void reset_legs(bool solve_now = true) {
+    for (uint8_t i = 0; i < leg_count(); ++i) {
       out_[i].q = typename AnyLeg<S>::Joints();
       for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
       out_[i].foot_mm = engine_.foot(i);
     }
-    solve();
+    if (solve_now) solve();
   }
 
   // LegMount's transforms with fewer products for the usual mounts: turned
@@ -211,22 +227,27 @@ class Walker {
 
   bool build_legs(const RobotModel& model) {
     model_ = nullptr;
+    dof_ = 0;
     for (uint8_t i = 0; i < model.leg_count; ++i) {
       if (!AnyLeg<S>::from_model(model, i, legs_[i])) return false;
       turn_[i] = turn_of(legs_[i].mount());
     }
     proj_ = ReachProjection<S>::make(model);
     model_ = &model;
+    dof_ = model.dof();
     return true;
   }
 
+  // Which model the legs were built from: compared by configure(), never
+  // read (the model may have been a copy that is gone, robot_app.h).
   const RobotModel* model_ = nullptr;
-  AnyLeg<S> legs_[kMaxLegs];
-  uint8_t turn_[kMaxLegs] = {};  // MountTurn of each leg's mount
+  uint8_t dof_ = 0;  // joints per leg; 0 before the legs are built
+  AnyLeg<S> legs_[kWalkerLegs];
+  uint8_t turn_[kWalkerLegs] = {};  // MountTurn of each leg's mount
   ReachProjection<S> proj_{};
   IkOptions<S> ik_options_{};  // the defaults, built once rather than per leg and tick
   GaitEngine<S> engine_;
-  LegResult<S> out_[kMaxLegs];
+  LegResult<S> out_[kWalkerLegs];
 };
 
 }  // namespace strider

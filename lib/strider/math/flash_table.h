@@ -62,6 +62,14 @@ STRIDER_ALWAYS_INLINE uint8_t flash_u8(const void* p) {
 #endif
 }
 
+//! Copies n bytes from src, an address declared with STRIDER_PROGMEM, to dst
+//! (a struct kept in a flash table; avr-libc's memcpy_P is not header-only).
+inline void flash_copy(void* dst, const void* src, uint16_t n) {
+  uint8_t* d = static_cast<uint8_t*>(dst);
+  const uint8_t* s = static_cast<const uint8_t*>(src);
+  for (uint16_t i = 0; i < n; ++i) d[i] = flash_u8(s + i);
+}
+
 }  // namespace strider
 
 #endif  // STRIDER_MATH_FLASH_TABLE_H

@@ -64,6 +64,17 @@ constexpr const char* to_string(BodySide side) { return side == BodySide::kLeft 
 constexpr uint8_t kMaxLegs = 6;
 constexpr uint8_t kMaxLegDof = 3;
 
+//! Most legs the walking state (walker, gait engine, gait configuration,
+//! support polygon) holds: kMaxLegs by default. A firmware for a quadruped
+//! defines STRIDER_WALKER_LEGS 4 before any Strider header, so that its
+//! RAM carries no state for two legs it does not have; a walker then refuses
+//! a model with more legs. Models and gait tables keep kMaxLegs slots.
+#ifndef STRIDER_WALKER_LEGS
+#define STRIDER_WALKER_LEGS 6
+#endif
+constexpr uint8_t kWalkerLegs = uint8_t(STRIDER_WALKER_LEGS);
+static_assert(kWalkerLegs >= 4 && kWalkerLegs <= kMaxLegs, "STRIDER_WALKER_LEGS: 4 (a two-foot support region has four corners) to kMaxLegs");
+
 //! Link lengths of a leg [mm]; the meaning of each slot depends on the kind.
 struct LinkLengths {
   float l1_mm;  //!< sprawl/planar a1, coxa-femur-tibia coxa l1, abduction La
@@ -111,6 +122,14 @@ struct RobotModel {
   constexpr uint8_t dof() const { return dof_of(kind); }
   constexpr uint8_t joint_count() const { return uint8_t(leg_count * dof()); }
 };
+
+//! The model without its legs' names, which only the host tools print (a
+//! firmware's flash copy of its model would otherwise keep their strings in
+//! RAM on the AVR).
+constexpr RobotModel without_leg_names(RobotModel m) {
+  for (uint8_t i = 0; i < kMaxLegs; ++i) m.legs[i].name = nullptr;
+  return m;
+}
 
 // ---- constexpr helpers for writing models ------------------------------------
 

@@ -14,6 +14,8 @@
 
 #include <stdint.h>
 
+#include "../math/flash_table.h"
+
 namespace strider {
 
 enum class ServoPart : uint8_t {
@@ -53,6 +55,41 @@ constexpr ServoSpec servo_spec(ServoPart part) {
 
 //! Top speed of a part [deg/s] (60 deg over its no-load time).
 constexpr float servo_speed_deg_s(ServoPart part) { return 60.0f / servo_spec(part).speed_s_per_60deg; }
+
+//! What the servo map and the slew limit need of a part, looked up at run
+//! time: servo_spec() with a part known only at run time makes the compiler
+//! build all seven specs (and their names) in RAM on the AVR; this table is
+//! in flash.
+struct ServoTravel {
+  float travel_deg;       //!< servo_spec().travel_deg [deg]
+  uint16_t min_pulse_us;  //!< [us]
+  uint16_t max_pulse_us;  //!< [us]
+  float speed_deg_s;      //!< servo_speed_deg_s() [deg/s]
+};
+
+namespace servo_parts_detail {
+constexpr ServoTravel travel_of(ServoPart p) {
+  return ServoTravel{servo_spec(p).travel_deg, servo_spec(p).min_pulse_us, servo_spec(p).max_pulse_us,
+                     servo_speed_deg_s(p)};
+}
+template <typename T = void>
+struct Tables {
+  static const ServoTravel kTravel[kServoPartCount];
+};
+template <typename T>
+const ServoTravel Tables<T>::kTravel[kServoPartCount] STRIDER_PROGMEM = {
+    travel_of(ServoPart(0)), travel_of(ServoPart(1)), travel_of(ServoPart(2)), travel_of(ServoPart(3)),
+    travel_of(ServoPart(4)), travel_of(ServoPart(5)), travel_of(ServoPart(6))};
+static_assert(kServoPartCount == 7, "servo_parts_detail::Tables lists every part");
+}  // namespace servo_parts_detail
+
+//! servo_spec(part)'s travel, pulses and speed, read from flash.
+inline ServoTravel servo_travel(ServoPart part) {
+  ServoTravel t;
+  const uint8_t i = uint8_t(part) < kServoPartCount ? uint8_t(part) : uint8_t(kServoPartCount - 1);
+  flash_copy(&t, &servo_parts_detail::Tables<>::kTravel[i], sizeof t);
+  return t;
+}
 
 }  // namespace strider
 
