@@ -208,56 +208,66 @@ TEST(Avoidance, SeedSequenceSidestepThenResume) {
   EXPECT_EQ(out.vy, 0);
 }
 
+// Avoidance walking forward at 100 mm/s with a 150 mm clearing distance,
+// stepped in 20 ms ticks (kUnknown: no walked speed given).
+struct ClearingRun {
+  static constexpr int32_t kUnknown = strider::Avoidance::kUnknownSpeed;
+  strider::Avoidance a;
+  strider::AvoidConfig cfg = [] {
+    auto c = strider::default_avoid_config();
+    c.clear_mm = 150;
+    return c;
+  }();
+  const Twist fwd{1000, 0, 0};
+  uint32_t t = 0;
+
+  Twist update(uint16_t mm, uint32_t dt_ms, int32_t walked_vy) {
+    t += dt_ms;
+    return walked_vy == kUnknown ? a.update(fwd, at(mm), t, cfg) : a.update(fwd, at(mm), t, cfg, walked_vy);
+  }
+  //! Obstacle, then clear: into the clearing state.
+  void enter_clearing(int32_t walked_vy) {
+    update(190, 20, walked_vy);
+    ASSERT_EQ(a.state(), AvoidState::kSidestep);
+    update(2000, 20, walked_vy);
+    ASSERT_EQ(a.state(), AvoidState::kClearing);
+  }
+  //! How long clearing lasts [ms] walking sideways at walked_vy (at most 20 s).
+  uint32_t clearing_ms(int32_t walked_vy) {
+    const uint32_t start = t;
+    while (a.state() == AvoidState::kClearing && t - start < 20000) {
+      const Twist out = update(2000, 20, walked_vy);
+      if (a.state() == AvoidState::kClearing) EXPECT_EQ(out.vy, 1000);
+    }
+    EXPECT_EQ(a.state(), AvoidState::kForward);
+    return t - start;
+  }
+};
+
 // The sensor's narrow beam sees the way clear before the body and its feet
 // have passed the edge: clearing lasts until the body has walked clear_mm
 // sideways at the speed it really walks (the gait's, not the command's).
 TEST(Avoidance, ClearingWalksTheBodyHalfWidth) {
-  strider::Avoidance a;
-  auto cfg = strider::default_avoid_config();
-  cfg.clear_mm = 150;
-  const Twist fwd{1000, 0, 0};
-  uint32_t t = 0;
-  a.update(fwd, at(190), t, cfg, 0);
-  ASSERT_EQ(a.state(), AvoidState::kSidestep);
-  a.update(fwd, at(2000), t += 20, cfg, 500);
-  ASSERT_EQ(a.state(), AvoidState::kClearing);
-  // Walking 50 mm/s sideways: 150 mm take 3 s (clear_hold_ms alone: 0.6 s).
-  uint32_t start = t;
-  while (a.state() == AvoidState::kClearing && t - start < 10000) {
-    const Twist out = a.update(fwd, at(2000), t += 20, cfg, -500);  // either side counts
-    if (a.state() == AvoidState::kClearing) EXPECT_EQ(out.vy, 1000);
-  }
-  EXPECT_EQ(a.state(), AvoidState::kForward);
-  EXPECT_NEAR(double(t - start), 3000.0, 20.0);
+  ClearingRun r;
+  r.enter_clearing(500);
+  // Walking 50 mm/s sideways (either side counts): 150 mm take 3 s
+  // (clear_hold_ms alone: 0.6 s).
+  EXPECT_NEAR(double(r.clearing_ms(-500)), 3000.0, 20.0);
   // Unknown walked speed: the command's (100 mm/s) -> 1.5 s.
-  a.update(fwd, at(190), t += 20, cfg);
-  a.update(fwd, at(2000), t += 20, cfg);
-  ASSERT_EQ(a.state(), AvoidState::kClearing);
-  start = t;
-  while (a.state() == AvoidState::kClearing && t - start < 10000) a.update(fwd, at(2000), t += 20, cfg);
-  EXPECT_NEAR(double(t - start), 1500.0, 20.0);
+  r.enter_clearing(ClearingRun::kUnknown);
+  EXPECT_NEAR(double(r.clearing_ms(ClearingRun::kUnknown)), 1500.0, 20.0);
 }
 
 // A gait that does not move sideways must not keep clearing for ever: the
 // side timeout ends it.
 TEST(Avoidance, ClearingEndsAtTheSideTimeoutWhenTheBodyDoesNotMove) {
-  strider::Avoidance a;
-  auto cfg = strider::default_avoid_config();
-  cfg.clear_mm = 150;
-  const Twist fwd{1000, 0, 0};
-  uint32_t t = 0;
-  a.update(fwd, at(190), t, cfg, 0);
-  a.update(fwd, at(2000), t += 20, cfg, 0);
-  ASSERT_EQ(a.state(), AvoidState::kClearing);
-  const uint32_t start = t;
-  while (a.state() == AvoidState::kClearing && t - start < 20000) a.update(fwd, at(2000), t += 20, cfg, 0);
-  EXPECT_EQ(a.state(), AvoidState::kForward);
-  EXPECT_NEAR(double(t - start), double(cfg.side_timeout_ms), 20.0);
+  ClearingRun r;
+  r.enter_clearing(0);
+  EXPECT_NEAR(double(r.clearing_ms(0)), double(r.cfg.side_timeout_ms), 20.0);
   // Absurd speeds and clock jumps saturate, never wrap back into clearing.
-  a.update(fwd, at(190), t += 20, cfg, 0);
-  a.update(fwd, at(2000), t += 20, cfg, 0);
-  a.update(fwd, at(2000), t += 4000000000u, cfg, -0x7FFFFFFF);
-  EXPECT_EQ(a.state(), AvoidState::kForward);
+  r.enter_clearing(0);
+  r.update(2000, 4000000000u, -0x7FFFFFFF);
+  EXPECT_EQ(r.a.state(), AvoidState::kForward);
 }
 
 TEST(Avoidance, OtherSideThenBlocked) {
