@@ -60,4 +60,25 @@ TEST(SimFirmware, Sprawl8FirmwareSeesTheWallThroughTheRayCast) {
   EXPECT_EQ(fw.metrics.collisions, 0);
 }
 
+// Round the wall in firmware mode: the clearing distance comes from the
+// model (in flash on the AVR), so clearing ends once the body has walked it
+// (about 1.1-1.3 s here), not at the 5 s side timeout, and no leg touches
+// the wall.
+TEST(SimFirmware, Sprawl8FirmwareClearsTheWallByItsHalfWidth) {
+  const strider_sim::RunResult fw = run("sprawl8_obstacle", STRIDER_SIM_FIRMWARE_ELF);
+  ASSERT_TRUE(fw.ok);
+  double clearing_s = -1, forward_s = -1;
+  for (const auto& l : fw.log) {
+    if (clearing_s < 0 && l.text.find("info avoid clearing") != std::string::npos) clearing_s = l.t_s;
+    if (clearing_s >= 0 && forward_s < 0 && l.text.find("info avoid forward") != std::string::npos) forward_s = l.t_s;
+  }
+  ASSERT_GE(clearing_s, 0.0) << "never cleared the wall";
+  ASSERT_GE(forward_s, 0.0) << "never walked forward again";
+  std::printf("[ metrics  ] firmware clearing lasted %.2f s\n", forward_s - clearing_s);
+  EXPECT_GT(forward_s - clearing_s, 0.6);  // at least clear_hold_ms
+  EXPECT_LT(forward_s - clearing_s, 3.0);  // walked, not timed out (5 s)
+  EXPECT_EQ(fw.metrics.collisions, 0);
+  EXPECT_GT(fw.metrics.min_clearance_mm, 40.0);
+}
+
 }  // namespace

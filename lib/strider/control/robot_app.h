@@ -120,7 +120,6 @@ class RobotApp {
     announce(link);
     if (!ok_) return false;
     stage_.set_settings(controller_.settings());
-    controller_.set_avoid_clear_mm(avoid_clear_mm(model_));
     stage_.apply_pending(out_);
     stage_.begin_soft_start(now_us / 1000u);
     last_tick_us_ = now_us;
@@ -234,6 +233,7 @@ class RobotApp {
     copy_model(&model);
     name_ = model.name;
     boards_ = pca_board_count(model);
+    controller_.set_avoid_clear_mm(avoid_clear_mm(model));  // the copy: model_ may be in flash
     GaitParams params;
     return gait_params_of(model, &params) && motion_.configure(model, params, false) && configure_stage(model);
   }
