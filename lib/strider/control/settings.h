@@ -35,8 +35,6 @@ constexpr Settings default_settings() {
                   {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}};
 }
 
-//! True for the UART rates the HC-05 AT+UART command accepts that the Mega
-//! can run reliably at 16 MHz.
 //! *s = default_settings(), field by field: a copy of the constant would
 //! keep its 54 bytes in RAM on the AVR (const data is copied to RAM there).
 inline void set_default_settings(Settings* s) {
@@ -53,6 +51,8 @@ inline void set_default_settings(Settings* s) {
   static_assert(d.trim_decideg[0] == 0 && d.trim_decideg[kMaxServoJoints - 1] == 0, "default trims are zero");
 }
 
+//! True for the UART rates the HC-05 AT+UART command accepts that the Mega
+//! can run reliably at 16 MHz.
 constexpr bool valid_baud(uint32_t baud) {
   return baud == 9600ul || baud == 19200ul || baud == 38400ul || baud == 57600ul || baud == 115200ul;
 }

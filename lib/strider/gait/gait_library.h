@@ -89,6 +89,11 @@ struct GaitList {
 namespace gait_library_detail {
 constexpr const GaitTable* kQuadruped[] STRIDER_GAIT_STORAGE = {&kGaitWalk, &kGaitTrot, &kGaitPace, &kGaitCrawl};
 constexpr const GaitTable* kHexapod[] STRIDER_GAIT_STORAGE = {&kGaitTripod, &kGaitRipple, &kGaitWave};
+//! The list (in flash when the tables are) and its length for a leg count.
+constexpr const GaitTable* const* list_items(uint8_t leg_count) {
+  return leg_count == 4 ? kQuadruped : leg_count == 6 ? kHexapod : nullptr;
+}
+constexpr uint8_t list_count(uint8_t leg_count) { return leg_count == 4 ? 4 : leg_count == 6 ? 3 : 0; }
 //! A name in RAM equal to one in flash (strcmp_P, without avr/pgmspace.h).
 inline bool same_as_flash(const char* name, const char* flash_name) {
   for (uint8_t i = 0;; ++i) {
@@ -103,10 +108,8 @@ inline bool same_as_flash(const char* name, const char* flash_name) {
 //! flash when the tables are there); false (out untouched) when there is none.
 inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
   if (name == nullptr) return false;
-  const GaitTable* const* items = leg_count == 4   ? gait_library_detail::kQuadruped
-                                  : leg_count == 6 ? gait_library_detail::kHexapod
-                                                   : nullptr;
-  const uint8_t count = leg_count == 4 ? 4 : leg_count == 6 ? 3 : 0;
+  const GaitTable* const* items = gait_library_detail::list_items(leg_count);
+  const uint8_t count = gait_library_detail::list_count(leg_count);
   for (uint8_t i = 0; i < count; ++i) {
 #if STRIDER_GAITS_IN_FLASH && defined(__AVR__)
     static_assert(sizeof(const GaitTable*) == 2, "AVR data pointers are 16-bit");
@@ -131,9 +134,7 @@ inline bool load_gait(const RobotModel& model, const char* name, GaitTable* out)
 #if !STRIDER_GAITS_IN_FLASH
 //! The gaits for a body with `leg_count` legs (none for other counts).
 constexpr GaitList gaits_for_legs(uint8_t leg_count) {
-  return leg_count == 4   ? GaitList{gait_library_detail::kQuadruped, 4}
-         : leg_count == 6 ? GaitList{gait_library_detail::kHexapod, 3}
-                          : GaitList{nullptr, 0};
+  return GaitList{gait_library_detail::list_items(leg_count), gait_library_detail::list_count(leg_count)};
 }
 
 //! The gaits a model supports: every gait of its leg count.
