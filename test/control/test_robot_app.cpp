@@ -231,6 +231,67 @@ TYPED_TEST(RobotAppTest, RefusedPoseAndGarbageChangeNothing) {
   EXPECT_EQ(r.app->overruns(), 0);
 }
 
+// Calibration rebuilds the servo map from the model (the stage keeps no
+// channels of its own), a leg per frame while every output holds its pulse:
+// a trim moves its servo by the trim, a new PWM frequency keeps the pulse
+// widths, abort goes back to the standing pulses, and no frame jumps.
+TYPED_TEST(RobotAppTest, CalibrationRebuildsTheServoMapFromTheModel) {
+  using S = TypeParam;
+  const strider::RobotModel& m = strider::kHexapod18;
+  Rig<S> r(m);
+  r.run_ms(5000);
+  const auto standing = r.ticks;
+  ASSERT_EQ(standing.size(), m.joint_count());
+  const auto& stage = r.app->servos();
+  const uint8_t k = 4;  // leg 1's femur: mirrored on a right leg, not on a left one
+  const strider::ServoChannel<S> ch = strider::make_joint_channel<S>(m, 1, 1);
+  EXPECT_EQ(stage.channel(k).channel, ch.channel);
+  EXPECT_EQ(stage.channel(k).direction, ch.direction);
+  const S q = r.app->motion().walker().leg(1).q[1];
+  const auto expect = [&](int16_t trim_decideg) {
+    return strider::map_joint(ch, q, strider::trim_from_decideg<S>(trim_decideg), stage.timing()).ticks;
+  };
+  EXPECT_NEAR(standing.at(ch.channel), expect(0), 1);
+  r.max_jump.clear();
+  r.send(1, "cal start\ncal trim 4 -5\n");
+  EXPECT_EQ(r.lines.on(1).back(), "ok cal trim joint=4 deg=-5.0");
+  r.run_ms(20);  // the first frame: apply the settings, fit leg 0; hold
+  EXPECT_EQ(r.ticks.at(ch.channel), standing.at(ch.channel));
+  r.run_ms(20 * m.leg_count + 200);
+  EXPECT_NEAR(r.ticks.at(ch.channel), expect(-50), 1);
+  EXPECT_GT(std::abs(int(r.ticks.at(ch.channel)) - int(standing.at(ch.channel))), 8);  // 5 deg: ~11 ticks
+  for (const auto& t : standing) {
+    if (t.first == ch.channel) continue;
+    EXPECT_EQ(r.ticks.at(t.first), t.second) << "channel " << int(t.first);
+  }
+  // Never more per frame than the servo turns in 20 ms (+1 tick rounding).
+  const auto check_slew = [&]() {
+    for (const auto& j : r.max_jump) {
+      const double us = strider::servo_speed_deg_s(m.servo[j.first % 16 % m.dof()]) * 0.02 * 2000.0 / 180.0;
+      EXPECT_LE(j.second, int(us * 262144.0 / double(stage.timing().period_x64()) * 1.02) + 1) << "channel " << int(j.first);
+    }
+    r.max_jump.clear();
+  };
+  check_slew();
+  // A new period: every pulse keeps its width in the first frame (ticks
+  // scaled by the periods' ratio), then the map is rebuilt.
+  r.send(1, "cal pwm 100\n");
+  r.run_ms(20);
+  EXPECT_NEAR(r.ticks.at(ch.channel), expect(-50), 3);  // expect(): the new timing already
+  r.max_jump.clear();
+  r.run_ms(20 * m.leg_count + 200);
+  check_slew();
+  EXPECT_NEAR(stage.timing().period_x64(), strider::Pca9685Timing().period_x64() / 2, 2 * 64);  // 10 ms
+  EXPECT_NEAR(r.ticks.at(ch.channel), expect(-50), 1);
+  r.send(1, "cal abort\n");
+  r.run_ms(20);
+  r.max_jump.clear();
+  r.run_ms(20 * m.leg_count + 400);
+  check_slew();
+  for (const auto& t : standing) EXPECT_NEAR(r.ticks.at(t.first), t.second, 1) << "channel " << int(t.first);
+  EXPECT_EQ(r.app->overruns(), 0);
+}
+
 TEST(RobotAppTiming, RecordsOverruns) {
   Rig<float> r(strider::kMammal8);
   r.app->record_tick_time(5000);

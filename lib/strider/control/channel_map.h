@@ -21,6 +21,7 @@
 
 #include <stdint.h>
 
+#include "../math/flash_table.h"
 #include "../robots/robot_model.h"
 #include "servo_map.h"
 #include "settings.h"
@@ -73,19 +74,36 @@ ServoChannel<S> make_joint_channel(const RobotModel& m, uint8_t leg, uint8_t j) 
   return ch;
 }
 
-//! Fills out[k] for every joint k = leg * dof + j of the model; returns the
-//! joint count (0 when the model has more joints than kMaxServoJoints or a
-//! joint range wider than its servo's travel).
-template <typename S>
-uint8_t make_channel_map(const RobotModel& m, ServoChannel<S>* out) {
+//! The model's joint count when make_channel_map() can map it, else 0 (more
+//! joints than kMaxServoJoints, or a joint range wider than its servo's travel).
+inline uint8_t channel_map_count(const RobotModel& m) {
   if (m.joint_count() > kMaxServoJoints) return 0;
   for (uint8_t leg = 0; leg < m.leg_count; ++leg)
     for (uint8_t j = 0; j < m.dof(); ++j) {
       const JointRange& r = m.legs[leg].joint[j];
       if (r.max_deg - r.min_deg > servo_travel(m.servo[j]).travel_deg) return 0;
-      out[leg * m.dof() + j] = make_joint_channel<S>(m, leg, j);
     }
   return m.joint_count();
+}
+
+//! Where a model is kept: in RAM (host tools, the simulator), or in flash
+//! (the firmware: STRIDER_PROGMEM, read through a copy).
+enum class ModelMemory : uint8_t { kRam = 0, kFlash = 1 };
+
+//! *to = the model at `from` in `where`.
+inline void read_model(const RobotModel& from, ModelMemory where, RobotModel* to) {
+  if (where == ModelMemory::kFlash) flash_copy(to, &from, sizeof *to);
+  else *to = from;
+}
+
+//! Fills out[k] for every joint k = leg * dof + j of the model; returns the
+//! joint count (0 when the model has more joints than kMaxServoJoints or a
+//! joint range wider than its servo's travel).
+template <typename S>
+uint8_t make_channel_map(const RobotModel& m, ServoChannel<S>* out) {
+  const uint8_t n = channel_map_count(m);
+  for (uint8_t k = 0; k < n; ++k) out[k] = make_joint_channel<S>(m, uint8_t(k / m.dof()), uint8_t(k % m.dof()));
+  return n;
 }
 
 //! The joint angle [rad] a servo on `ch` holds for a pulse [us], with zero

@@ -88,10 +88,10 @@ inline int32_t to_tenths(Fixed v) {
   return t >= 0 ? (t + 32768) >> 16 : -((-t + 32768) >> 16);
 }
 
-//! Where RobotApp's model is: in RAM (host tools, the simulator), or in
-//! flash (the firmware: STRIDER_PROGMEM, no RAM copy of its ~370 bytes; the
-//! configuration reads a copy on the stack, in begin() only).
-enum class ModelMemory : uint8_t { kRam = 0, kFlash = 1 };
+// Where RobotApp's model is (ModelMemory, channel_map.h): in RAM, or in
+// flash (the firmware: no RAM copy of its ~370 bytes; the configuration
+// reads a copy on the stack in begin(), the servo stage when the PWM or the
+// trims change).
 
 template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints>
 class RobotApp {
@@ -222,8 +222,7 @@ class RobotApp {
   };
 
   void copy_model(RobotModel* to) const {
-    if (model_in_flash_) flash_copy(to, &model_, sizeof *to);
-    else *to = model_;
+    read_model(model_, where(), to);
   }
 
   //! Walker (legs' IK not yet solved) and servo stage from (a copy of) the
@@ -237,9 +236,11 @@ class RobotApp {
     GaitParams params;
     return gait_params_of(model, &params) && motion_.configure(model, params, false) && configure_stage(model);
   }
-  // Not inlined: the channel map's temporaries are not on the stack with
-  // the walker's configuration.
-  STRIDER_NOINLINE bool configure_stage(const RobotModel& model) { return stage_.configure(model); }
+  // Not inlined: the stage's temporaries are not on the stack with the
+  // walker's configuration. The stage reads the model again (model_, not
+  // this copy) when the settings change.
+  STRIDER_NOINLINE bool configure_stage(const RobotModel& model) { return stage_.configure(model, &model_, where()); }
+  ModelMemory where() const { return model_in_flash_ ? ModelMemory::kFlash : ModelMemory::kRam; }
 
   //! The boot notices: model and boards, how the settings loaded.
   template <typename Link>

@@ -29,23 +29,37 @@ constexpr uint16_t kFramePeriodMs = 20;      //!< nominal frame period for the s
 
 //! N: most joints (servos) it drives; a firmware for one model sizes it to
 //! the model's joint count.
+//!
+//! RAM: the stage keeps no servo channels (servo_map.h) of its own, only
+//! the tick map's constants, which a frame needs. The channels are rebuilt
+//! from the model (in flash on the AVR, through a copy on the stack) when
+//! the trims or the PWM change, by channel(), and in every frame only when
+//! the tick map cannot hold them (map_joint(), slow; for the built-in servo
+//! parts only near 400 Hz, where a joint's longest pulse reaches the period).
 template <typename S, uint8_t N = kMaxServoJoints>
 class ServoStage {
  public:
-  //! Channel map of `model`; every output off. False when the model does not fit.
-  bool configure(const RobotModel& model) {
-    count_ = model.joint_count() <= N ? make_channel_map<S>(model, channels_) : uint8_t(0);
+  //! Channel map of `model` (readable: a copy of `source` if that is in
+  //! flash); every output off. The stage reads `source` again later
+  //! (nullptr: `model` itself), which must outlive it. False when the model
+  //! does not fit.
+  bool configure(const RobotModel& model, const RobotModel* source = nullptr, ModelMemory where = ModelMemory::kRam) {
+    count_ = model.joint_count() <= N ? channel_map_count(model) : uint8_t(0);
+    model_ = source != nullptr ? source : &model;
+    where_ = where;
     dof_ = model.dof();
     legs_ = model.leg_count;
     for (uint8_t j = 0; j < dof_; ++j) part_[j] = model.servo[j];
-    for (uint8_t k = 0; k < N; ++k) { on_[k] = false; ticks_[k] = 0; }
+    for (uint8_t k = 0; k < N; ++k) ticks_[k] = kOff;
+    for (uint8_t k = 0; k < count_; ++k) tick_map_.set_channel(k, joint_channel(model, uint8_t(k / dof_), uint8_t(k % dof_)));
     enabled_legs_ = 0;
     relax_pending_ = true;
+    pwm_pending_ = true;  // the tick map's constants with the settings
     return count_ != 0;
   }
 
-  //! Trims now; oscillator and PWM frequency at the next frame (the bus may not
-  //! be up yet when settings are loaded). Keeps a pointer, not a copy (RAM):
+  //! Trims, oscillator and PWM frequency from the next frame on (the bus may
+  //! not be up yet when settings are loaded). Keeps a pointer, not a copy (RAM):
   //! s must outlive the stage or the next call (RobotApp passes the
   //! controller's settings or its calibration's live values), and must be
   //! given before the first frame.
@@ -70,18 +84,25 @@ class ServoStage {
   bool all_on() const { return enabled_legs_ == legs_; }
   bool starting() const { return soft_start_ && !all_on(); }
   uint8_t joint_count() const { return count_; }
-  const ServoChannel<S>& channel(uint8_t k) const { return channels_[k]; }
-  uint16_t ticks(uint8_t k) const { return ticks_[k]; }   //!< last written [PCA9685 ticks]
-  bool on(uint8_t k) const { return on_[k]; }
+  //! Joint k's channel, rebuilt from the model (host tools and tests).
+  ServoChannel<S> channel(uint8_t k) const {
+    RobotModel m;
+    read_model(*model_, where_, &m);
+    return make_joint_channel<S>(m, uint8_t(k / dof_), uint8_t(k % dof_));
+  }
+  bool on(uint8_t k) const { return ticks_[k] != kOff; }
+  uint16_t ticks(uint8_t k) const { return on(k) ? ticks_[k] : uint16_t(0); }   //!< last written [PCA9685 ticks], 0 off
   const Pca9685Timing& timing() const { return timing_; }
   ServoStatus last_status() const { return status_; }
 
   //! Applies pending settings now (prescale to the boards, the fast map's
-  //! constants: float work, ~10 ms on the AVR), e.g. at start-up, so that no
-  //! control tick pays for it. frame() does it too when settings change.
+  //! constants: float work, ~20 ms on the AVR), e.g. at start-up, so that no
+  //! control tick pays for it. frame() does it too when settings change,
+  //! the map's constants one leg per frame.
   template <typename Output>
   void apply_pending(Output& out) {
     if (pwm_pending_) apply_pwm(out);
+    fit_legs(legs_);
   }
 
   //! One frame at now_ms: soft start, map, slew, write; ends with out.flush().
@@ -90,8 +111,8 @@ class ServoStage {
     if (pwm_pending_) apply_pwm(out);
     if (relax_pending_) {
       for (uint8_t k = 0; k < count_; ++k) {
-        out.relax(channels_[k].channel);
-        on_[k] = false;
+        out.relax(tick_map_.joint(k).channel);
+        ticks_[k] = kOff;
       }
       relax_pending_ = false;
     }
@@ -99,49 +120,91 @@ class ServoStage {
       ++enabled_legs_;
       next_leg_ms_ = now_ms + kSoftStartStepMs;
     }
+    // New settings: every output holds its pulse (rescaled to a new PWM
+    // period at once) while the map's constants are rebuilt, a leg per frame
+    // (a whole map is ~20 ms of float work on the AVR: more than a tick).
+    if (fitted_legs_ < legs_) {
+      fit_legs(1);
+    } else {
+      status_ = fast_ ? write_legs(walker, out, nullptr) : write_legs_slowly(walker, out);
+    }
+    out.flush();
+    return status_;
+  }
+
+ private:
+  static constexpr uint16_t kOff = 0xFFFF;  // ticks_ of an output that is off (no pulse)
+
+  //! The enabled legs' joints through the tick map, or (model given: the
+  //! map cannot hold them) through map_joint() with channels rebuilt from
+  //! the model; slewed, written when changed. The worst status.
+  template <typename Output>
+  ServoStatus write_legs(const Walker<S>& walker, Output& out, const RobotModel* model) {
     ServoStatus worst_status = ServoStatus::kOk;
     for (uint8_t leg = 0; leg < enabled_legs_; ++leg) {
       const LegResult<S>& r = walker.leg(leg);
       for (uint8_t j = 0; j < dof_; ++j) {
         const uint8_t k = uint8_t(leg * dof_ + j);
-        const ServoCommand cmd = fast_ ? tick_map_.map(k, r.q[j])
-                                       : map_joint(channels_[k], r.q[j], trim_from_decideg<S>(settings_->trim_decideg[k]), timing_);
+        const ServoCommand cmd = model == nullptr
+                                     ? tick_map_.map(k, r.q[j])
+                                     : map_joint(make_joint_channel<S>(*model, leg, j), r.q[j],
+                                                 trim_from_decideg<S>(settings_->trim_decideg[k]), timing_);
         worst_status = worst(worst_status, cmd.status);
         uint16_t next = cmd.ticks;
-        if (on_[k]) {
-          const uint16_t now = ticks_[k];
+        const uint16_t now = ticks_[k];
+        if (now != kOff) {
           if (next > now + step_[j]) next = uint16_t(now + step_[j]);
           else if (now > next + step_[j]) next = uint16_t(now - step_[j]);
           if (next == now) continue;
         }
         ticks_[k] = next;
-        on_[k] = true;
-        out.write_ticks(channels_[k].channel, next);
+        out.write_ticks(cmd.channel, next);
       }
     }
-    out.flush();
-    status_ = worst_status;
     return worst_status;
   }
+  template <typename Output>
+  STRIDER_NOINLINE ServoStatus write_legs_slowly(const Walker<S>& walker, Output& out) {
+    RobotModel m;
+    read_model(*model_, where_, &m);
+    return write_legs(walker, out, &m);
+  }
 
- private:
+  //! The tick map's constants for the timing and trims of up to n more
+  //! legs, from the model (a copy, if it is in flash); after the last leg
+  //! fast_ says whether the map holds every joint.
+  STRIDER_NOINLINE void fit_legs(uint8_t n) {
+    if (count_ == 0 || fitted_legs_ >= legs_) return;  // a model that does not fit; nothing to do
+    RobotModel m;
+    read_model(*model_, where_, &m);
+    for (; n != 0 && fitted_legs_ < legs_; --n, ++fitted_legs_)
+      for (uint8_t j = 0; j < dof_; ++j) {
+        const uint8_t k = uint8_t(fitted_legs_ * dof_ + j);
+        const S trim = trim_from_decideg<S>(settings_->trim_decideg[k]);
+        if (tick_map_.configure_joint(k, make_joint_channel<S>(m, fitted_legs_, j), trim, timing_) != ServoTickStatus::kOk)
+          unfit_ = true;
+      }
+    if (fitted_legs_ == legs_) fast_ = !unfit_;
+  }
+
   //! New oscillator or PWM frequency: prescale to the boards, the outputs that
   //! are on rescaled to keep their pulse widths, new slew steps.
   template <typename Output>
   void apply_pwm(Output& out) {
     pwm_pending_ = false;
     const uint32_t old_period = timing_.period_x64();
+    // The map's constants again (fit_legs()), for the trims even when the
+    // oscillator is refused (the timing is then kept).
+    fitted_legs_ = 0;
+    unfit_ = false;
     if (configure_servo_pwm(out, timing_, *settings_) == PwmTimingStatus::kBadOscillator) return;
     for (uint8_t k = 0; k < count_; ++k) {
-      if (!on_[k]) continue;
+      if (ticks_[k] == kOff) continue;
       // ticks * old / new period, in two 16-bit halves of the period (no 64-bit).
       const uint32_t us_x64 = uint32_t(ticks_[k]) * (old_period >> 12);
       ticks_[k] = timing_.pulse_ticks(uint16_t(us_x64 >> 6));
-      out.write_ticks(channels_[k].channel, ticks_[k]);
+      out.write_ticks(tick_map_.joint(k).channel, ticks_[k]);
     }
-    // The per-joint constants of the fast map (one multiply per joint); a
-    // channel it cannot represent keeps the general map_joint() path.
-    fast_ = tick_map_.configure(channels_, count_, *settings_, timing_) == ServoTickStatus::kOk;
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
       const float speed_deg_s = servo_travel(part_[j]).speed_deg_s;  // from flash
@@ -151,15 +214,17 @@ class ServoStage {
     }
   }
 
-  ServoChannel<S> channels_[N];
   ServoTickMap<S, N> tick_map_;
   bool fast_ = false;
-  uint16_t ticks_[N];
-  bool on_[N];
+  bool unfit_ = false;       // fit_legs() met a joint the map cannot hold
+  uint8_t fitted_legs_ = 0;  // legs whose map constants fit the settings
+  uint16_t ticks_[N];  // last written, kOff: off
   uint16_t step_[kMaxLegDof] = {1, 1, 1};
   ServoPart part_[kMaxLegDof] = {ServoPart::kSg90, ServoPart::kSg90, ServoPart::kSg90};  // of joint j
   Pca9685Timing timing_;
   const Settings* settings_ = nullptr;  // set_settings()
+  const RobotModel* model_ = nullptr;   // configure(): the channels' source
+  ModelMemory where_ = ModelMemory::kRam;
   uint32_t next_leg_ms_ = 0;
   uint8_t count_ = 0;
   uint8_t dof_ = 0;

@@ -108,15 +108,23 @@ struct ServoTickScale<float> {
   float ticks_per_rad;  //!< [ticks/rad]
 };
 
+//! What a non-finite joint sends [ticks]: float only (a Fixed joint is
+//! always finite, and an empty base takes no RAM).
+template <typename S>
+struct ServoTickCentre {
+  uint16_t centre_ticks;
+};
+template <>
+struct ServoTickCentre<Fixed> {};
+
 //! One joint of a ServoTickMap (constants of the per-frame mapping).
 template <typename S>
-struct ServoTickJoint {
+struct ServoTickJoint : ServoTickCentre<S> {
   S base_rad;             //!< centre - direction zero + trim - min: d = base + direction joint [rad]
   S travel_rad;           //!< max - min [rad]
   ServoTickScale<S> scale;
   uint16_t lo_ticks;      //!< ticks at the lowest limit (map_joint's, the bounds of the output)
   uint16_t hi_ticks;      //!< ticks at the highest limit
-  uint16_t centre_ticks;  //!< what a non-finite joint sends [ticks]
   uint8_t channel;        //!< PCA9685 output
   int8_t direction;       //!< +1 or -1
 };
@@ -133,38 +141,49 @@ class ServoTickMap {
                             const Pca9685Timing& timing, uint8_t first_trim = 0) {
     count_ = 0;
     if (count > N) return ServoTickStatus::kUnsupported;
-    // Exact slope from the timing: ticks = us * 262144 / period_x64.
-    const double ticks_per_us = 262144.0 / double(timing.period_x64());
     for (uint8_t i = 0; i < count; ++i) {
-      const ServoChannel<S>& ch = channels[i];
       const uint8_t t = uint8_t(first_trim + i);
       const S trim = t < kMaxServoJoints ? trim_from_decideg<S>(settings.trim_decideg[t]) : S(0);
-      ServoTickJoint<S>& j = joint_[i];
-      j.channel = ch.channel;
-      j.direction = ch.direction < 0 ? int8_t(-1) : int8_t(1);
-      const S lo = min_of(ch.min_rad, ch.max_rad), hi = max_of(ch.min_rad, ch.max_rad);
-      const S zero = ch.direction < 0 ? -ch.zero_rad : ch.zero_rad;
-      j.base_rad = ch.centre_rad - zero + trim - lo;
-      j.travel_rad = hi - lo;
-      // The same pulse as servo_pulse_us() before rounding to whole us,
-      // kept inside the pulse range (an angle limit beyond the travel).
-      const double lo_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.min_pulse_us : ch.max_pulse_us);
-      const double hi_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.max_pulse_us : ch.min_pulse_us);
-      const double us_per_rad = to_double(ch.us_per_rad);
-      double at_lo = double(ch.min_pulse_us) + to_double(lo) * us_per_rad;
-      double at_hi = double(ch.min_pulse_us) + to_double(hi) * us_per_rad;
-      if (at_lo < lo_us || at_hi > hi_us || !(us_per_rad >= 0.0)) return ServoTickStatus::kUnsupported;
-      const double tpr = us_per_rad * ticks_per_us;
-      const double base = at_lo * ticks_per_us;
-      if (!set_scale(j.scale, to_double(j.travel_rad), tpr, base)) return ServoTickStatus::kUnsupported;
-      // The bounds and the centre exactly as map_joint() sends them.
-      j.lo_ticks = timing.pulse_ticks(servo_pulse_us(ch, lo));
-      j.hi_ticks = timing.pulse_ticks(servo_pulse_us(ch, hi));
-      j.centre_ticks = timing.pulse_ticks(servo_pulse_us(ch, clamp(ch.centre_rad, lo, hi)));
+      if (configure_joint(i, channels[i], trim, timing) != ServoTickStatus::kOk) return ServoTickStatus::kUnsupported;
     }
     count_ = count;
     return ServoTickStatus::kOk;
   }
+
+  //! Joint i (< N) alone from its channel, trim [rad] and the timing; its
+  //! channel and direction are set even when it cannot use this path. Does
+  //! not change count() (a caller that configures joint by joint, as the
+  //! servo stage does, reads them with map() only).
+  ServoTickStatus configure_joint(uint8_t i, const ServoChannel<S>& ch, S trim, const Pca9685Timing& timing) {
+    // Exact slope from the timing: ticks = us * 262144 / period_x64.
+    const double ticks_per_us = 262144.0 / double(timing.period_x64());
+    ServoTickJoint<S>& j = joint_[i];
+    j.channel = ch.channel;
+    j.direction = ch.direction < 0 ? int8_t(-1) : int8_t(1);
+    const S lo = min_of(ch.min_rad, ch.max_rad), hi = max_of(ch.min_rad, ch.max_rad);
+    const S zero = ch.direction < 0 ? -ch.zero_rad : ch.zero_rad;
+    j.base_rad = ch.centre_rad - zero + trim - lo;
+    j.travel_rad = hi - lo;
+    // The same pulse as servo_pulse_us() before rounding to whole us,
+    // kept inside the pulse range (an angle limit beyond the travel).
+    const double lo_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.min_pulse_us : ch.max_pulse_us);
+    const double hi_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.max_pulse_us : ch.min_pulse_us);
+    const double us_per_rad = to_double(ch.us_per_rad);
+    double at_lo = double(ch.min_pulse_us) + to_double(lo) * us_per_rad;
+    double at_hi = double(ch.min_pulse_us) + to_double(hi) * us_per_rad;
+    if (at_lo < lo_us || at_hi > hi_us || !(us_per_rad >= 0.0)) return ServoTickStatus::kUnsupported;
+    const double tpr = us_per_rad * ticks_per_us;
+    const double base = at_lo * ticks_per_us;
+    if (!set_scale(j.scale, to_double(j.travel_rad), tpr, base)) return ServoTickStatus::kUnsupported;
+    // The bounds and the centre exactly as map_joint() sends them.
+    j.lo_ticks = timing.pulse_ticks(servo_pulse_us(ch, lo));
+    j.hi_ticks = timing.pulse_ticks(servo_pulse_us(ch, hi));
+    set_centre(j, timing.pulse_ticks(servo_pulse_us(ch, clamp(ch.centre_rad, lo, hi))));
+    return ServoTickStatus::kOk;
+  }
+
+  //! Joint i's output before configure_joint() (a caller that must relax it first).
+  void set_channel(uint8_t i, uint8_t channel) { joint_[i].channel = channel; }
 
   uint8_t count() const { return count_; }
   const ServoTickJoint<S>& joint(uint8_t i) const { return joint_[i]; }
@@ -177,14 +196,14 @@ class ServoTickMap {
     cmd.channel = j.channel;
     cmd.pulse_us = 0;
     if (!servo_ticks_detail::finite(joint_rad)) {
-      cmd.ticks = j.centre_ticks;
+      cmd.ticks = centre_ticks(j);
       cmd.status = ServoStatus::kNotFinite;
       return cmd;
     }
     S d = j.direction < 0 ? j.base_rad - joint_rad : j.base_rad + joint_rad;
     cmd.status = ServoStatus::kOk;
     if (!servo_ticks_detail::finite(d)) {
-      cmd.ticks = j.centre_ticks;
+      cmd.ticks = centre_ticks(j);
       cmd.status = ServoStatus::kNotFinite;
       return cmd;
     }
@@ -208,6 +227,10 @@ class ServoTickMap {
   }
 
  private:
+  static void set_centre(ServoTickJoint<float>& j, uint16_t ticks) { j.centre_ticks = ticks; }
+  static void set_centre(ServoTickJoint<Fixed>&, uint16_t) {}
+  static uint16_t centre_ticks(const ServoTickJoint<float>& j) { return j.centre_ticks; }
+  static uint16_t centre_ticks(const ServoTickJoint<Fixed>& j) { return j.lo_ticks; }  // never: Fixed is finite
   static bool set_scale(ServoTickScale<float>& sc, double travel, double tpr, double base) {
     sc.ticks_per_rad = float(tpr);
     sc.base = float(base + 0.5);

@@ -193,7 +193,9 @@ class GaitEngine {
   }
   //! The share of a leg's longest stride beyond which a foot is at its edge.
   static constexpr double edge_share() { return kEdgeShare; }
-  const GaitTable& table() const { return table_; }
+  //! The gait as walked: gait() relabelled for the direction of travel
+  //! (rebuilt on each call: the engine keeps the offsets only as phases).
+  GaitTable table() const { return relabel_ ? gait_table::relabeled(base_, quarter_) : base_; }
   //! The gait as given to configure() or set_gait() (table() may be relabelled).
   const GaitTable& gait() const { return base_; }
   const GaitConfig<S>& config() const { return cfg_; }
@@ -205,7 +207,7 @@ class GaitEngine {
  private:
   void load_table(const GaitTable& t);
 
-  S budget() const { return table_.shift_body ? cfg_.shift_budget_mm : S(0); }
+  S budget() const { return base_.shift_body ? cfg_.shift_budget_mm : S(0); }
 
   //! A command as a stride per cycle (so that a foot's travel over a stance
   //! depends on the phase only, not on how the step rate changes meanwhile)
@@ -289,8 +291,7 @@ class GaitEngine {
   static constexpr double kEdgeShare = 0.53;
 
   GaitConfig<S> cfg_;
-  GaitTable base_{};   // as given
-  GaitTable table_{};  // as walked (relabelled)
+  GaitTable base_{};   // as given; as walked: table()
   Phase16 offset_[kWalkerLegs] = {};
   uint32_t swing_len_ = 0;
   S duty_ = scalar<S>(0.5), inv_swing_ = S(2), inv_stance_ = S(2);

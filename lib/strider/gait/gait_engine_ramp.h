@@ -15,6 +15,8 @@ template <typename S>
 void GaitEngine<S>::configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting) {
   if (&config != &cfg_) cfg_ = config;
   base_ = gait;
+  relabel_ = false;  // table() is the gait as given until the robot walks
+  quarter_ = 0;
   load_table(gait);
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
     foot_[i] = cfg_.home[i];
@@ -100,7 +102,6 @@ void GaitEngine<S>::set_gait(const GaitTable& gait) {
 
 template <typename S>
 void GaitEngine<S>::load_table(const GaitTable& t) {
-  table_ = t;
   swing_len_ = phase_span(1.0 - double(t.duty));
   duty_ = scalar<S>(double(t.duty));
   inv_swing_ = scalar<S>(1.0 / (1.0 - double(t.duty)));
@@ -123,7 +124,7 @@ void GaitEngine<S>::load_table(const GaitTable& t) {
 //! no faster than the acceleration limits at the faster of the two rates.
 template <typename S>
 void GaitEngine<S>::replan() {
-  to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), table_.shift_body);
+  to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), base_.shift_body);
   const S inv = S(1) / to_.step_hz;
   to_s_ = Stride{to_.vx_mm_s * inv, to_.vy_mm_s * inv, to_.wz_rad_s * inv, to_.step_hz};
   from_s_ = now_s_;

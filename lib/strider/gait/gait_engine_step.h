@@ -160,7 +160,7 @@ void GaitEngine<S>::step_walk(S dt) {
 
 template <typename S>
 void GaitEngine<S>::step_shift(S dt) {
-  if (!table_.shift_body) {
+  if (!base_.shift_body) {  // relabelling keeps it
     // Back to no shift (after a gait change); once there, nothing to move.
     if (shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) shift_.step_toward(S(0), S(0), cfg_.shift_speed_mm_s * dt);
     return;
