@@ -214,9 +214,65 @@ STRIDER_ALWAYS_INLINE uint32_t shift_signed(uint32_t root, int8_t e) {
 //! sqrt(x) for x in Q6.24 (0 < x < 2^30): wide units. Inline: one call
 //! site per solver, where a call costs more in register saves.
 STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
+#if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
+  // normalize_even() and shift_signed() around the root in AVR assembly
+  // (gcc loops over the bits of each shift; ~80 -> ~50 cycles), with
+  // h = s / 2. test_avr_exact (wide_sqrt_sq) checks it against the C.
+  uint8_t h;
+  __asm__(
+      "clr %[h]\n\t"
+      "cp %C[x], __zero_reg__\n\t" "cpc %D[x], __zero_reg__\n\t" "brne 1f\n\t"
+      "movw %C[x], %A[x]\n\t" "clr %B[x]\n\t" "clr %A[x]\n\t" "ldi %[h], 8\n\t"
+      "1:\n\t"
+      "tst %D[x]\n\t" "brne 2f\n\t"
+      "mov %D[x], %C[x]\n\t" "mov %C[x], %B[x]\n\t" "mov %B[x], %A[x]\n\t" "clr %A[x]\n\t"
+      "subi %[h], lo8(-4)\n\t"
+      "2:\n\t"
+      "mov r30, %D[x]\n\t" "andi r30, 0xF0\n\t" "brne 3f\n\t"
+      "lsl %A[x]\n\t" "rol %B[x]\n\t" "rol %C[x]\n\t" "rol %D[x]\n\t"
+      "lsl %A[x]\n\t" "rol %B[x]\n\t" "rol %C[x]\n\t" "rol %D[x]\n\t"
+      "lsl %A[x]\n\t" "rol %B[x]\n\t" "rol %C[x]\n\t" "rol %D[x]\n\t"
+      "lsl %A[x]\n\t" "rol %B[x]\n\t" "rol %C[x]\n\t" "rol %D[x]\n\t"
+      "subi %[h], lo8(-2)\n\t"
+      "3:\n\t"
+      "mov r30, %D[x]\n\t" "andi r30, 0xC0\n\t" "brne 4f\n\t"
+      "lsl %A[x]\n\t" "rol %B[x]\n\t" "rol %C[x]\n\t" "rol %D[x]\n\t"
+      "lsl %A[x]\n\t" "rol %B[x]\n\t" "rol %C[x]\n\t" "rol %D[x]\n\t"
+      "inc %[h]\n\t"
+      "4:"
+      : [h] "=&d"(h), [x] "+r"(x)
+      :
+      : "r30");
+  uint32_t root = detail::isqrt_q22(x);
+  // root << (5 - h) for h <= 5 (root < 2^27), else shr_round(root, h - 5)
+  // (h <= 15 for x >= 1).
+  __asm__(
+      "ldi r30, 5\n\t" "sub r30, %[h]\n\t" "brmi 6f\n\t" "breq 5f\n\t"
+      "7:\n\t"
+      "lsl %A[r]\n\t" "rol %B[r]\n\t" "rol %C[r]\n\t" "rol %D[r]\n\t" "dec r30\n\t" "brne 7b\n\t"
+      "rjmp 5f\n\t"
+      "6:\n\t"
+      "neg r30\n\t" "dec r30\n\t"  // n - 1 for n = h - 5 in [1, 10]
+      "sbrs r30, 3\n\t" "rjmp 9f\n\t"
+      "mov %A[r], %B[r]\n\t" "mov %B[r], %C[r]\n\t" "mov %C[r], %D[r]\n\t" "clr %D[r]\n\t"
+      "9:\n\t"
+      "andi r30, 7\n\t" "breq 8f\n\t"
+      "10:\n\t"
+      "lsr %D[r]\n\t" "ror %C[r]\n\t" "ror %B[r]\n\t" "ror %A[r]\n\t" "dec r30\n\t" "brne 10b\n\t"
+      "8:\n\t"
+      "sec\n\t" "adc %A[r], __zero_reg__\n\t" "adc %B[r], __zero_reg__\n\t"
+      "adc %C[r], __zero_reg__\n\t" "adc %D[r], __zero_reg__\n\t"
+      "lsr %D[r]\n\t" "ror %C[r]\n\t" "ror %B[r]\n\t" "ror %A[r]\n\t"
+      "5:"
+      : [r] "+r"(root)
+      : [h] "r"(h)
+      : "r30");
+  return int32_t(root);
+#else
   const uint8_t s = detail::normalize_even(x);
   // isqrt_q22 ~ sqrt(x 2^(22 + s)); the wide root is sqrt(x) 2^16.
   return int32_t(shift_signed(detail::isqrt_q22(x), int8_t(5 - s / 2)));
+#endif
 }
 
 //! sqrt_sq() as one shared out-of-line copy, for the solvers whose every
