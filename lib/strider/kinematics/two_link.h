@@ -197,6 +197,48 @@ STRIDER_ALWAYS_INLINE uint32_t sq_abs(uint32_t u) {
 //! w^2 in Q6.24 for a wide w: sq_abs(|w|).
 STRIDER_ALWAYS_INLINE uint32_t sq(int32_t w) { return sq_abs(detail::abs_u32(w)); }
 
+#if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
+// One sq() of operand X added into s (t: scratch) for sq_sum(): |X|, then
+// hi16(X)^2 and hi16(2 hi16(X) lo16(X)); X is clobbered.
+#define STRIDER_WIDE_SQ_ADD(X)                                                                             \
+  "sbrs %D[" X "], 7\n\t" "rjmp 1f\n\t"                                                                  \
+  "com %A[" X "]\n\t" "com %B[" X "]\n\t" "com %C[" X "]\n\t" "com %D[" X "]\n\t" "sec\n\t"            \
+  "adc %A[" X "], __zero_reg__\n\t" "adc %B[" X "], __zero_reg__\n\t"                                     \
+  "adc %C[" X "], __zero_reg__\n\t" "adc %D[" X "], __zero_reg__\n\t"                                     \
+  "1:\n\t"                                                                                                \
+  "mul %C[" X "], %C[" X "]\n\t" "movw %A[t], r0\n\t"                                                    \
+  "mul %D[" X "], %D[" X "]\n\t" "movw %C[t], r0\n\t"                                                    \
+  "mul %C[" X "], %D[" X "]\n\t" "add %B[t], r0\n\t" "adc %C[t], r1\n\t"                               \
+  "clr __zero_reg__\n\t" "adc %D[t], __zero_reg__\n\t"                                                    \
+  "mul %C[" X "], %D[" X "]\n\t" "add %B[t], r0\n\t" "adc %C[t], r1\n\t"                               \
+  "clr __zero_reg__\n\t" "adc %D[t], __zero_reg__\n\t"                                                    \
+  "add %A[s], %A[t]\n\t" "adc %B[s], %B[t]\n\t" "adc %C[s], %C[t]\n\t" "adc %D[s], %D[t]\n\t"          \
+  "lsl %C[" X "]\n\t" "rol %D[" X "]\n\t"                                                                 \
+  "mul %C[" X "], %A[" X "]\n\t" "mov %B[t], r1\n\t"                                                     \
+  "mul %D[" X "], %B[" X "]\n\t" "movw %C[t], r0\n\t"                                                    \
+  "mul %C[" X "], %B[" X "]\n\t" "add %B[t], r0\n\t" "adc %C[t], r1\n\t"                               \
+  "clr __zero_reg__\n\t" "adc %D[t], __zero_reg__\n\t"                                                    \
+  "mul %D[" X "], %A[" X "]\n\t" "add %B[t], r0\n\t" "adc %C[t], r1\n\t"                               \
+  "clr __zero_reg__\n\t" "adc %D[t], __zero_reg__\n\t"                                                    \
+  "add %A[s], %C[t]\n\t" "adc %B[s], %D[t]\n\t" "adc %C[s], __zero_reg__\n\t" "adc %D[s], __zero_reg__\n\t"
+#endif
+
+//! sq(a) + sq(b) (modulo 2^32). On the AVR in assembly, the same bits: gcc
+//! spills the two squares' temporaries around the solvers' live values.
+//! test_avr_exact (wide_sq_sum) checks it against the C.
+STRIDER_ALWAYS_INLINE uint32_t sq_sum(int32_t a, int32_t b) {
+#if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
+  uint32_t s, t;
+  __asm__("clr %A[s]\n\t" "clr %B[s]\n\t" "movw %C[s], %A[s]\n\t"
+          STRIDER_WIDE_SQ_ADD("a") STRIDER_WIDE_SQ_ADD("b")
+          : [s] "=&r"(s), [t] "=&r"(t), [a] "+r"(a), [b] "+r"(b));
+  return s;
+#else
+  return sq(a) + sq(b);
+#endif
+}
+#undef STRIDER_WIDE_SQ_ADD
+
 //! Shift that brings u (!= 0) into [2^31, 2^32): whole bytes, then bits.
 STRIDER_ALWAYS_INLINE uint8_t normalize_top(uint32_t& u) {
   uint8_t k = 0;
@@ -403,7 +445,7 @@ STRIDER_ALWAYS_INLINE uint32_t sqrt_product(uint32_t p, uint32_t q) {
 STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch,
                                              Fixed& ta, Fixed& tb) {
   if (link.outer2.raw() >= (int32_t(64) << 16)) return false;  // a1 + a2 >= 8 units
-  const uint32_t d2 = wide::sq(h) + wide::sq(v);
+  const uint32_t d2 = wide::sq_sum(h, v);
   const uint32_t outer2 = uint32_t(link.outer2.raw()) << 8, inner2 = uint32_t(link.inner2.raw()) << 8;
   if (!(d2 < outer2 && d2 > inner2)) return false;
   const int32_t c = int32_t(d2) - (link.sum_sq.raw() << 8);            // 2 a1 a2 cos tb [Q6.24]
