@@ -15,7 +15,8 @@ void GaitEngine<S>::step_walk(S dt) {
   StepCache& sc = step_cache_;
   if (!(sc.vx == vx_ && sc.vy == vy_ && sc.wz == wz_ && sc.dt == dt))
     sc = StepCache{vx_, vy_, wz_, dt, BodyStep<S>::make(vx_, vy_, wz_, dt)};
-  BodyStep<S> step = sc.step;
+  // Field by field: avr-gcc copies the whole struct with a byte loop.
+  BodyStep<S> step{sc.step.dx_mm, sc.step.dy_mm, sc.step.dyaw, sc.step.cos_yaw, sc.step.sin_yaw};
   // A foot on the ground at the edge of its reach that this step would take
   // farther out holds the body for this tick (it lifts as soon as it can).
   held_ = false;
