@@ -126,7 +126,7 @@ STRIDER_ALWAYS_INLINE bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
   // The common case, inline: |v| < 256 mm and k in [1, 7] (legs of 128 mm
   // and more). raw 2^k is a whole-byte shift, then 8 - k single-bit steps
   // back (one for a 128-255 mm leg), instead of k steps; it stays below 2^31.
-  if (down - 1U < 7U && m < 0x1000000UL) {
+  if (uint8_t(down - 1U) < 7U && m < 0x1000000UL) {
     m <<= 8;
     for (uint8_t r = down; r != 0; --r) m >>= 1;
     out = v_mm.raw() < 0 ? -int32_t(m) : int32_t(m);
@@ -140,7 +140,7 @@ STRIDER_ALWAYS_INLINE bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
 STRIDER_ALWAYS_INLINE bool from_mm_abs(Fixed v_mm, int8_t shift, uint32_t& out) {
   const uint8_t down = uint8_t(shift - 4);
   uint32_t m = Fixed::abs_raw(v_mm.raw());
-  if (down - 1U < 7U && m < 0x1000000UL) {  // as in from_mm()
+  if (uint8_t(down - 1U) < 7U && m < 0x1000000UL) {  // as in from_mm()
     m <<= 8;
     for (uint8_t r = down; r != 0; --r) m >>= 1;
     out = m;
