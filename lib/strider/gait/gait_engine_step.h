@@ -53,6 +53,29 @@ void GaitEngine<S>::step_walk(S dt) {
     odo_s_ = s * k;
   }
 
+  const uint8_t n = cfg_.leg_count;
+  bool changed = step_ground(step, dt);
+  if (step_lift(edge)) changed = true;
+  step_swing(dt);
+  for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
+    if (!contact_[i]) continue;
+    const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
+    foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
+  }
+  if (changed) support_dirty_ = true;
+  step_shift(dt);
+
+  if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
+  if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
+  if (state_ == GaitState::kStopping && at_rest()) {
+    bool still = shift_.x_mm() == S(0) && shift_.y_mm() == S(0);
+    for (uint8_t i = 0; i < n && still; ++i) still = contact_[i] && near_home(i);
+    if (still) state_ = GaitState::kStanding;
+  }
+}
+
+template <typename S>
+bool GaitEngine<S>::step_ground(const BodyStep<S>& step, S dt) {
   clock_.advance(dt, hz_);
   const uint32_t delta = Phase16(clock_.now() - clock_.before());
   const uint8_t n = cfg_.leg_count;
@@ -76,23 +99,7 @@ void GaitEngine<S>::step_walk(S dt) {
     leg_ik::copy_point(step.move_ground_point(foot_[i]), foot_[i]);
     stance_elapsed_[i] = min_of(stance_elapsed_[i] + int32_t(delta), int32_t(kPhaseOne));
   }
-  if (step_lift(edge)) changed = true;
-  step_swing(dt);
-  for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
-    if (!contact_[i]) continue;
-    const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
-    foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
-  }
-  if (changed) support_dirty_ = true;
-  step_shift(dt);
-
-  if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
-  if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
-  if (state_ == GaitState::kStopping && at_rest()) {
-    bool still = shift_.x_mm() == S(0) && shift_.y_mm() == S(0);
-    for (uint8_t i = 0; i < n && still; ++i) still = contact_[i] && near_home(i);
-    if (still) state_ = GaitState::kStanding;
-  }
+  return changed;
 }
 
 template <typename S>
