@@ -196,6 +196,27 @@ void exact_functions(Sink& out) {
     const int32_t y = (k & 4) ? -int32_t(my & 0x7FFFFFFFUL) : int32_t(my & 0x7FFFFFFFUL);
     emit(out, y, x, strider::detail::atan2_lean_raw(y, x));
   }
+  // The wide square root of the leg solvers (AVR assembly around the root
+  // kernel against the host's C): radicands of every magnitude, so the
+  // final shift goes both ways.
+  out.section(STRIDER_BENCH_STR("wide_sqrt_sq"));
+  for (uint8_t k = 0; k < 4 * kExactRandomCases; ++k) {
+    uint32_t x = (uint32_t(rng.next()) >> 2) >> (rng.next() % 30u);
+    if (k < 4) x = k < 2 ? uint32_t(k + 1) : 0x3FFFFFFFUL - (k & 1);
+    if (x == 0) x = 5;
+    emit(out, int32_t(x), strider::leg_ik::wide::sqrt_sq(x));
+  }
+  // sq(a) + sq(b) of the wide units (AVR assembly against the host's C):
+  // both signs, every magnitude, and the ends of the range.
+  out.section(STRIDER_BENCH_STR("wide_sq_sum"));
+  for (uint8_t k = 0; k < 4 * kExactRandomCases; ++k) {
+    int32_t a = int32_t(uint32_t(rng.next()) >> (rng.next() % 32u));
+    int32_t b = int32_t(uint32_t(rng.next()) >> (rng.next() % 32u));
+    if (k & 1) a = -a;
+    if (k & 2) b = -b;
+    if (k < 4) a = k < 2 ? int32_t(0x7FFFFFFFL) : -0x7FFFFFFFL - 1, b = k & 1 ? 0 : -1;
+    emit(out, a, b, int32_t(strider::leg_ik::wide::sq_sum(a, b)));
+  }
 }
 
 //! IK of one target: target, status, joints, point reached (sentinels when

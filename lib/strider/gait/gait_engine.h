@@ -272,6 +272,15 @@ class GaitEngine {
   void update_landing();
 
   void step_walk(S dt);
+  //! step_walk()'s feet in the air, apart so that its locals do not widen
+  //! step_walk()'s stack frame (on the AVR, offsets past 63 bytes cost extra).
+  STRIDER_NOINLINE void step_swing(S dt);
+  //! step_walk()'s clock, touch-downs and feet on the ground (moved by
+  //! `step`), apart for the same reason; true when a foot landed.
+  STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
+  //! step_walk()'s lift-offs (edge: the feet at the edge of their reach
+  //! before the step), apart for the same reason; true when a foot lifted.
+  STRIDER_NOINLINE bool step_lift(const bool* edge);
   void step_shift(S dt);
   void update_margin() const;
   //! The support polygon of the feet down now (stability.h), built when

@@ -15,7 +15,8 @@ void GaitEngine<S>::step_walk(S dt) {
   StepCache& sc = step_cache_;
   if (!(sc.vx == vx_ && sc.vy == vy_ && sc.wz == wz_ && sc.dt == dt))
     sc = StepCache{vx_, vy_, wz_, dt, BodyStep<S>::make(vx_, vy_, wz_, dt)};
-  BodyStep<S> step = sc.step;
+  // Field by field: avr-gcc copies the whole struct with a byte loop.
+  BodyStep<S> step{sc.step.dx_mm, sc.step.dy_mm, sc.step.dyaw, sc.step.cos_yaw, sc.step.sin_yaw};
   // A foot on the ground at the edge of its reach that this step would take
   // farther out holds the body for this tick (it lifts as soon as it can).
   held_ = false;
@@ -52,6 +53,29 @@ void GaitEngine<S>::step_walk(S dt) {
     odo_s_ = s * k;
   }
 
+  const uint8_t n = cfg_.leg_count;
+  bool changed = step_ground(step, dt);
+  if (step_lift(edge)) changed = true;
+  step_swing(dt);
+  for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
+    if (!contact_[i]) continue;
+    const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
+    foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
+  }
+  if (changed) support_dirty_ = true;
+  step_shift(dt);
+
+  if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
+  if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
+  if (state_ == GaitState::kStopping && at_rest()) {
+    bool still = shift_.x_mm() == S(0) && shift_.y_mm() == S(0);
+    for (uint8_t i = 0; i < n && still; ++i) still = contact_[i] && near_home(i);
+    if (still) state_ = GaitState::kStanding;
+  }
+}
+
+template <typename S>
+bool GaitEngine<S>::step_ground(const BodyStep<S>& step, S dt) {
   clock_.advance(dt, hz_);
   const uint32_t delta = Phase16(clock_.now() - clock_.before());
   const uint8_t n = cfg_.leg_count;
@@ -75,6 +99,13 @@ void GaitEngine<S>::step_walk(S dt) {
     leg_ik::copy_point(step.move_ground_point(foot_[i]), foot_[i]);
     stance_elapsed_[i] = min_of(stance_elapsed_[i] + int32_t(delta), int32_t(kPhaseOne));
   }
+  return changed;
+}
+
+template <typename S>
+bool GaitEngine<S>::step_lift(const bool* edge) {
+  const uint8_t n = cfg_.leg_count;
+  bool changed = false;
   // Lift-offs when the clock passes a foot's offset.
   for (uint8_t i = 0; i < n; ++i) {
     if (!contact_[i]) continue;
@@ -105,6 +136,12 @@ void GaitEngine<S>::step_walk(S dt) {
                    : cfg_.step_height_mm;
     changed = true;
   }
+  return changed;
+}
+
+template <typename S>
+void GaitEngine<S>::step_swing(S dt) {
+  const uint8_t n = cfg_.leg_count;
   // Feet in the air follow the swing shape toward a touch-down point that
   // moves at most max_step per tick (command and gait changes).
   const S max_step = cfg_.target_speed_mm_s * dt;
@@ -140,21 +177,6 @@ void GaitEngine<S>::step_walk(S dt) {
     foot_[i].x = add_inline(lift_[i].x, sub_inline(target_[i].x, lift_[i].x) * sp.u);
     foot_[i].y = add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u);
     foot_[i].z = add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift);
-  }
-  for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
-    if (!contact_[i]) continue;
-    const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
-    foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
-  }
-  if (changed) support_dirty_ = true;
-  step_shift(dt);
-
-  if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
-  if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
-  if (state_ == GaitState::kStopping && at_rest()) {
-    bool still = shift_.x_mm() == S(0) && shift_.y_mm() == S(0);
-    for (uint8_t i = 0; i < n && still; ++i) still = contact_[i] && near_home(i);
-    if (still) state_ = GaitState::kStanding;
   }
 }
 

@@ -139,21 +139,24 @@ class Walker {
       }
       r.contact = engine_.contact(i);
       const Vec3<S> leg_target = to_leg_unchecked(i, r.target_mm);
-      Vec3<S> reached;
       if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
         r.clamp_mm = S(0);
-        r.ik_status = legs_[i].ik(leg_target, r.q, reached, ik_options_);
+        // The point reached (leg frame) goes into foot_mm, which the IK
+        // leaves alone when it is unreachable, and is then replaced by its
+        // body-frame point: no local to clear and copy.
+        r.ik_status = legs_[i].ik(leg_target, r.q, r.foot_mm, ik_options_);
         r.status = r.ik_status;
         // A target reached as given is the body-frame target itself: no
         // transform back (4 products).
         if (r.ik_status == IkStatus::kUnreachable) continue;
-        if (same(reached, leg_target)) {
+        if (same(r.foot_mm, leg_target)) {
           copy(r.target_mm, r.foot_mm);
         } else {
-          r.foot_mm = to_body(i, reached);
+          r.foot_mm = to_body(i, r.foot_mm);
         }
         continue;
       }
+      Vec3<S> reached;
       S moved = S(0);
       const Vec3<S> t = proj_.apply(leg_target, moved);
       r.clamp_mm = moved;

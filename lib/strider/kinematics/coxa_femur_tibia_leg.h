@@ -53,7 +53,7 @@ STRIDER_ALWAYS_INLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& tar
       !wide::sub_raw(target.z, leg.d1_mm, dz) || !wide::from_mm(dz, leg.unit_shift, v) ||
       leg.coxa_unit.raw() >= (int32_t(8) << 16))
     return false;
-  const uint32_t rho2 = wide::sq_abs(x) + wide::sq_abs(y);  // [Q6.24]
+  const uint32_t rho2 = wide::sq_sum(int32_t(x), int32_t(y));  // [Q6.24]; x, y < 2^31
   // rho >= 1/16 unit keeps ~16 significant bits; rho < 8 units fits wide units.
   if (rho2 < 0x10000UL || rho2 >= 0x40000000UL) return false;
   const int32_t h = wide::sqrt_sq(rho2) - wide::from_unit(leg.coxa_unit);  // eq 11, row 1

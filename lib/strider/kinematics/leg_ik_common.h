@@ -188,12 +188,26 @@ bool within_limits(const JointLimits<S, N>& lim, const JointVector<S, N>& q) {
 }
 
 //! JointLimits::contains for the fast paths, always inlined (avr-gcc at
-//! -Os otherwise calls it from the larger solvers).
+//! -Os otherwise calls it from the larger solvers) and unrolled: avr-gcc
+//! keeps the loop, which reloads every joint just stored (~40 cycles a joint
+//! on the AVR instead of ~25).
+template <uint8_t I, uint8_t N>
+struct LimitsFrom {
+  template <typename S>
+  STRIDER_ALWAYS_INLINE static bool contain(const JointLimits<S, N>& lim, const JointVector<S, N>& q) {
+    return !(q[I] < lim.lo[I] || lim.hi[I] < q[I]) && LimitsFrom<I + 1, N>::contain(lim, q);
+  }
+};
+template <uint8_t N>
+struct LimitsFrom<N, N> {
+  template <typename S>
+  STRIDER_ALWAYS_INLINE static bool contain(const JointLimits<S, N>&, const JointVector<S, N>&) {
+    return true;
+  }
+};
 template <typename S, uint8_t N>
 STRIDER_ALWAYS_INLINE bool limits_contain(const JointLimits<S, N>& lim, const JointVector<S, N>& q) {
-  for (uint8_t i = 0; i < N; ++i)
-    if (q[i] < lim.lo[i] || lim.hi[i] < q[i]) return false;
-  return true;
+  return LimitsFrom<0, N>::contain(lim, q);
 }
 
 //! reached = p field by field: avr-gcc copies a whole Vec3 with a byte loop.

@@ -232,7 +232,29 @@ STRIDER_ALWAYS_INLINE uint16_t atan2_lean_avr(uint32_t hi, uint32_t lo, uint8_t&
 STRIDER_ALWAYS_INLINE int32_t atan2_lean_raw(int32_t y, int32_t x) {
   uint8_t flags;
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
-  int32_t a = int32_t(atan2_lean_avr(uint32_t(x), uint32_t(y), flags));
+  const uint16_t octant = atan2_lean_avr(uint32_t(x), uint32_t(y), flags);
+  // The C's unfolding (below) in assembly too (~30 -> ~15 cycles): c - a
+  // as ~a + (c + 1), -a as ~a + 1.
+  int32_t a;
+  __asm__(
+      "movw %A[a], %[o]\n\t" "clr %C[a]\n\t" "clr %D[a]\n\t"
+      "sbrs %[f], 2\n\t" "rjmp 1f\n\t"
+      "com %A[a]\n\t" "com %B[a]\n\t" "com %C[a]\n\t" "com %D[a]\n\t"
+      "subi %A[a], lo8(-(%[half] + 1))\n\t" "sbci %B[a], hi8(-(%[half] + 1))\n\t"
+      "sbci %C[a], hlo8(-(%[half] + 1))\n\t" "sbci %D[a], hhi8(-(%[half] + 1))\n\t"
+      "1:\n\t"
+      "sbrs %[f], 0\n\t" "rjmp 2f\n\t"
+      "com %A[a]\n\t" "com %B[a]\n\t" "com %C[a]\n\t" "com %D[a]\n\t"
+      "subi %A[a], lo8(-(%[pi] + 1))\n\t" "sbci %B[a], hi8(-(%[pi] + 1))\n\t"
+      "sbci %C[a], hlo8(-(%[pi] + 1))\n\t" "sbci %D[a], hhi8(-(%[pi] + 1))\n\t"
+      "2:\n\t"
+      "sbrs %[f], 1\n\t" "rjmp 3f\n\t"
+      "com %A[a]\n\t" "com %B[a]\n\t" "com %C[a]\n\t" "com %D[a]\n\t"
+      "subi %A[a], 0xFF\n\t" "sbci %B[a], 0xFF\n\t" "sbci %C[a], 0xFF\n\t" "sbci %D[a], 0xFF\n\t"
+      "3:"
+      : [a] "=&d"(a)
+      : [o] "r"(octant), [f] "r"(flags), [half] "i"(int32_t(kHalfPiQ24 >> 8)), [pi] "i"(int32_t((kPiQ24 + 128) >> 8)));
+  return a;
 #else
   // Only the signs of x and y are needed at the end: one flag byte keeps
   // two 32-bit values from staying live in registers to the end.
@@ -248,10 +270,10 @@ STRIDER_ALWAYS_INLINE int32_t atan2_lean_raw(int32_t y, int32_t x) {
   if (hi < 0x10000UL) { hi <<= 16; lo <<= 16; }
   if (hi < 0x1000000UL) { hi <<= 8; lo <<= 8; }
   int32_t a = int32_t(atan_lean_octant(hi, lo));
-#endif
   if (flags & kLeanSwapped) a = int32_t(kHalfPiQ24 >> 8) - a;
   if (flags & kLeanXNeg) a = int32_t((kPiQ24 + 128) >> 8) - a;
   return (flags & kLeanYNeg) ? -a : a;
+#endif
 }
 
 //! atan2_lean_raw() as one shared out-of-line copy (~0.3 KB each inlined
