@@ -57,6 +57,26 @@ TEST(StoredVelocityLimits, MatchTheSearch) {
   }
 }
 
+// The fingerprint's 1/16 mm from the float's bits = the float formula
+// int16_t(mm * 16 +- 0.5), halves and both signs included, over the range of
+// a model's sizes.
+TEST(StoredVelocityLimits, SixteenthsFromBitsMatchTheFloatFormula) {
+  const auto formula = [](float mm) { return uint16_t(int16_t(mm * 16.0f + (mm < 0.0f ? -0.5f : 0.5f))); };
+  const float edges[] = {0.0f, -0.0f, 1e-30f, 0.03124f, 0.03125f, 0.0625f, 0.09375f, 1.0f, -1.03125f,
+                         87.5f, -77.5f, 120.0f, -90.0f, 2047.96875f, -2047.96875f, 1e-3f, -1e-3f};
+  for (const float v : edges) {
+    EXPECT_EQ(strider::velocity_limit_encoding::sixteenths(v), formula(v)) << v;
+  }
+  uint32_t seed = 12345;
+  for (int n = 0; n < 200000; ++n) {
+    seed = seed * 1664525u + 1013904223u;
+    const float v = (float(seed >> 8) / float(1u << 24) - 0.5f) * 4090.0f;
+    ASSERT_EQ(strider::velocity_limit_encoding::sixteenths(v), formula(v)) << v;
+    const float h = float((int32_t(seed >> 15) - 65536) | 1) / 32.0f;  // on the halves: odd 1/32 mm
+    ASSERT_EQ(strider::velocity_limit_encoding::sixteenths(h), formula(h)) << h;
+  }
+}
+
 TEST(StoredVelocityLimits, OnlyForBuiltInModelsAtTheirDefaults) {
   const RobotModel& m = *strider::kAllRobots[3];
   strider::GaitParams p = strider::kGaitParams[3];
