@@ -38,11 +38,11 @@ inline uint32_t q16_code(float v) {
 }
 
 //! The stride [mm] of a code.
-inline float stride_of(uint16_t code, float) { return float(code) * (1.0f / float(kStrideUnitsPerMm)); }
-inline Fixed stride_of(uint16_t code, Fixed) { return Fixed::from_raw(int32_t(uint32_t(code) << kStrideRawShift)); }
+constexpr float stride_of(uint16_t code, float) { return float(code) * (1.0f / float(kStrideUnitsPerMm)); }
+constexpr Fixed stride_of(uint16_t code, Fixed) { return Fixed::from_raw(int32_t(uint32_t(code) << kStrideRawShift)); }
 //! The value of a Q16.16 code.
-inline float q16_of(uint32_t code, float) { return float(code) * (1.0f / 65536.0f); }
-inline Fixed q16_of(uint32_t code, Fixed) { return Fixed::from_raw(int32_t(code)); }
+constexpr float q16_of(uint32_t code, float) { return float(code) * (1.0f / 65536.0f); }
+constexpr Fixed q16_of(uint32_t code, Fixed) { return Fixed::from_raw(int32_t(code)); }
 
 //! mm [mm] in 1/16 mm, rounded half away from zero, as int16_t(mm * 16 +-
 //! 0.5) gives for |mm| < 2048, from the float's bits: no float arithmetic
