@@ -44,7 +44,22 @@ static_assert(strider::kWalkerLegs == kModel.leg_count, "STRIDER_WALKER_LEGS: th
 
 // Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.
 using Scalar = strider::Fixed;
-using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count()>;
+
+// The walker's gait configuration at the model's defaults, built at compile
+// time and kept in flash with the model's strides alone (not the whole
+// table): no float conversions or limits look-up at start-up.
+constexpr uint8_t model_index() {
+  uint8_t r = 0;
+  while (r < strider::kRobotCount && strider::kAllRobots[r] != &kModel) ++r;
+  return r;
+}
+constexpr uint8_t kModelIndex = model_index();
+static_assert(kModelIndex < strider::kRobotCount, "the firmware's model is a built-in one (stored velocity limits)");
+constexpr strider::StoredStrides kStrides PROGMEM = strider::stored_strides(kModelIndex);
+constexpr strider::GaitConfig<Scalar> kGaitConfig PROGMEM =
+    strider::stored_gait_config<Scalar>(kModelIndex, &kStrides.code[0][0]);
+
+using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count(), &kGaitConfig>;
 
 uint16_t g_servo_shadow[kBoards * strider::kPcaChannelsPerBoard];  // the boards this model uses
 Pca9685Output g_servos(g_servo_shadow, uint8_t(sizeof g_servo_shadow / sizeof g_servo_shadow[0]));

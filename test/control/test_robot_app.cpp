@@ -30,9 +30,10 @@ struct Lines {
   }
 };
 
-template <typename S>
+template <typename S, const strider::GaitConfig<S>* kStored = nullptr>
 struct Rig {
-  using App = strider::RobotApp<S, strider_test::RecordingServo, strider_test::FakeStore>;
+  using App = strider::RobotApp<S, strider_test::RecordingServo, strider_test::FakeStore, strider::kMaxServoJoints,
+                                kStored>;
   const strider::RobotModel& model;
   strider_test::RecordingServo out;
   strider_test::FakeStore store;
@@ -326,6 +327,36 @@ TEST(FlashNames, EqualToString) {
 }  // namespace
 
 namespace {
+
+// A firmware's RobotApp with its gait configuration from a compile-time
+// constant (stored_gait_config) runs exactly like one that builds it from
+// the model: the same boot, the same servo pulses standing up and walking.
+constexpr strider::GaitConfig<strider::Fixed> kStoredHexapod = strider::stored_gait_config<strider::Fixed>(3);
+TEST(RobotAppStoredConfig, RunsLikeTheConfigurationFromTheModel) {
+  ASSERT_EQ(strider::kAllRobots[3], &strider::kHexapod18);
+  Rig<strider::Fixed> built(strider::kHexapod18);
+  Rig<strider::Fixed, &kStoredHexapod> stored(strider::kHexapod18);
+  EXPECT_EQ(built.lines.sent, stored.lines.sent);
+  bool walked = false;
+  const auto same_run = [&](uint32_t ms, const char* every_100_ms) {
+    for (uint32_t t = 0; t < ms; t += 20) {
+      if (every_100_ms != nullptr && t % 100 == 0) {  // a phone's remote repeats its key
+        built.send(1, every_100_ms);
+        stored.send(1, every_100_ms);
+      }
+      built.run_ms(20);
+      stored.run_ms(20);
+      ASSERT_EQ(built.ticks, stored.ticks) << "at " << t << " ms";
+      walked = walked || stored.app->motion().walker().engine().state() == strider::GaitState::kWalking;
+    }
+  };
+  same_run(strider::kSoftStartStepMs * 6 + 3000, nullptr);
+  EXPECT_EQ(stored.app->motion().walker().engine().state(), strider::GaitState::kStanding);
+  EXPECT_EQ(stored.ticks.size(), size_t(strider::kHexapod18.joint_count()));
+  same_run(3000, "F");
+  EXPECT_TRUE(walked);
+  EXPECT_EQ(built.lines.sent, stored.lines.sent);
+}
 
 // Tuned gait parameters replace the defaults before the robot stands; bad
 // ones change nothing.

@@ -57,6 +57,26 @@ TEST(StoredVelocityLimits, MatchTheSearch) {
   }
 }
 
+// The fingerprint's 1/16 mm from the float's bits = the float formula
+// int16_t(mm * 16 +- 0.5), halves and both signs included, over the range of
+// a model's sizes.
+TEST(StoredVelocityLimits, SixteenthsFromBitsMatchTheFloatFormula) {
+  const auto formula = [](float mm) { return uint16_t(int16_t(mm * 16.0f + (mm < 0.0f ? -0.5f : 0.5f))); };
+  const float edges[] = {0.0f, -0.0f, 1e-30f, 0.03124f, 0.03125f, 0.0625f, 0.09375f, 1.0f, -1.03125f,
+                         87.5f, -77.5f, 120.0f, -90.0f, 2047.96875f, -2047.96875f, 1e-3f, -1e-3f};
+  for (const float v : edges) {
+    EXPECT_EQ(strider::velocity_limit_encoding::sixteenths(v), formula(v)) << v;
+  }
+  uint32_t seed = 12345;
+  for (int n = 0; n < 200000; ++n) {
+    seed = seed * 1664525u + 1013904223u;
+    const float v = (float(seed >> 8) / float(1u << 24) - 0.5f) * 4090.0f;
+    ASSERT_EQ(strider::velocity_limit_encoding::sixteenths(v), formula(v)) << v;
+    const float h = float((int32_t(seed >> 15) - 65536) | 1) / 32.0f;  // on the halves: odd 1/32 mm
+    ASSERT_EQ(strider::velocity_limit_encoding::sixteenths(h), formula(h)) << h;
+  }
+}
+
 TEST(StoredVelocityLimits, OnlyForBuiltInModelsAtTheirDefaults) {
   const RobotModel& m = *strider::kAllRobots[3];
   strider::GaitParams p = strider::kGaitParams[3];
@@ -115,6 +135,75 @@ TYPED_TEST(GaitTickTest, ConfiguredInPlaceLikeFromACopy) {
       for (uint8_t j = 0; j < m->dof(); ++j) ASSERT_EQ(a->leg(i).q[j], b->leg(i).q[j]);
   }
 }
+
+// A firmware's gait configuration built at compile time (stored_gait_config,
+// finished at start-up) = the one fill_gait_config() builds from the model,
+// field by field and bit for bit; a walker configured from it walks the same.
+template <typename S>
+void expect_same_config(const GaitConfig<S>& a, const GaitConfig<S>& b) {
+  ASSERT_EQ(a.leg_count, b.leg_count);
+  for (uint8_t i = 0; i < a.leg_count; ++i) {
+    EXPECT_EQ(a.home[i].x, b.home[i].x);
+    EXPECT_EQ(a.home[i].y, b.home[i].y);
+    EXPECT_EQ(a.home[i].z, b.home[i].z);
+    EXPECT_EQ(a.edge_mm[i], b.edge_mm[i]);
+    for (int k = 0; k < strider::VelocityLimits<S>::kDirections; ++k)
+      ASSERT_EQ(a.limits.stride_mm(i, uint8_t(k)), b.limits.stride_mm(i, uint8_t(k)));
+  }
+  EXPECT_EQ(a.shape, b.shape);
+  const S GaitConfig<S>::*fields[] = {&GaitConfig<S>::step_height_mm, &GaitConfig<S>::stance_depth_mm,
+                                      &GaitConfig<S>::foot_radius_mm, &GaitConfig<S>::com_x_mm,
+                                      &GaitConfig<S>::com_y_mm, &GaitConfig<S>::margin_mm,
+                                      &GaitConfig<S>::shift_budget_mm, &GaitConfig<S>::sit_drop_mm,
+                                      &GaitConfig<S>::transition_s, &GaitConfig<S>::accel_mm_s2,
+                                      &GaitConfig<S>::yaw_accel_rad_s2, &GaitConfig<S>::shift_speed_mm_s,
+                                      &GaitConfig<S>::target_speed_mm_s, &GaitConfig<S>::pose_speed_mm_s,
+                                      &GaitConfig<S>::pose_rate_rad_s, &GaitConfig<S>::home_tolerance_mm};
+  for (const auto f : fields) EXPECT_EQ(a.*f, b.*f) << int(&f - fields);
+  EXPECT_EQ(a.shift_x_only, b.shift_x_only);
+  EXPECT_EQ(a.min_support, b.min_support);
+  EXPECT_EQ(a.unit_shift, b.unit_shift);
+  EXPECT_EQ(a.limits.leg_count, b.limits.leg_count);
+  EXPECT_EQ(a.limits.sideways, b.limits.sideways);
+  EXPECT_EQ(a.limits.min_hz, b.limits.min_hz);
+  EXPECT_EQ(a.limits.preferred_stride_mm, b.limits.preferred_stride_mm);
+  EXPECT_EQ(a.limits.lift_ms, b.limits.lift_ms);
+  EXPECT_EQ(a.limits.swing_ms_per_mm, b.limits.swing_ms_per_mm);
+  EXPECT_EQ(a.limits.stance_ms_per_mm, b.limits.stance_ms_per_mm);
+}
+
+TYPED_TEST(GaitTickTest, StoredConfigIsTheModelsConfig) {
+  using S = TypeParam;
+  for (uint8_t r = 0; r < strider::kRobotCount; ++r) {
+    const RobotModel& m = *strider::kAllRobots[r];
+    SCOPED_TRACE(m.name);
+    const strider::GaitParams& p = strider::kGaitParams[r];
+    strider::AnyLeg<S> legs[strider::kMaxLegs];
+    legs_of(m, legs);
+    GaitConfig<S> stored = strider::stored_gait_config<S>(r);
+    strider::finish_gait_config(stored);
+    expect_same_config(stored, strider::make_gait_config(m, legs, p, p.shape));
+    const GaitTable& g = *strider::find_gait(m, p.default_gait);
+    const GaitConfig<S> in_flash = strider::stored_gait_config<S>(r);  // flash_copy() is a copy on the host
+    std::unique_ptr<Walker<S>> a(new Walker<S>()), b(new Walker<S>());
+    ASSERT_TRUE(a->configure(m, g, p, p.shape, true));
+    ASSERT_TRUE(b->configure_stored(m, g, &in_flash, true));
+    expect_same_config(b->engine().config(), a->engine().config());
+    a->engine().stand_up();
+    b->engine().stand_up();
+    a->engine().set_command(sc<S>(30.0), S(0), sc<S>(0.1));
+    b->engine().set_command(sc<S>(30.0), S(0), sc<S>(0.1));
+    for (int t = 0; t < 150; ++t) {
+      a->tick(sc<S>(kDt));
+      b->tick(sc<S>(kDt));
+    }
+    for (uint8_t i = 0; i < m.leg_count; ++i)
+      for (uint8_t j = 0; j < m.dof(); ++j) ASSERT_EQ(a->leg(i).q[j], b->leg(i).q[j]);
+  }
+}
+// The compile-time configuration is a constant expression (what a firmware needs).
+constexpr GaitConfig<Fixed> kStoredHexapod = strider::stored_gait_config<Fixed>(3);
+static_assert(kStoredHexapod.leg_count == 6 && kStoredHexapod.min_support == 3, "stored_gait_config: constant");
 
 // The exact edge test that beyond_edge() short-cuts.
 template <typename S>

@@ -50,52 +50,56 @@ int main() {
   std::printf("#ifndef STRIDER_GAIT_VELOCITY_LIMIT_TABLE_H\n#define STRIDER_GAIT_VELOCITY_LIMIT_TABLE_H\n\n");
   std::printf("#include <stdint.h>\n\n#include \"../math/flash_table.h\"\n\n");
   std::printf("namespace strider {\nnamespace detail {\n\n");
+  // In the class, constexpr: a firmware reads its model's entries at compile
+  // time (gait_config.h's stored_gait_config()).
   std::printf("template <typename Dummy = void>\nstruct VelocityLimitTables {\n");
   std::printf("  //! Longest stride of leg i along direction k of robot r (kAllRobots order).\n");
-  std::printf("  static const uint16_t kStride[%d][%d][%d];\n", int(kRobotCount), int(kMaxLegs), kDirections);
-  std::printf("  //! lift_ms, swing_ms_per_mm, stance_ms_per_mm of robot r.\n");
-  std::printf("  static const uint16_t kServo[%d][6];\n", int(kRobotCount));
-  std::printf("  //! Geometry fingerprint of robot r (velocity_limit_encoding.h).\n");
-  std::printf("  static const uint16_t kGeometry[%d][%d];\n};\n\n", int(kRobotCount), int(enc::kFingerprintWords));
-  std::printf("template <typename Dummy>\nconst uint16_t VelocityLimitTables<Dummy>::kStride[%d][%d][%d] STRIDER_PROGMEM = {\n",
-              int(kRobotCount), int(kMaxLegs), kDirections);
+  std::printf("  static constexpr uint16_t kStride[%d][%d][%d] STRIDER_PROGMEM = {\n", int(kRobotCount), int(kMaxLegs),
+              kDirections);
   VelocityLimits<float> all[kRobotCount];
   for (uint8_t r = 0; r < kRobotCount; ++r) {
     const strider::RobotModel& m = *strider::kAllRobots[r];
     all[r] = limits_of(m, strider::kGaitParams[r]);
-    std::printf("    {  // %s\n", m.name);
+    std::printf("      {  // %s\n", m.name);
     for (uint8_t i = 0; i < kMaxLegs; ++i) {
-      std::printf("        {");
+      std::printf("          {");
       for (int k = 0; k < kDirections; ++k) {
         const unsigned code = i < m.leg_count ? unsigned(all[r].stride_code[i][k]) : 0u;
         std::printf("%s%u", k ? ", " : "", code);
       }
       std::printf("},\n");
     }
-    std::printf("    },\n");
+    std::printf("      },\n");
   }
-  std::printf("};\n\n");
-  std::printf("template <typename Dummy>\nconst uint16_t VelocityLimitTables<Dummy>::kServo[%d][6] STRIDER_PROGMEM = {\n",
-              int(kRobotCount));
+  std::printf("  };\n");
+  std::printf("  //! lift_ms, swing_ms_per_mm, stance_ms_per_mm of robot r.\n");
+  std::printf("  static constexpr uint16_t kServo[%d][6] STRIDER_PROGMEM = {\n", int(kRobotCount));
   for (uint8_t r = 0; r < kRobotCount; ++r) {
     const float v[3] = {all[r].lift_ms, all[r].swing_ms_per_mm, all[r].stance_ms_per_mm};
-    std::printf("    {");
+    std::printf("      {");
     for (int j = 0; j < 3; ++j) {
       const uint32_t q = enc::q16_code(v[j]);
       std::printf("%s%u, %u", j ? ", " : "", unsigned(q & 0xFFFFu), unsigned(q >> 16));
     }
     std::printf("},  // %s\n", strider::kAllRobots[r]->name);
   }
-  std::printf("};\n\n");
-  std::printf("template <typename Dummy>\nconst uint16_t VelocityLimitTables<Dummy>::kGeometry[%d][%d] STRIDER_PROGMEM = {\n",
-              int(kRobotCount), int(enc::kFingerprintWords));
+  std::printf("  };\n");
+  std::printf("  //! Geometry fingerprint of robot r (velocity_limit_encoding.h).\n");
+  std::printf("  static constexpr uint16_t kGeometry[%d][%d] STRIDER_PROGMEM = {\n", int(kRobotCount),
+              int(enc::kFingerprintWords));
   for (uint8_t r = 0; r < kRobotCount; ++r) {
     uint16_t print[enc::kFingerprintWords];
     enc::geometry_fingerprint(*strider::kAllRobots[r], print);
-    std::printf("    {");
+    std::printf("      {");
     for (int k = 0; k < enc::kFingerprintWords; ++k) std::printf("%s%u", k ? ", " : "", unsigned(print[k]));
     std::printf("},  // %s\n", strider::kAllRobots[r]->name);
   }
-  std::printf("};\n\n}  // namespace detail\n}  // namespace strider\n\n#endif  // STRIDER_GAIT_VELOCITY_LIMIT_TABLE_H\n");
+  std::printf("  };\n};\n\n");
+  std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kStride[%d][%d][%d];\n",
+              int(kRobotCount), int(kMaxLegs), kDirections);
+  std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kServo[%d][6];\n", int(kRobotCount));
+  std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kGeometry[%d][%d];\n",
+              int(kRobotCount), int(enc::kFingerprintWords));
+  std::printf("\n}  // namespace detail\n}  // namespace strider\n\n#endif  // STRIDER_GAIT_VELOCITY_LIMIT_TABLE_H\n");
   return 0;
 }

@@ -93,7 +93,11 @@ inline int32_t to_tenths(Fixed v) {
 // reads a copy on the stack in begin(), the servo stage when the PWM or the
 // trims change).
 
-template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints>
+//! kStoredConfig: the model's gait configuration in flash without its ramps
+//! (stored_gait_config(), a firmware's constant of its model at the gait
+//! defaults; nullptr: built from the model at start-up, fill_gait_config()).
+template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints,
+          const GaitConfig<S>* kStoredConfig = nullptr>
 class RobotApp {
   class Sink;
 
@@ -234,7 +238,18 @@ class RobotApp {
     boards_ = pca_board_count(model);
     controller_.set_avoid_clear_mm(avoid_clear_mm(model));  // the copy: model_ may be in flash
     GaitParams params;
-    return gait_params_of(model, &params) && motion_.configure(model, params, false) && configure_stage(model);
+    return gait_params_of(model, &params) && configure_walker(model, params, Stored<given(kStoredConfig)>()) &&
+           configure_stage(model);
+  }
+  // The walker from the model (only the one called is built).
+  template <bool kOn>
+  struct Stored {};
+  static constexpr bool given(const void* p) { return p != nullptr; }
+  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<false>) {
+    return motion_.configure(model, params, false);
+  }
+  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>) {
+    return motion_.configure_stored(model, params, kStoredConfig, false);
   }
   // Not inlined: the stage's temporaries are not on the stack with the
   // walker's configuration. The stage reads the model again (model_, not

@@ -39,9 +39,19 @@ class WalkerMotion {
     if (!load_gait(model, params.default_gait, &gait) ||
         !walker_.configure(model, gait, params, params.shape, true, solve_now))
       return false;
-    offsets_ = BodyOffsets<S>::zero();
-    have_command_ = false;
-    stand_height_mm_ = -walker_.engine().config().home[0].z;
+    configured();
+    return true;
+  }
+
+  //! The same at the model's gait defaults `params` with their configuration
+  //! from flash (Walker::configure_stored(): a firmware's constant).
+  bool configure_stored(const RobotModel& model, const GaitParams& params, const GaitConfig<S>* flash_config,
+                        bool solve_now = true) {
+    GaitTable gait;
+    if (!load_gait(model, params.default_gait, &gait) ||
+        !walker_.configure_stored(model, gait, flash_config, true, solve_now))
+      return false;
+    configured();
     return true;
   }
 
@@ -109,6 +119,13 @@ class WalkerMotion {
   const BodyOffsets<S>& offsets() const { return offsets_; }
 
  private:
+  //! After the walker's configuration: no offsets, no command, the standing height.
+  void configured() {
+    offsets_ = BodyOffsets<S>::zero();
+    have_command_ = false;
+    stand_height_mm_ = -walker_.engine().config().home[0].z;
+  }
+
   //! Every leg's standing foot, seen from a body at offsets o, must be within
   //! the joint limits: exactly for 3-DOF legs; a 2-DOF leg reaches only a
   //! surface, so its nearest point (kClamped) is what the walker uses too.

@@ -41,7 +41,7 @@ struct GaitConfig {
   bool shift_x_only = false;    //!< planar legs: the body can only shift along x
   uint8_t min_support = 2;      //!< never lift a foot if fewer would stay down
   int8_t unit_shift = 0;        //!< working units of the support polygon (stability.h)
-  S edge_mm[kWalkerLegs];          //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
+  S edge_mm[kWalkerLegs] = {};     //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
   VelocityLimits<S> limits;
 };
 
@@ -50,6 +50,40 @@ enum class LimitsSource : uint8_t {
   kStoredOrSearch = 0,  //!< the generated table when it has the model and parameters, else the search
   kSearch = 1           //!< always the IK search (velocity_limits.h)
 };
+
+namespace gait_config_detail {
+template <typename S>
+constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
+//! The largest |x| or |y| of the standing feet [mm].
+template <typename S>
+constexpr S reach_of(const GaitConfig<S>& c) {
+  S reach = S(0);
+  for (uint8_t i = 0; i < c.leg_count; ++i) reach = max_of(reach, max_of(magnitude(c.home[i].x), magnitude(c.home[i].y)));
+  return reach;
+}
+//! The fixed speed limits of every configuration.
+template <typename S>
+constexpr void set_speeds(GaitConfig<S>& c) {
+  c.shift_speed_mm_s = scalar<S>(400.0);
+  c.pose_speed_mm_s = scalar<S>(50.0);
+  c.pose_rate_rad_s = scalar<S>(0.5);
+  c.home_tolerance_mm = scalar<S>(0.5);
+}
+}  // namespace gait_config_detail
+
+//! The ramps of a configuration whose other fields are set: from standing to
+//! the top forward speed of a trot-like duty in one default cycle, which
+//! keeps every first stance within its stride, and the touch-down points'
+//! speed. Run time only (velocity plans); fill_gait_config() ends with it.
+template <typename S>
+void finish_gait_config(GaitConfig<S>& c) {
+  const S reach = gait_config_detail::reach_of(c);
+  const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
+  const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
+  c.accel_mm_s2 = max_of(top_speed * c.limits.min_hz, S(1));
+  c.yaw_accel_rad_s2 = max_of(top_yaw * c.limits.min_hz, scalar<S>(0.05));
+  c.target_speed_mm_s = max_of((top_speed + top_yaw * reach) * S(2), scalar<S>(10.0));
+}
 
 //! Builds (in c) the configuration of `model` with `legs` (AnyLeg::from_model for
 //! every leg) and gait defaults `params`, for swing shape `shape`. A built-in
@@ -98,17 +132,80 @@ void fill_gait_config(GaitConfig<S>& c, const RobotModel& model, const AnyLeg<S>
     for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
     c.edge_mm[i] = shortest * scalar<S>(0.5);
   }
-  // Ramps: from standing to the top forward speed of a trot-like duty in one
-  // default cycle, which keeps every first stance within its stride.
-  const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
-  const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
-  c.accel_mm_s2 = max_of(top_speed * c.limits.min_hz, S(1));
-  c.yaw_accel_rad_s2 = max_of(top_yaw * c.limits.min_hz, scalar<S>(0.05));
-  c.shift_speed_mm_s = scalar<S>(400.0);
-  c.target_speed_mm_s = max_of((top_speed + top_yaw * reach) * S(2), scalar<S>(10.0));
-  c.pose_speed_mm_s = scalar<S>(50.0);
-  c.pose_rate_rad_s = scalar<S>(0.5);
-  c.home_tolerance_mm = scalar<S>(0.5);
+  gait_config_detail::set_speeds(c);
+  finish_gait_config(c);
+}
+
+//! One robot's strides of the stored table ([leg][direction], 1/32 mm):
+//! what a firmware keeps in flash of velocity_limit_table.h.
+struct StoredStrides {
+  uint16_t code[kMaxLegs][VelocityLimits<float>::kDirections];
+};
+constexpr StoredStrides stored_strides(uint8_t r) {
+  StoredStrides s{};
+  for (uint8_t i = 0; i < kMaxLegs; ++i)
+    for (uint8_t k = 0; k < VelocityLimits<float>::kDirections; ++k) s.code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
+  return s;
+}
+
+//! What fill_gait_config() gives built-in model r (kAllRobots[r]) at its
+//! gait defaults (kGaitParams[r], the stored velocity limits) before
+//! finish_gait_config() adds the ramps, as a constant: a firmware, whose
+//! model is a constant of the build, keeps it in flash instead of converting
+//! the float model and looking the limits up at start-up. flash_codes: where
+//! the strides are (STRIDER_VELOCITY_SEARCH 0; nullptr: the whole table's).
+template <typename S>
+constexpr GaitConfig<S> stored_gait_config(uint8_t r, const uint16_t* flash_codes = nullptr) {
+  namespace enc = velocity_limit_encoding;
+  using T = detail::VelocityLimitTables<>;
+  const RobotModel& model = *kAllRobots[r];
+  const GaitParams& params = kGaitParams[r];
+  GaitConfig<S> c{};
+  c.leg_count = model.leg_count;
+  for (uint8_t i = 0; i < model.leg_count; ++i) {
+    const Vec3<float>& h = model.legs[i].stand_mm;
+    c.home[i] = Vec3<S>(scalar<S>(double(h.x)), scalar<S>(double(h.y)), scalar<S>(double(h.z)));
+  }
+  const S reach = gait_config_detail::reach_of(c);
+  c.shape = params.shape;
+  c.step_height_mm = scalar<S>(params.step_height_mm);
+  c.stance_depth_mm = scalar<S>(params.stance_depth_mm);
+  c.foot_radius_mm = scalar<S>(params.foot_radius_mm);
+  c.com_x_mm = scalar<S>(params.com_x_mm);
+  c.com_y_mm = scalar<S>(params.com_y_mm);
+  c.margin_mm = scalar<S>(params.margin_mm);
+  c.shift_budget_mm = scalar<S>(params.shift_budget_mm);
+  c.sit_drop_mm = scalar<S>(params.sit_drop_mm);
+  c.transition_s = scalar<S>(params.transition_s);
+  c.shift_x_only = model.kind == LegKind::kPlanar;
+  c.min_support = model.leg_count == 6 ? 3 : 2;
+  c.unit_shift = gait_units::shift_for(reach + reach);
+  // stored_velocity_limits()'s.
+  c.limits.leg_count = model.leg_count;
+  c.limits.sideways = model.kind != LegKind::kPlanar;
+  c.limits.min_hz = S(1) / scalar<S>(params.cycle_s);
+  c.limits.preferred_stride_mm = scalar<S>(params.step_length_mm);
+#if STRIDER_VELOCITY_SEARCH
+  (void)flash_codes;
+  for (uint8_t i = 0; i < kMaxLegs; ++i)
+    for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) c.limits.stride_code[i][k] = T::kStride[r][i][k];
+#else
+  c.limits.flash_codes = flash_codes != nullptr ? flash_codes : &T::kStride[r][0][0];
+#endif
+  S servo[3] = {};
+  for (uint8_t j = 0; j < 3; ++j)
+    servo[j] = enc::q16_of(uint32_t(T::kServo[r][2 * j]) | (uint32_t(T::kServo[r][2 * j + 1]) << 16), S());
+  c.limits.lift_ms = servo[0];
+  c.limits.swing_ms_per_mm = servo[1];
+  c.limits.stance_ms_per_mm = servo[2];
+  for (uint8_t i = 0; i < model.leg_count; ++i) {
+    S shortest = enc::stride_of(T::kStride[r][i][0], S());
+    for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k)
+      shortest = min_of(shortest, enc::stride_of(T::kStride[r][i][k], S()));
+    c.edge_mm[i] = shortest * scalar<S>(0.5);
+  }
+  gait_config_detail::set_speeds(c);
+  return c;
 }
 
 //! The same as a value (fill_gait_config() builds it in place: no copy of

@@ -74,6 +74,14 @@ class GaitEngine {
     fill_gait_config(cfg_, model, legs, params, shape);
     configure(cfg_, gait, sitting);
   }
+  //! The same from a configuration in flash without its ramps
+  //! (stored_gait_config(): a firmware's constant), copied into place and
+  //! finished there (finish_gait_config()): no copy on the stack.
+  void configure_stored(const GaitConfig<S>* flash_config, const GaitTable& gait, bool sitting = false) {
+    flash_copy(&cfg_, flash_config, sizeof cfg_);
+    finish_gait_config(cfg_);
+    configure(cfg_, gait, sitting);
+  }
 
   // ---- commands --------------------------------------------------------------
 

@@ -15,7 +15,7 @@ namespace gait_units {
 
 //! The shift for lengths up to `length` [mm]: length 2^-shift < 8.
 constexpr int8_t shift_for(float) { return 0; }
-inline int8_t shift_for(Fixed length) {
+constexpr int8_t shift_for(Fixed length) {
   uint32_t r = Fixed::abs_raw(length.raw());
   int8_t n = 0;
   while (r >= (uint32_t(8) << Fixed::kFracBits)) {

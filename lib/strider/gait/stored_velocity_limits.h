@@ -35,8 +35,11 @@ inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& pa
   enc::geometry_fingerprint(model, print);
   for (uint8_t k = 0; k < enc::kFingerprintWords; ++k)
     if (flash_u16(T::kGeometry[r], k) != print[k]) return kRobotCount;
-  const bool same = shape == d.shape && params.step_height_mm == d.step_height_mm &&
-                    params.step_length_mm == d.step_length_mm && params.cycle_s == d.cycle_s;
+  // The defaults are positive (gait_params.h checks): equal values are equal
+  // bits, compared without float library calls on the AVR.
+  const auto same_value = [](float a, float b) { return detail::float_bits(a) == detail::float_bits(b); };
+  const bool same = shape == d.shape && same_value(params.step_height_mm, d.step_height_mm) &&
+                    same_value(params.step_length_mm, d.step_length_mm) && same_value(params.cycle_s, d.cycle_s);
   return same ? r : kRobotCount;
 }
 

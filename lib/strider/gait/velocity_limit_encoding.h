@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 
+#include "../math/float_bits.h"
 #include "../math/scalar.h"
 #include "../robots/robot_model.h"
 
@@ -37,11 +38,29 @@ inline uint32_t q16_code(float v) {
 }
 
 //! The stride [mm] of a code.
-inline float stride_of(uint16_t code, float) { return float(code) * (1.0f / float(kStrideUnitsPerMm)); }
-inline Fixed stride_of(uint16_t code, Fixed) { return Fixed::from_raw(int32_t(uint32_t(code) << kStrideRawShift)); }
+constexpr float stride_of(uint16_t code, float) { return float(code) * (1.0f / float(kStrideUnitsPerMm)); }
+constexpr Fixed stride_of(uint16_t code, Fixed) { return Fixed::from_raw(int32_t(uint32_t(code) << kStrideRawShift)); }
 //! The value of a Q16.16 code.
-inline float q16_of(uint32_t code, float) { return float(code) * (1.0f / 65536.0f); }
-inline Fixed q16_of(uint32_t code, Fixed) { return Fixed::from_raw(int32_t(code)); }
+constexpr float q16_of(uint32_t code, float) { return float(code) * (1.0f / 65536.0f); }
+constexpr Fixed q16_of(uint32_t code, Fixed) { return Fixed::from_raw(int32_t(code)); }
+
+//! mm [mm] in 1/16 mm, rounded half away from zero, as int16_t(mm * 16 +-
+//! 0.5) gives for |mm| < 2048, from the float's bits: no float arithmetic
+//! (library calls on the AVR). Beyond that range the low 16 bits of the
+//! rounded value; NaN and infinities 0.
+inline uint16_t sixteenths(float mm) {
+  const uint32_t u = detail::float_bits(mm);
+  const uint8_t e = uint8_t(u >> 23);  // biased exponent
+  if (e == 0xFF) return 0;
+  // 2 |mm| 16 = m 2^(e - 145), m the 24-bit significand: halves of a sixteenth.
+  const uint32_t m = (u & 0x7FFFFFUL) | 0x800000UL;
+  uint32_t halves;
+  if (e < 121) halves = 0;  // below 2^-6: under half a sixteenth (zero and subnormals too)
+  else if (e <= 145) halves = m >> (145 - e);
+  else halves = e < 153 ? m << (e - 145) : 0;
+  const uint16_t n = uint16_t((halves + 1) >> 1);
+  return (u & detail::kFloatSignBit) ? uint16_t(-n) : n;
+}
 
 //! Words of a model's geometry fingerprint.
 constexpr uint8_t kFingerprintWords = 8;
@@ -51,7 +70,7 @@ constexpr uint8_t kFingerprintWords = 8;
 //! a model that matches it, without the firmware having to keep every
 //! built-in model in RAM to compare addresses.
 inline void geometry_fingerprint(const RobotModel& m, uint16_t* out) {
-  const auto q16 = [](float mm) { return uint16_t(int16_t(mm * 16.0f + (mm < 0.0f ? -0.5f : 0.5f))); };
+  const auto q16 = [](float mm) { return sixteenths(mm); };
   out[0] = uint16_t(uint8_t(m.kind) | (uint16_t(m.leg_count) << 8));
   out[1] = q16(m.links.l1_mm);
   out[2] = q16(m.links.l2_mm);

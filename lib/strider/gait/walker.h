@@ -55,6 +55,19 @@ class Walker {
     return true;
   }
 
+  //! The same with `model`'s configuration at its gait defaults from flash,
+  //! without the ramps (GaitEngine::configure_stored()): no conversion of the
+  //! float model's gait figures, no limits look-up. The caller makes sure
+  //! that flash_config is stored_gait_config() of this model (a firmware:
+  //! at compile time).
+  bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>* flash_config,
+                        bool sitting = false, bool solve_now = true) {
+    if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || !build_legs(model)) return false;
+    engine_.configure_stored(flash_config, gait, sitting);
+    reset_legs(solve_now);
+    return true;
+  }
+
   //! The same with a configuration built before (make_gait_config): no IK
   //! search, so a robot can switch configurations quickly.
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>& config,
