@@ -69,6 +69,25 @@ constexpr void set_speeds(GaitConfig<S>& c) {
   c.pose_rate_rad_s = scalar<S>(0.5);
   c.home_tolerance_mm = scalar<S>(0.5);
 }
+//! The fields that come from the gait defaults and the model's kind, for
+//! feet that reach `reach` mm (reach_of()) from the body's centre.
+template <typename S>
+constexpr void set_params(GaitConfig<S>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
+                          S reach) {
+  c.shape = shape;
+  c.step_height_mm = scalar<S>(params.step_height_mm);
+  c.stance_depth_mm = scalar<S>(params.stance_depth_mm);
+  c.foot_radius_mm = scalar<S>(params.foot_radius_mm);
+  c.com_x_mm = scalar<S>(params.com_x_mm);
+  c.com_y_mm = scalar<S>(params.com_y_mm);
+  c.margin_mm = scalar<S>(params.margin_mm);
+  c.shift_budget_mm = scalar<S>(params.shift_budget_mm);
+  c.sit_drop_mm = scalar<S>(params.sit_drop_mm);
+  c.transition_s = scalar<S>(params.transition_s);
+  c.shift_x_only = model.kind == LegKind::kPlanar;
+  c.min_support = model.leg_count == 6 ? 3 : 2;
+  c.unit_shift = gait_units::shift_for(reach + reach);
+}
 }  // namespace gait_config_detail
 
 //! The ramps of a configuration whose other fields are set: from standing to
@@ -103,19 +122,7 @@ void fill_gait_config(GaitConfig<S>& c, const RobotModel& model, const AnyLeg<S>
     c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
     reach = max_of(reach, max_of(abs(c.home[i].x), abs(c.home[i].y)));
   }
-  c.shape = shape;
-  c.step_height_mm = scalar<S>(params.step_height_mm);
-  c.stance_depth_mm = scalar<S>(params.stance_depth_mm);
-  c.foot_radius_mm = scalar<S>(params.foot_radius_mm);
-  c.com_x_mm = scalar<S>(params.com_x_mm);
-  c.com_y_mm = scalar<S>(params.com_y_mm);
-  c.margin_mm = scalar<S>(params.margin_mm);
-  c.shift_budget_mm = scalar<S>(params.shift_budget_mm);
-  c.sit_drop_mm = scalar<S>(params.sit_drop_mm);
-  c.transition_s = scalar<S>(params.transition_s);
-  c.shift_x_only = model.kind == LegKind::kPlanar;
-  c.min_support = model.leg_count == 6 ? 3 : 2;
-  c.unit_shift = gait_units::shift_for(reach + reach);
+  gait_config_detail::set_params(c, model, params, shape, reach);
 #if STRIDER_VELOCITY_SEARCH
   if (source == LimitsSource::kSearch || !stored_velocity_limits(model, params, shape, c.limits))
     c.limits = compute_velocity_limits(model, legs, c.home, shape, c.step_height_mm,
@@ -167,19 +174,7 @@ constexpr GaitConfig<S> stored_gait_config(uint8_t r, const uint16_t* flash_code
     c.home[i] = Vec3<S>(scalar<S>(double(h.x)), scalar<S>(double(h.y)), scalar<S>(double(h.z)));
   }
   const S reach = gait_config_detail::reach_of(c);
-  c.shape = params.shape;
-  c.step_height_mm = scalar<S>(params.step_height_mm);
-  c.stance_depth_mm = scalar<S>(params.stance_depth_mm);
-  c.foot_radius_mm = scalar<S>(params.foot_radius_mm);
-  c.com_x_mm = scalar<S>(params.com_x_mm);
-  c.com_y_mm = scalar<S>(params.com_y_mm);
-  c.margin_mm = scalar<S>(params.margin_mm);
-  c.shift_budget_mm = scalar<S>(params.shift_budget_mm);
-  c.sit_drop_mm = scalar<S>(params.sit_drop_mm);
-  c.transition_s = scalar<S>(params.transition_s);
-  c.shift_x_only = model.kind == LegKind::kPlanar;
-  c.min_support = model.leg_count == 6 ? 3 : 2;
-  c.unit_shift = gait_units::shift_for(reach + reach);
+  gait_config_detail::set_params(c, model, params, params.shape, reach);
   // stored_velocity_limits()'s.
   c.limits.leg_count = model.leg_count;
   c.limits.sideways = model.kind != LegKind::kPlanar;
