@@ -123,8 +123,15 @@ void run_sonar() {
 
 }  // namespace
 
+// The heartbeat LED through its port's registers (no pinMode(), digitalRead()).
+static_assert(pins::kHeartbeatLed == 13, "the LED on D13 = PB7 (the port bits below)");
+
+// The core's loop hook calls serialEvent() callbacks when a port has bytes;
+// the firmware reads its ports in loop() and has none: a hook that does nothing.
+void serialEventRun() {}
+
 void setup() {
-  pinMode(pins::kHeartbeatLed, OUTPUT);
+  DDRB |= _BV(PB7);
   Serial.begin(pins::kUsbBaud);
   Serial1.begin(g_app.controller().settings().baud);
   hcsr04::begin();
@@ -160,7 +167,7 @@ void loop() {
   const uint32_t now_ms = now_us / 1000u;
   if (now_ms - g_led_ms >= 500u) {  // heartbeat: the loop is alive
     g_led_ms = now_ms;
-    digitalWrite(pins::kHeartbeatLed, !digitalRead(pins::kHeartbeatLed));
+    PORTB ^= _BV(PB7);
   }
   // Idle until the next interrupt instead of spinning: Timer0's millis
   // overflow (every 1.024 ms), a received byte, a sonar echo edge or a UART

@@ -22,10 +22,15 @@ static_assert(pins::kSonarEcho == 2, "ECHO on D2 = PE4 = INT4 (the ISR below)");
 // (about 0.9 KB of flash and 16 bytes of RAM) for the one used here.
 ISR(INT4_vect) { g_echo.edge((PINE & _BV(PE4)) != 0, micros()); }
 
+// TRIG and ECHO through their port's registers: pinMode() and digitalRead()
+// with their pin tables are not linked for two fixed pins.
+static_assert(pins::kSonarTrig == 3, "TRIG on D3 = PE5 (the port bits below)");
+
 void begin() {
-  pinMode(pins::kSonarTrig, OUTPUT);
-  digitalWrite(pins::kSonarTrig, LOW);
-  pinMode(pins::kSonarEcho, INPUT);
+  PORTE &= uint8_t(~_BV(PE5));  // TRIG low, an output
+  DDRE |= _BV(PE5);
+  DDRE &= uint8_t(~_BV(PE4));   // ECHO an input without pull-up
+  PORTE &= uint8_t(~_BV(PE4));
   // What attachInterrupt(digitalPinToInterrupt(2), ..., CHANGE) does on the
   // Mega: INT4 on any logical change (ISC41:40 = 01), then enabled.
   EICRB = uint8_t((EICRB & ~(_BV(ISC40) | _BV(ISC41))) | _BV(ISC40));
@@ -40,9 +45,9 @@ bool busy() {
 
 void trigger(uint32_t now_us) {
   ATOMIC_BLOCK(ATOMIC_RESTORESTATE) { g_echo.triggered(now_us); }
-  digitalWrite(pins::kSonarTrig, HIGH);
+  PORTE |= _BV(PE5);
   delayMicroseconds(10);  // datasheet: >= 10 us
-  digitalWrite(pins::kSonarTrig, LOW);
+  PORTE &= uint8_t(~_BV(PE5));
 }
 
 bool poll(uint32_t now_us, strider::EchoSample* out) {
