@@ -27,6 +27,7 @@
 #include "serial_link.h"
 
 #include <Arduino.h>
+#include <new.h>
 #include <avr/sleep.h>
 #include <avr/wdt.h>
 
@@ -65,7 +66,15 @@ uint16_t g_servo_shadow[kBoards * strider::kPcaChannelsPerBoard];  // the boards
 Pca9685Output g_servos(g_servo_shadow, uint8_t(sizeof g_servo_shadow / sizeof g_servo_shadow[0]));
 EepromStore g_eeprom;
 SerialLink g_link;
-App g_app(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
+// The RobotApp is built at the start of setup() (make_app()), in place: its
+// constructor then stores through a pointer (2 bytes of code per byte it
+// sets) instead of to each member's address as a global constructor does
+// (4 bytes). Every access below is still to a fixed address.
+alignas(App) uint8_t g_app_bytes[sizeof(App)];
+App& g_app = reinterpret_cast<App&>(g_app_bytes);
+void make_app() {
+  new (g_app_bytes) App(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
+}
 uint32_t g_next_tick_us = 0;
 uint32_t g_led_ms = 0;
 
@@ -131,6 +140,7 @@ static_assert(pins::kHeartbeatLed == 13, "the LED on D13 = PB7 (the port bits be
 void serialEventRun() {}
 
 void setup() {
+  make_app();
   DDRB |= _BV(PB7);
   Serial.begin(pins::kUsbBaud);
   Serial1.begin(g_app.controller().settings().baud);
