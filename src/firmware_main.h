@@ -72,7 +72,7 @@ SerialLink g_link;
 // (4 bytes). Every access below is still to a fixed address.
 alignas(App) uint8_t g_app_bytes[sizeof(App)];
 App& g_app = reinterpret_cast<App&>(g_app_bytes);
-void make_app() {
+__attribute__((noinline)) void make_app() {
   new (g_app_bytes) App(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
 }
 uint32_t g_next_tick_us = 0;
