@@ -97,18 +97,20 @@ struct LegSolvers<S, true> {
   bool build(const RobotModel& model) {
     uint8_t n = 0;
     for (uint8_t i = 0; i < model.leg_count; ++i) {
-      AnyLeg<S> leg;
-      if (!AnyLeg<S>::from_model(model, i, leg)) return false;
-      mounts[i] = leg.mount();
-      sides[i] = leg.side();
       const uint8_t first = leg_solver_of(model, i);
       if (first < i) {
         of[i] = of[first];
-        continue;
+      } else {
+        if (n == kWalkerSolvers) return false;
+        of[i] = n++;
       }
-      if (n == kWalkerSolvers) return false;
-      solvers[n] = leg;
-      of[i] = n++;
+      // Built in its geometry's solver, no AnyLeg on the stack (the start-up
+      // configuration's is the firmware's deepest): a later leg of the
+      // geometry gives the same solver at its own mount, which is kept here.
+      AnyLeg<S>& leg = solvers[of[i]];
+      if (!AnyLeg<S>::from_model(model, i, leg)) return false;
+      mounts[i] = leg.mount();
+      sides[i] = leg.side();
     }
     return true;
   }
@@ -135,6 +137,14 @@ struct LegFeet {
 };
 template <typename S>
 struct LegFeet<S, false> {};
+//! Where Walker::tick() keeps a leg's target and foot when its result does not (!kWalkerFeet).
+template <typename S, bool kFeet = kWalkerFeet>
+struct LegScratch {};
+template <typename S>
+struct LegScratch<S, false> {
+  Vec3<S> target_mm;
+  Vec3<S> foot_mm;
+};
 
 template <typename S>
 struct LegResult : LegFeet<S> {
@@ -252,49 +262,48 @@ class Walker {
     // the feet are already in the body frame.
     const bool still = leg_ik::is_zero(shift.x) && leg_ik::is_zero(shift.y) && leg_ik::is_zero(shift.z);
     const bool projects = proj_.projects();
+    LegScratch<S> scratch;  // nothing when the results keep the feet
     for (uint8_t i = 0; i < leg_count(); ++i) {
       LegResult<S>& r = out_[i];
-      // The body-frame target and the foot reached: r's (kWalkerFeet) or locals.
-      Vec3<S> target_here, foot_here;
-      Vec3<S>& target = target_of(r, target_here);
-      Vec3<S>& foot = foot_of(r, foot_here);
+      // The body-frame target and the foot reached: r's (kWalkerFeet) or the scratch.
       const Vec3<S>& p = engine_.foot(i);
       if (body != nullptr) {
-        target = foot_in_body(*body, p);
+        target_of(r, scratch) = foot_in_body(*body, p);
       } else if (still) {
-        copy(p, target);
+        copy(p, target_of(r, scratch));
       } else {
-        target.x = sub_inline(p.x, shift.x);
-        target.y = sub_inline(p.y, shift.y);
-        target.z = sub_inline(p.z, shift.z);
+        target_of(r, scratch).x = sub_inline(p.x, shift.x);
+        target_of(r, scratch).y = sub_inline(p.y, shift.y);
+        target_of(r, scratch).z = sub_inline(p.z, shift.z);
       }
       r.contact = engine_.contact(i);
-      const Vec3<S> leg_target = to_leg_unchecked(i, target);
-      const AnyLeg<S>& solver = legs_.solver(i);
+      const Vec3<S> leg_target = to_leg_unchecked(i, target_of(r, scratch));
       if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
         // The point reached (leg frame) goes into foot, which the IK
         // leaves alone when it is unreachable, and is then replaced by its
         // body-frame point: no local to clear and copy.
-        const IkStatus ik = solver.ik(leg_target, r.q, foot, ik_options_);
-        set_ik(r, ik, S(0));
+        set_clamp(r, S(0));
+        const IkStatus ik = legs_.solver(i).ik(leg_target, r.q, foot_of(r, scratch), ik_options_);
+        set_ik_status(r, ik);
         r.status = ik;
         // A target reached as given is the body-frame target itself: no
         // transform back (4 products).
         if (!kWalkerFeet || ik == IkStatus::kUnreachable) continue;
-        if (same(foot, leg_target)) {
-          copy(target, foot);
+        if (same(foot_of(r, scratch), leg_target)) {
+          copy(target_of(r, scratch), foot_of(r, scratch));
         } else {
-          foot = to_body(i, foot);
+          foot_of(r, scratch) = to_body(i, foot_of(r, scratch));
         }
         continue;
       }
       Vec3<S> reached;
       S moved = S(0);
       const Vec3<S> t = proj_.apply(leg_target, moved);
-      const IkStatus ik = solver.ik(t, r.q, reached, ik_options_);
-      set_ik(r, ik, moved);
+      set_clamp(r, moved);
+      const IkStatus ik = legs_.solver(i).ik(t, r.q, reached, ik_options_);
+      set_ik_status(r, ik);
       if (kWalkerFeet && ik != IkStatus::kUnreachable)
-        foot = moved == S(0) && same(reached, leg_target) ? target : to_body(i, reached);
+        foot_of(r, scratch) = moved == S(0) && same(reached, leg_target) ? target_of(r, scratch) : to_body(i, reached);
       constexpr S tolerance = scalar<S>(kClampToleranceMm);
       const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
       r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
@@ -302,16 +311,15 @@ class Walker {
   }
 
   // Where solve_legs() keeps a leg's body-frame target and reached foot:
-  // in its result (kWalkerFeet) or in the given locals.
-  static Vec3<S>& target_of(LegFeet<S, true>& r, Vec3<S>&) { return r.target_mm; }
-  static Vec3<S>& target_of(LegFeet<S, false>&, Vec3<S>& here) { return here; }
-  static Vec3<S>& foot_of(LegFeet<S, true>& r, Vec3<S>&) { return r.foot_mm; }
-  static Vec3<S>& foot_of(LegFeet<S, false>&, Vec3<S>& here) { return here; }
-  static void set_ik(LegFeet<S, true>& r, IkStatus ik, S clamp_mm) {
-    r.ik_status = ik;
-    r.clamp_mm = clamp_mm;
-  }
-  static void set_ik(LegFeet<S, false>&, IkStatus, S) {}
+  // in its result (kWalkerFeet) or in the scratch.
+  static Vec3<S>& target_of(LegFeet<S, true>& r, LegScratch<S, true>&) { return r.target_mm; }
+  static Vec3<S>& target_of(LegFeet<S, false>&, LegScratch<S, false>& s) { return s.target_mm; }
+  static Vec3<S>& foot_of(LegFeet<S, true>& r, LegScratch<S, true>&) { return r.foot_mm; }
+  static Vec3<S>& foot_of(LegFeet<S, false>&, LegScratch<S, false>& s) { return s.foot_mm; }
+  static void set_ik_status(LegFeet<S, true>& r, IkStatus ik) { r.ik_status = ik; }
+  static void set_ik_status(LegFeet<S, false>&, IkStatus) {}
+  static void set_clamp(LegFeet<S, true>& r, S clamp_mm) { r.clamp_mm = clamp_mm; }
+  static void set_clamp(LegFeet<S, false>&, S) {}
 
   //! The engine's configuration from the model, built in place. The
   //! velocity-limit search needs an AnyLeg per leg: shared solvers with the
@@ -340,7 +348,7 @@ class Walker {
     for (uint8_t i = 0; i < leg_count(); ++i) {
       out_[i].q = typename AnyLeg<S>::Joints();
       for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
-      Vec3<S> unused;
+      LegScratch<S> unused;
       foot_of(out_[i], unused) = engine_.foot(i);
     }
     if (solve_now) solve();
