@@ -149,9 +149,8 @@ struct TickJoints {
   const ServoTickRange<S>& range(uint8_t, uint8_t slot) const { return range_[slot]; }
   //! Joint i's range: the first joint of a slot sets it, the others have
   //! the same (the caller's contract).
-  bool set_range(uint8_t i, const ServoTickRange<S>& r) {
+  void set_range(uint8_t i, const ServoTickRange<S>& r) {
     if (i < kSlots) range_[i] = r;
-    return true;
   }
 
   ServoTickOwn<S> own_[N];
@@ -162,10 +161,7 @@ struct TickJoints<S, N, 0> {
   const ServoTickOwn<S>& own(uint8_t i) const { return joint_[i]; }
   ServoTickOwn<S>& own(uint8_t i) { return joint_[i]; }
   const ServoTickRange<S>& range(uint8_t i, uint8_t) const { return joint_[i]; }
-  bool set_range(uint8_t i, const ServoTickRange<S>& r) {
-    static_cast<ServoTickRange<S>&>(joint_[i]) = r;
-    return true;
-  }
+  void set_range(uint8_t i, const ServoTickRange<S>& r) { static_cast<ServoTickRange<S>&>(joint_[i]) = r; }
 
   ServoTickJoint<S> joint_[N];
 };
@@ -225,7 +221,8 @@ class ServoTickMap {
     j.lo_ticks = timing.pulse_ticks(servo_pulse_us(ch, lo));
     j.hi_ticks = timing.pulse_ticks(servo_pulse_us(ch, hi));
     set_centre(j, timing.pulse_ticks(servo_pulse_us(ch, clamp(ch.centre_rad, lo, hi))));
-    return joints_.set_range(i, j) ? ServoTickStatus::kOk : ServoTickStatus::kUnsupported;
+    joints_.set_range(i, j);
+    return ServoTickStatus::kOk;
   }
 
   //! Joint i's output before configure_joint() (a caller that must relax it first).
