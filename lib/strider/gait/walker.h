@@ -151,6 +151,16 @@ class Walker {
         r.target_mm.z = sub_inline(p.z, shift.z);
       }
       r.contact = engine_.contact(i);
+      // A 3-DOF leg with a fast path for a body-frame target (Fixed
+      // coxa/femur/tibia: no turn into the leg frame) that reaches it as
+      // given: the foot is the target, nothing to transform.
+      if (!projects && legs_[i].ik_body_fast(r.target_mm, r.q, ik_options_)) {
+        r.clamp_mm = S(0);
+        r.ik_status = IkStatus::kOk;
+        r.status = IkStatus::kOk;
+        copy(r.target_mm, r.foot_mm);
+        continue;
+      }
       const Vec3<S> leg_target = to_leg_unchecked(i, r.target_mm);
       if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
         r.clamp_mm = S(0);

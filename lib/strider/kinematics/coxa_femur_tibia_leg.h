@@ -39,13 +39,14 @@ namespace leg_ik {
 //! case: target off the yaw axis, in front of it and strictly inside the
 //! femur-tibia annulus (a kOk solve of the target itself). Float, and every
 //! other case, returns false and takes the general path. Writes sol only
-//! when it returns true.
+//! when it returns true. One out-of-line copy, for ik() and for the
+//! walker's targets before the mount's turn (cft_solve_turned()).
 template <typename Leg, typename S>
 bool cft_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 3>&) {
   return false;
 }
 template <typename Leg>
-STRIDER_ALWAYS_INLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 3>& sol) {
+STRIDER_NOINLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 3>& sol) {
   uint32_t x = 0, y = 0;  // |x|, |y|: only their squares are needed
   int32_t v;
   Fixed dz;
@@ -59,6 +60,36 @@ STRIDER_ALWAYS_INLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& tar
   const int32_t h = wide::sqrt_sq(rho2) - wide::from_unit(leg.coxa_unit);  // eq 11, row 1
   if (!solve_wide_inline(leg.link, h, v, leg.branch, sol[1], sol[2])) return false;
   sol[0] = Fixed::from_raw(detail::atan2_lean_raw(target.y.raw(), target.x.raw()));  // eq 12
+  return true;
+}
+
+//! The fast path for a target d given in axes turned by yaw about z against
+//! the leg frame (a walker's offset from the mount before the mount's yaw):
+//! rho and the two-link problem do not depend on the turn, and t1 is d's
+//! angle less yaw, wrapped into (-pi, pi]. True, with q written, only for a
+//! solve inside the joint limits (kOk, d itself reached); false leaves q alone.
+template <typename Leg, typename S>
+bool cft_solve_turned(const Leg&, const Vec3<S>&, S, JointVector<S, 3>&) {
+  return false;
+}
+template <typename Leg>
+STRIDER_ALWAYS_INLINE bool cft_solve_turned(const Leg& leg, const Vec3<Fixed>& d, Fixed yaw,
+                                            JointVector<Fixed, 3>& q) {
+  JointVector<Fixed, 3> sol;
+  if (!cft_solve_fast(leg, d, sol)) return false;
+  // Both in [-pi, pi]: one turn at most.
+  constexpr int32_t pi_raw = int32_t((detail::kPiQ24 + 128) >> 8);
+  int32_t t1 = sol[0].raw() - yaw.raw();
+  if (t1 > pi_raw) {
+    t1 -= 2 * pi_raw;
+  } else if (t1 <= -pi_raw) {
+    t1 += 2 * pi_raw;
+  }
+  sol[0] = Fixed::from_raw(t1);
+  if (!limits_contain(leg.limits, sol)) return false;
+  q[0] = sol[0];
+  q[1] = sol[1];
+  q[2] = sol[2];
   return true;
 }
 
