@@ -224,3 +224,74 @@ TYPED_TEST(AnyLegTest, RandomTargetsKeepTheContract) {
 }
 
 }  // namespace
+
+namespace {
+
+// ik_body_fast(), the walker's path for a body-frame target without the turn
+// into the leg frame: when it answers, the joints are ik_body()'s within the
+// Fixed bounds, inside the limits, and put the foot (double reference) on the
+// target; when it does not, q is untouched. Also for mounts turned by about
+// 180 degrees, where t1 = target angle - yaw wraps around.
+TYPED_TEST(AnyLegTest, BodyFastPathIsTheBodyIk) {
+  using S = TypeParam;
+  RobotModel turned = kHexapod18;
+  const float yaws[3] = {180.0f, -172.5f, 170.0f};
+  for (uint8_t i = 0; i < 3; ++i) {  // standing 120 mm out along the new direction
+    LegModel& lm = turned.legs[i];
+    lm.mount_yaw_deg = yaws[i];
+    lm.stand_mm.x = lm.mount_mm.x + float(120.0 * std::cos(robot_ref::rad(yaws[i])));
+    lm.stand_mm.y = lm.mount_mm.y + float(120.0 * std::sin(robot_ref::rad(yaws[i])));
+  }
+  const RobotModel* models[] = {&kHexapod18, &kSpider12, &turned, &kDog12, &kSprawl8};
+  std::mt19937 rng(20261202);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int fast = 0, wrapped_up = 0, wrapped_down = 0;
+  for (const RobotModel* m : models) {
+    for (uint8_t i = 0; i < m->leg_count; ++i) {
+      AnyLeg<S> leg;
+      ASSERT_TRUE(AnyLeg<S>::from_model(*m, i, leg));
+      const LegModel& lm = m->legs[i];
+      for (int k = 0; k < STRIDER_RANDOM_CASES; ++k) {
+        // Around the standing foot, most within reach, some beyond the limits.
+        const Vec3<S> t(scalar<S>(lm.stand_mm.x + 70.0 * unit(rng)), scalar<S>(lm.stand_mm.y + 70.0 * unit(rng)),
+                        scalar<S>(lm.stand_mm.z + 60.0 * unit(rng)));
+        typename AnyLeg<S>::Joints q{};
+        q[0] = q[1] = q[2] = S(2);
+        if (!leg.ik_body_fast(t, q, IkOptions<S>())) {
+          EXPECT_EQ(q[0], S(2));
+          EXPECT_EQ(q[1], S(2));
+          EXPECT_EQ(q[2], S(2));
+          continue;
+        }
+        ++fast;
+        ASSERT_TRUE((std::is_same<S, Fixed>::value)) << "float has no fast path";
+        EXPECT_EQ(m->kind, LegKind::kCoxaFemurTibia);
+        typename AnyLeg<S>::Joints qb{};
+        Vec3<S> rb;
+        ASSERT_EQ(leg.ik_body(t, qb, rb), IkStatus::kOk) << m->name << " leg " << int(i);
+        EXPECT_TRUE(leg.within_limits(q));
+        const double jt = robot_ref::Bounds<S>::kJointDeg;
+        for (uint8_t j = 0; j < 3; ++j)
+          EXPECT_LT(std::fabs(robot_ref::angle_diff_deg(robot_ref::deg(to_double(q[j])), robot_ref::deg(to_double(qb[j])))), jt)
+              << m->name << " leg " << int(i) << " joint " << int(j);
+        EXPECT_GT(to_double(q[0]), -robot_ref::kPi);
+        EXPECT_LE(to_double(q[0]), robot_ref::kPi);
+        const double qd[3] = {to_double(q[0]), to_double(q[1]), to_double(q[2])};
+        EXPECT_LT((robot_ref::body_fk(*m, lm, qd) - robot_ref::to_eigen(t)).norm(), robot_ref::Bounds<S>::kPositionMm)
+            << m->name << " leg " << int(i);
+        const double dir = std::atan2(to_double(t.y) - lm.mount_mm.y, to_double(t.x) - lm.mount_mm.x);
+        const double t1 = dir - robot_ref::rad(lm.mount_yaw_deg);
+        if (t1 > robot_ref::kPi) ++wrapped_down;
+        if (t1 < -robot_ref::kPi) ++wrapped_up;
+      }
+    }
+  }
+  if (std::is_same<S, Fixed>::value) {
+    // Most targets of the coxa/femur/tibia legs take it, some across +-180 deg.
+    EXPECT_GT(fast, 3 * 6 * STRIDER_RANDOM_CASES / 2);
+    EXPECT_GT(wrapped_up, 0);
+    EXPECT_GT(wrapped_down, 0);
+  }
+}
+
+}  // namespace

@@ -277,6 +277,16 @@ class Walker {
         target_of(r, scratch).z = sub_inline(p.z, shift.z);
       }
       r.contact = engine_.contact(i);
+      // A 3-DOF leg with a fast path for a body-frame target (Fixed
+      // coxa/femur/tibia: no turn into the leg frame) that reaches it as
+      // given: the foot is the target, nothing to transform.
+      if (!projects && legs_.solver(i).ik_body_fast(legs_.mount(i), target_of(r, scratch), r.q, ik_options_)) {
+        set_clamp(r, S(0));
+        set_ik_status(r, IkStatus::kOk);
+        r.status = IkStatus::kOk;
+        if (kWalkerFeet) copy(target_of(r, scratch), foot_of(r, scratch));
+        continue;
+      }
       const Vec3<S> leg_target = to_leg_unchecked(i, target_of(r, scratch));
       if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
         // The point reached (leg frame) goes into foot, which the IK

@@ -140,6 +140,24 @@ class AnyLeg {
     return IkStatus::kUnreachable;
   }
 
+  //! ik_body()'s fast path alone, for the walker's tick: true when the leg
+  //! solved the body-frame target [mm] exactly inside the joint limits (kOk,
+  //! the target itself reached), with q written; false leaves q alone (then
+  //! ik() of the leg-frame target decides). Only Fixed coxa/femur/tibia legs
+  //! have this path, which needs no turn into the leg frame: the foot's
+  //! distance from the yaw axis does not depend on it, and t1 is the angle
+  //! of the target's offset from the mount less the mount's yaw.
+  STRIDER_ALWAYS_INLINE bool ik_body_fast(const Vec3<S>& target_body, Joints& q, const IkOptions<S>& opt) const {
+    return ik_body_fast(mount_, target_body, q, opt);
+  }
+  //! The same for this solver placed at another mount (legs of one geometry
+  //! share one solver and keep their own mounts).
+  STRIDER_ALWAYS_INLINE bool ik_body_fast(const LegMount<S>& mount, const Vec3<S>& target_body, Joints& q,
+                                          const IkOptions<S>& opt) const {
+    return kind_ == LegKind::kCoxaFemurTibia && on(LegKind::kCoxaFemurTibia) && !(opt.max_clamp_mm < S(0)) &&
+           body_fast(legs_.cft, mount, target_body, q);
+  }
+
   //! Foot in the body frame [mm].
   Vec3<S> fk_body(const Joints& q) const { return mount_.leg_to_body(fk(q)); }
 
@@ -218,6 +236,24 @@ class AnyLeg {
   struct Select<false, A, B> { using type = B; };
   template <LegKind kKind, typename Leg>
   using Slot = typename Select<leg_kind_compiled(kKind), Leg, Absent<Leg> >::type;
+
+  // ik_body_fast(): Fixed coxa/femur/tibia legs only. The offset from the
+  // mount in scalars and Fixed's differences in place (a Vec3 difference is
+  // an out-of-line call on the AVR).
+  template <typename Leg>
+  static bool body_fast(const Leg&, const LegMount<float>&, const Vec3<float>&, Joints&) {
+    return false;
+  }
+  template <typename Leg>
+  STRIDER_ALWAYS_INLINE static bool body_fast(const Leg& leg, const LegMount<Fixed>& m, const Vec3<Fixed>& p,
+                                              Joints& q) {
+    const Vec3<Fixed> d(sub_inline(p.x, m.origin_mm.x), sub_inline(p.y, m.origin_mm.y), sub_inline(p.z, m.origin_mm.z));
+    return leg_ik::cft_solve_turned(leg, d, m.yaw_rad, q);
+  }
+  template <typename Leg>
+  static bool body_fast(const Absent<Leg>&, const LegMount<Fixed>&, const Vec3<Fixed>&, Joints&) {
+    return false;
+  }
 
   // One leg of the four kinds; kind_ says which member is live. The
   // constructor is needed because Fixed has a non-trivial default constructor.

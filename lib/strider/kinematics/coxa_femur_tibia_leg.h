@@ -39,13 +39,21 @@ namespace leg_ik {
 //! case: target off the yaw axis, in front of it and strictly inside the
 //! femur-tibia annulus (a kOk solve of the target itself). Float, and every
 //! other case, returns false and takes the general path. Writes sol only
-//! when it returns true.
+//! when it returns true. One out-of-line copy, for ik() (yaw nullptr) and
+//! for the walker's targets before the mount's turn (cft_solve_turned()).
+//!
+//! With yaw, the target is given in axes turned by *yaw about z against the
+//! leg frame: rho and the two-link problem do not depend on the turn, and t1
+//! is the target's angle less *yaw, wrapped into (-pi, pi]; then only a
+//! solve inside the joint limits counts (t1 first: a foot beyond the coxa's
+//! limits costs no two-link solve).
 template <typename Leg, typename S>
-bool cft_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 3>&) {
+bool cft_solve_fast(const Leg&, const Vec3<S>&, const S*, JointVector<S, 3>&) {
   return false;
 }
 template <typename Leg>
-STRIDER_ALWAYS_INLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 3>& sol) {
+STRIDER_NOINLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, const Fixed* yaw,
+                                     JointVector<Fixed, 3>& sol) {
   uint32_t x = 0, y = 0;  // |x|, |y|: only their squares are needed
   int32_t v;
   Fixed dz;
@@ -56,10 +64,38 @@ STRIDER_ALWAYS_INLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& tar
   const uint32_t rho2 = wide::sq_sum(int32_t(x), int32_t(y));  // [Q6.24]; x, y < 2^31
   // rho >= 1/16 unit keeps ~16 significant bits; rho < 8 units fits wide units.
   if (rho2 < 0x10000UL || rho2 >= 0x40000000UL) return false;
+  JointVector<Fixed, 3> q;
+  int32_t t1 = detail::atan2_lean_raw(target.y.raw(), target.x.raw());  // eq 12
+  if (yaw != nullptr) {
+    // Both in [-pi, pi]: one turn at most.
+    constexpr int32_t pi_raw = int32_t((detail::kPiQ24 + 128) >> 8);
+    t1 -= yaw->raw();
+    if (t1 > pi_raw) {
+      t1 -= 2 * pi_raw;
+    } else if (t1 <= -pi_raw) {
+      t1 += 2 * pi_raw;
+    }
+    if (t1 < leg.limits.lo[0].raw() || leg.limits.hi[0].raw() < t1) return false;
+  }
+  q[0] = Fixed::from_raw(t1);
   const int32_t h = wide::sqrt_sq(rho2) - wide::from_unit(leg.coxa_unit);  // eq 11, row 1
-  if (!solve_wide_inline(leg.link, h, v, leg.branch, sol[1], sol[2])) return false;
-  sol[0] = Fixed::from_raw(detail::atan2_lean_raw(target.y.raw(), target.x.raw()));  // eq 12
+  if (!solve_wide_inline(leg.link, h, v, leg.branch, q[1], q[2])) return false;
+  if (yaw != nullptr && (q[1] < leg.limits.lo[1] || leg.limits.hi[1] < q[1] || q[2] < leg.limits.lo[2] ||
+                         leg.limits.hi[2] < q[2]))
+    return false;
+  sol[0] = q[0];
+  sol[1] = q[1];
+  sol[2] = q[2];
   return true;
+}
+
+//! The fast path for a target d given in axes turned by yaw about z against
+//! the leg frame (a walker's offset from the mount before the mount's yaw):
+//! true, with q written, only for a solve inside the joint limits (kOk, d
+//! itself reached); false leaves q alone.
+template <typename Leg, typename S>
+STRIDER_ALWAYS_INLINE bool cft_solve_turned(const Leg& leg, const Vec3<S>& d, const S& yaw, JointVector<S, 3>& q) {
+  return cft_solve_fast(leg, d, &yaw, q);
 }
 
 }  // namespace leg_ik
@@ -106,7 +142,7 @@ struct CoxaFemurTibiaLeg {
     // of ik_general() while max_clamp >= 0 (always false for float). It
     // writes q only when it succeeds, and every exit below then writes q
     // anyway, so it solves into q directly (no zeroed copy to fill and move).
-    if (!(opt.max_clamp_mm < S(0)) && leg_ik::cft_solve_fast(*this, target, q)) {
+    if (!(opt.max_clamp_mm < S(0)) && leg_ik::cft_solve_fast(*this, target, static_cast<const S*>(nullptr), q)) {
       if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
       // What finish() does for an exact solve inside the limits; field by
       // field, as avr-gcc copies a whole Vec3 with a byte loop.
