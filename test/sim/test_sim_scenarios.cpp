@@ -23,7 +23,8 @@ using strider_sim::Metrics;
 using strider_sim::RunResult;
 
 RunResult run_file(const std::string& name, bool avoid_off = false,
-                   strider_sim::Solver solver = strider_sim::WorldConfig{}.solver) {
+                   strider_sim::Solver solver = strider_sim::WorldConfig{}.solver,
+                   double cfm = strider_sim::WorldConfig{}.solver_cfm) {
   strider_sim::Scenario sc;
   std::string error;
   const std::string path = std::string(STRIDER_SIM_SCENARIOS) + "/" + name + ".scenario";
@@ -31,6 +32,7 @@ RunResult run_file(const std::string& name, bool avoid_off = false,
   if (avoid_off) sc.sends.insert(sc.sends.begin(), strider_sim::TimedSend{0.1, "avoid off\n"});
   strider_sim::RunOptions opt;
   opt.world.solver = solver;
+  opt.world.solver_cfm = cfm;
   RunResult r = strider_sim::run_scenario(sc, opt);
   EXPECT_TRUE(r.ok) << r.error;
   const Metrics& m = r.metrics;
@@ -153,6 +155,20 @@ TEST(SimScenarios, ExactSolverKeepsMammal8StanceKneesOnTarget) {
   EXPECT_LT(e_mlcp, 0.8);
   EXPECT_GT(e_pgs, 2.0 * e_mlcp);
   EXPECT_GT(mlcp.metrics.final_x_mm, pgs.metrics.final_x_mm + 50.0);
+}
+
+// Four feet down and eight stiff motors make the exact solver's matrix
+// singular or nearly so: without constraint force mixing Dantzig gave up on
+// about half of the walk's steps, which Bullet then solved with PGS (and its
+// residual). The default CFM (WorldConfig::solver_cfm) regularises it.
+TEST(SimScenarios, ExactSolverSolvesAlmostEveryStep) {
+  const RunResult with_cfm = run_file("mammal8_walk_200mm");
+  const RunResult without = run_file("mammal8_walk_200mm", false, strider_sim::Solver::kMlcp, 0.0);
+  const double steps = with_cfm.metrics.sim_time_s / strider_sim::WorldConfig{}.step_s;
+  std::printf("[ metrics  ] mammal8 walk, MLCP fallbacks to PGS: %ld of %.0f steps with CFM, %ld without\n",
+              with_cfm.metrics.solver_fallbacks, steps, without.metrics.solver_fallbacks);
+  EXPECT_LT(double(with_cfm.metrics.solver_fallbacks), 0.05 * steps);
+  EXPECT_GT(without.metrics.solver_fallbacks, 4 * with_cfm.metrics.solver_fallbacks);
 }
 
 TEST(SimScenarios, AvoidanceKeepsTheBodyClearOfAWall) {

@@ -65,7 +65,7 @@ inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uin
 
 //! Avoidance's clearing distance: the widest standing foot's distance from
 //! the body's centre line plus kAvoidClearMarginMm [mm].
-constexpr float kAvoidClearMarginMm = 20.0f;
+constexpr float kAvoidClearMarginMm = 30.0f;
 inline uint16_t avoid_clear_mm(const RobotModel& m) {
   float w = 0.0f;
   for (uint8_t i = 0; i < m.leg_count && i < kMaxLegs; ++i) {
