@@ -129,8 +129,8 @@ INSTANTIATE_TEST_SUITE_P(SeedTable5, Mammal8Distance,
 
 // The exact solver (MLCP, the default) against 40 PGS iterations on mammal8's
 // walk: PGS leaves a residual that sags the loaded stance knees (mean 2.4 deg
-// against 0.4) and lets the stance feet creep backward: the walk goes 171 mm
-// backward on it, 62 mm forward on MLCP (docs/simulator.md).
+// against 0.05) and lets the stance feet creep backward: the walk goes 73 mm
+// backward on it, 101 mm forward on MLCP (docs/simulator.md).
 double mean_stance_knee_error_deg(const RunResult& r, int dof) {
   double sum = 0;
   int n = 0;
