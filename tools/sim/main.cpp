@@ -13,12 +13,13 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: strider-sim SCENARIO --out DIR [--firmware ELF] [--step SECONDS] [--iterations N]\n"
-               "                   [--solver mlcp|pgs] [--friction MU] [--quiet]\n"
+               "                   [--solver mlcp|pgs] [--cfm CFM] [--friction MU] [--quiet]\n"
                "  SCENARIO  scenario file (robot, duration, obstacle box, at T send TEXT)\n"
                "  --out     output folder: metrics.json, trace.csv, robot.log\n"
                "  --firmware  run the firmware ELF on the virtual Mega instead of the library\n"
                "  --step    physics step [s] (default 0.004)\n"
-               "  --solver  constraint solver: mlcp (default, exact) or pgs (iterative)\n");
+               "  --solver  constraint solver: mlcp (default, exact) or pgs (iterative)\n"
+               "  --cfm     constraint force mixing of every solver row (default 1e-6; 0: none)\n");
   return 2;
 }
 
@@ -53,6 +54,10 @@ int main(int argc, char** argv) {
     } else if (a == "--residual") {
       if (!value(&v)) return usage();
       opt.world.solver_residual = std::atof(v.c_str());
+    } else if (a == "--cfm") {
+      if (!value(&v)) return usage();
+      opt.world.solver_cfm = std::atof(v.c_str());
+      if (!(opt.world.solver_cfm >= 0)) return usage();
     } else if (a == "--friction") {
       if (!value(&v)) return usage();
       opt.world.foot_friction = std::atof(v.c_str());
@@ -85,8 +90,9 @@ int main(int argc, char** argv) {
   }
   if (!quiet) {
     const strider_sim::Metrics& m = r.metrics;
-    std::printf("%s %s: %.1f s simulated in %.2f s wall, %.2f s CPU (%.1fx real time)\n", m.robot.c_str(), m.mode.c_str(),
-                m.sim_time_s, m.wall_time_s, m.cpu_time_s, m.real_time_factor);
+    std::printf("%s %s: %.1f s simulated in %.2f s wall, %.2f s CPU (%.1fx real time), %ld solver fallbacks\n",
+                m.robot.c_str(), m.mode.c_str(), m.sim_time_s, m.wall_time_s, m.cpu_time_s, m.real_time_factor,
+                m.solver_fallbacks);
     std::printf("distance %.0f mm, top speed %.1f mm/s, heading %+.1f deg, drift %.1f mm, max tilt %.1f deg%s\n",
                 m.distance_mm, m.speed_mm_s, m.heading_change_deg, m.lateral_drift_mm, m.max_tilt_deg,
                 m.fell ? ", FELL" : "");

@@ -229,6 +229,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   m.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   m.cpu_time_s = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   m.real_time_factor = m.sim_time_s / std::max(1e-9, m.cpu_time_s);
+  m.solver_fallbacks = world.solver_fallbacks();
   compute_metrics(sc, r);
   r.obstacles = sc.obstacles;
   {
@@ -306,7 +307,8 @@ std::string metrics_json(const Metrics& m) {
   o << "  \"sim_time_s\": " << num(m.sim_time_s) << ",\n";
   o << "  \"wall_time_s\": " << num(m.wall_time_s) << ",\n";
   o << "  \"cpu_time_s\": " << num(m.cpu_time_s) << ",\n";
-  o << "  \"real_time_factor\": " << num(m.real_time_factor, 1) << "\n";
+  o << "  \"real_time_factor\": " << num(m.real_time_factor, 1) << ",\n";
+  o << "  \"solver_fallbacks\": " << m.solver_fallbacks << "\n";
   o << "}\n";
   return o.str();
 }

@@ -49,6 +49,7 @@ struct Metrics {
   double ready_s = 0;               // metrics start: stood up and settled after the power-up, or the first motion command
   double sim_time_s = 0, wall_time_s = 0, cpu_time_s = 0;
   double real_time_factor = 0;      // simulated / CPU time of this process (one core)
+  long solver_fallbacks = 0;        // steps the MLCP solver handed to PGS
   bool has_odometry = false;
   double odometry_mm = 0;          // the gait engine's dead reckoning (library mode)
   double odometry_error_pct = 0;   // (odometry - distance along it) / odometry * 100 (seed 003 eq 16)

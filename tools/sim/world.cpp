@@ -102,6 +102,11 @@ Vec World::foot_mm(int leg) const {
   return to_mm(w.body->localPosToWorld(w.foot_link[size_t(leg)], to_bt_m(w.tip_local_mm[size_t(leg)])));
 }
 
+long World::solver_fallbacks() const {
+  if (cfg_.solver != Solver::kMlcp) return 0;
+  return long(static_cast<const btMultiBodyMLCPConstraintSolver&>(*impl_->solver).getNumFallbacks());
+}
+
 bool World::foot_contact(int leg) const { return impl_->foot_touch[size_t(leg)]; }
 
 }  // namespace strider_sim

@@ -40,6 +40,13 @@ struct WorldConfig {
   int solver_iterations = 40;
   Solver solver = Solver::kMlcp;
   double solver_residual = 0;      // early exit of the solver's iterations (0: run them all)
+  // Constraint force mixing added to every row's diagonal (Bullet's
+  // m_globalCfm, s/kg; the diagonal grows by cfm / step). Four feet on the
+  // ground and eight stiff motors make the exact solver's matrix singular or
+  // nearly so: without it Dantzig gave up on 10-60 % of mammal8's steps and
+  // Bullet solved them with PGS (`solver_fallbacks`). 1e-6 is a compliance of
+  // 1 / (cfm x step), 2.5e8 N/m at 4 ms: regularisation, not a soft contact.
+  double solver_cfm = 1e-6;
   double foot_friction = 0.8;      // rubber foot caps on a laminate (Formica) board
   double body_friction = 0.4;      // aluminium or plastic on the same board
   double osc_hz = 25e6;            // the simulated PCA9685 boards' oscillator [Hz]
@@ -99,6 +106,9 @@ class World {
   bool all_servos_on() const;
   // Centre of mass of the whole robot, world frame [mm].
   Vec com_mm() const;
+  // Steps the exact (MLCP) solver could not solve, so Bullet solved them
+  // with PGS instead (always 0 with Solver::kPgs).
+  long solver_fallbacks() const;
 
  private:
   struct Impl;

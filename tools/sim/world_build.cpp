@@ -12,6 +12,7 @@ World::World(const strider::RobotModel& model, const WorldConfig& cfg, const std
   w.world.setGravity(btVector3(0, 0, btScalar(-9.81)));
   w.world.getSolverInfo().m_numIterations = cfg.solver_iterations;
   w.world.getSolverInfo().m_leastSquaresResidualThreshold = btScalar(cfg.solver_residual);
+  w.world.getSolverInfo().m_globalCfm = btScalar(cfg.solver_cfm);
 
   // Ground: a static plane; the feet carry the rubber's friction (Bullet
   // multiplies the two objects' coefficients).

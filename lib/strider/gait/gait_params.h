@@ -52,12 +52,15 @@ constexpr GaitParams kGaitParams[kRobotCount] STRIDER_PROGMEM = {
     // body; the seed's walk is slow (2.5 mm/s measured), so a 2 s cycle.
     // Planar legs: the body shift can only move along x. The feet are 5 mm
     // balls, which touch the ground at a point: the support polygon is the
-    // hull of the contact points, not of 5 mm pads, so the 15 mm margin (from
-    // the pads' hull; budget 25 mm) keeps the CoM 10 mm inside the feet. With
+    // hull of the contact points, not of 5 mm pads, so the 11 mm margin (from
+    // the pads' hull; budget 20 mm) keeps the CoM 6 mm inside the feet. With
     // 4 mm it sat on the support diagonal and the robot rocked onto its swing
-    // foot; 8 mm walked 23 % short in the simulator, 15 mm 7-12 %
-    // (docs/simulator.md).
-    {"mammal8", "walk", SwingShape::kEllipse, 20.0f, 30.0f, 2.0f, 0.0f, 5.0f, 0.0f, 0.0f, 15.0f, 25.0f, 40.0f,
+    // foot. A wider margin is not safer: the shift between a hind and a front
+    // swing crosses twice the margin within the 0.2 s four-foot window, at
+    // up to 0.5-0.8 g with 15 mm, near the feet's friction: they slide. In the
+    // simulator the walk makes 98.5-100 % of 10, 20 and 100 cm with 11 mm,
+    // 93-97 % with 10, 13 or 15 mm (docs/simulator.md).
+    {"mammal8", "walk", SwingShape::kEllipse, 20.0f, 30.0f, 2.0f, 0.0f, 5.0f, 0.0f, 0.0f, 11.0f, 20.0f, 40.0f,
      1.5f},
     // dog12 (seed 001): a 557 mm leg; seed 001's own path is a rectangle
     // (section 3.2). 50 mm steps, 120 mm stride, 1.2 s cycle.
