@@ -6,9 +6,11 @@
 // Included once per build, by the file of src/models/ that PlatformIO
 // (build_src_filter) or CMake (per target) picks, which first defines
 // STRIDER_FIRMWARE_MODEL (the model), STRIDER_LEG_KINDS (its leg kind) and,
-// for a quadruped, STRIDER_WALKER_LEGS 4 (robots/robot_model.h): the model is
-// a compile-time constant here, only its leg type is compiled in and the
-// walking state has as many legs as the model.
+// for a quadruped, STRIDER_WALKER_LEGS 4 (robots/robot_model.h) and, when its
+// legs share a geometry, STRIDER_WALKER_SOLVERS (gait/walker.h): the model is
+// a compile-time constant here, only its leg type is compiled in, the
+// walking state has as many legs as the model and the walker as many leg
+// solvers as the model has leg geometries.
 #ifndef STRIDER_FIRMWARE_MAIN_H
 #define STRIDER_FIRMWARE_MAIN_H
 
@@ -17,6 +19,7 @@
 #endif
 #define STRIDER_VELOCITY_SEARCH 0  // the built-in models have stored velocity limits
 #define STRIDER_GAITS_IN_FLASH 1   // the gait tables stay in flash (gait_library.h)
+#define STRIDER_WALKER_FEET 0      // the walker keeps the joints, not the feet (gait/walker.h)
 
 // Library headers before Arduino.h, which defines min, max, abs and
 // constrain as macros that would rewrite the library's own names.
@@ -42,6 +45,9 @@ constexpr strider::RobotModel kModelInFlash PROGMEM = strider::without_leg_names
 constexpr uint8_t kBoards = strider::pca_board_count(kModel);
 static_assert(strider::kCompiledLegKinds == (1u << uint8_t(kModel.kind)), "STRIDER_LEG_KINDS: the model's leg kind alone");
 static_assert(strider::kWalkerLegs == kModel.leg_count, "STRIDER_WALKER_LEGS: the model's leg count");
+static_assert(strider::kWalkerSolvers == strider::leg_solver_count(kModel), "STRIDER_WALKER_SOLVERS: the model's leg_solver_count()");
+static_assert(strider::kServoTickSlots == 0 || (strider::kServoTickSlots == kModel.dof() && strider::leg_solver_count(kModel) == 1),
+              "STRIDER_SERVO_TICK_SLOTS: the legs' joint count, for legs of one geometry");
 
 // Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.
 using Scalar = strider::Fixed;

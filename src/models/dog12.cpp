@@ -3,4 +3,5 @@
 #define STRIDER_FIRMWARE_MODEL strider::kDog12
 #define STRIDER_LEG_KINDS (1u << uint8_t(strider::LegKind::kAbduction))
 #define STRIDER_WALKER_LEGS 4  // walking state for four legs, not six
+#define STRIDER_WALKER_SOLVERS 2  // two leg solvers (left and right legs)
 #include "../firmware_main.h"

@@ -2,4 +2,6 @@
 // the whole firmware, compiled for this model and its coxa-femur-tibia legs alone.
 #define STRIDER_FIRMWARE_MODEL strider::kHexapod18
 #define STRIDER_LEG_KINDS (1u << uint8_t(strider::LegKind::kCoxaFemurTibia))
+#define STRIDER_WALKER_SOLVERS 1  // one leg solver for its legs of one geometry
+#define STRIDER_SERVO_TICK_SLOTS 3  // the servo tick map's ranges shared by the legs' joints
 #include "../firmware_main.h"

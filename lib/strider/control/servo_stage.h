@@ -36,6 +36,14 @@ constexpr uint16_t kFramePeriodMs = 20;      //!< nominal frame period for the s
 //! the trims or the PWM change, by channel(), and in every frame only when
 //! the tick map cannot hold them (map_joint(), slow; for the built-in servo
 //! parts only near 400 Hz, where a joint's longest pulse reaches the period).
+//! The tick map's slots (servo_tick_map.h): 0, every joint its own range;
+//! a firmware whose legs have one geometry sets STRIDER_SERVO_TICK_SLOTS to
+//! its legs' joint count, and the joints of a slot share their range.
+#ifndef STRIDER_SERVO_TICK_SLOTS
+#define STRIDER_SERVO_TICK_SLOTS 0
+#endif
+constexpr uint8_t kServoTickSlots = uint8_t(STRIDER_SERVO_TICK_SLOTS);
+
 template <typename S, uint8_t N = kMaxServoJoints>
 class ServoStage {
  public:
@@ -44,7 +52,11 @@ class ServoStage {
   //! (nullptr: `model` itself), which must outlive it. False when the model
   //! does not fit.
   bool configure(const RobotModel& model, const RobotModel* source = nullptr, ModelMemory where = ModelMemory::kRam) {
-    count_ = model.joint_count() <= N ? channel_map_count(model) : uint8_t(0);
+    // Joint k = leg dof + j: slot j when the tick map has dof slots, for
+    // legs of one geometry (the same limits: one range per slot); fit_legs()
+    // configures leg 0 first.
+    const bool slots_fit = kServoTickSlots == 0 || (kServoTickSlots == model.dof() && leg_solver_count(model) == 1);
+    count_ = model.joint_count() <= N && slots_fit ? channel_map_count(model) : uint8_t(0);
     model_ = source != nullptr ? source : &model;
     where_ = where;
     dof_ = model.dof();
@@ -111,7 +123,7 @@ class ServoStage {
     if (pwm_pending_) apply_pwm(out);
     if (relax_pending_) {
       for (uint8_t k = 0; k < count_; ++k) {
-        out.relax(tick_map_.joint(k).channel);
+        out.relax(tick_map_.channel(k));
         ticks_[k] = kOff;
       }
       relax_pending_ = false;
@@ -146,7 +158,7 @@ class ServoStage {
       for (uint8_t j = 0; j < dof_; ++j) {
         const uint8_t k = uint8_t(leg * dof_ + j);
         const ServoCommand cmd = model == nullptr
-                                     ? tick_map_.map(k, r.q[j])
+                                     ? tick_map_.map(k, j, r.q[j])
                                      : map_joint(make_joint_channel<S>(*model, leg, j), r.q[j],
                                                  trim_from_decideg<S>(settings_->trim_decideg[k]), timing_);
         worst_status = worst(worst_status, cmd.status);
@@ -203,7 +215,7 @@ class ServoStage {
       // ticks * old / new period, in two 16-bit halves of the period (no 64-bit).
       const uint32_t us_x64 = uint32_t(ticks_[k]) * (old_period >> 12);
       ticks_[k] = timing_.pulse_ticks(uint16_t(us_x64 >> 6));
-      out.write_ticks(tick_map_.joint(k).channel, ticks_[k]);
+      out.write_ticks(tick_map_.channel(k), ticks_[k]);
     }
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
@@ -214,7 +226,7 @@ class ServoStage {
     }
   }
 
-  ServoTickMap<S, N> tick_map_;
+  ServoTickMap<S, N, kServoTickSlots> tick_map_;  // joint k's slot is k % dof_ (configure())
   bool fast_ = false;
   bool unfit_ = false;       // fit_legs() met a joint the map cannot hold
   uint8_t fitted_legs_ = 0;  // legs whose map constants fit the settings

@@ -117,20 +117,65 @@ struct ServoTickCentre {
 template <>
 struct ServoTickCentre<Fixed> {};
 
-//! One joint of a ServoTickMap (constants of the per-frame mapping).
+//! The constants of a joint that its limits, servo part and the PWM fix
+//! (legs of one geometry have the same).
 template <typename S>
-struct ServoTickJoint : ServoTickCentre<S> {
-  S base_rad;             //!< centre - direction zero + trim - min: d = base + direction joint [rad]
+struct ServoTickRange : ServoTickCentre<S> {
   S travel_rad;           //!< max - min [rad]
   ServoTickScale<S> scale;
   uint16_t lo_ticks;      //!< ticks at the lowest limit (map_joint's, the bounds of the output)
   uint16_t hi_ticks;      //!< ticks at the highest limit
+};
+//! The constants of a joint of its own: output, direction, zero and trim.
+template <typename S>
+struct ServoTickOwn {
+  S base_rad;             //!< centre - direction zero + trim - min: d = base + direction joint [rad]
   uint8_t channel;        //!< PCA9685 output
   int8_t direction;       //!< +1 or -1
 };
+//! One joint of a ServoTickMap (constants of the per-frame mapping).
+template <typename S>
+struct ServoTickJoint : ServoTickRange<S>, ServoTickOwn<S> {};
+
+namespace servo_ticks_detail {
+//! Where a ServoTickMap keeps its joints' constants. kSlots 0: all of
+//! them per joint. kSlots > 0: joint i's range in slot i % kSlots, shared
+//! with every joint of that slot (a firmware whose legs have one geometry:
+//! a slot per joint of a leg), the rest per joint.
+template <typename S, uint8_t N, uint8_t kSlots>
+struct TickJoints {
+  const ServoTickOwn<S>& own(uint8_t i) const { return own_[i]; }
+  ServoTickOwn<S>& own(uint8_t i) { return own_[i]; }
+  const ServoTickRange<S>& range(uint8_t, uint8_t slot) const { return range_[slot]; }
+  //! Joint i's range: the first joint of a slot sets it, the others have
+  //! the same (the caller's contract).
+  bool set_range(uint8_t i, const ServoTickRange<S>& r) {
+    if (i < kSlots) range_[i] = r;
+    return true;
+  }
+
+  ServoTickOwn<S> own_[N];
+  ServoTickRange<S> range_[kSlots];
+};
+template <typename S, uint8_t N>
+struct TickJoints<S, N, 0> {
+  const ServoTickOwn<S>& own(uint8_t i) const { return joint_[i]; }
+  ServoTickOwn<S>& own(uint8_t i) { return joint_[i]; }
+  const ServoTickRange<S>& range(uint8_t i, uint8_t) const { return joint_[i]; }
+  bool set_range(uint8_t i, const ServoTickRange<S>& r) {
+    static_cast<ServoTickRange<S>&>(joint_[i]) = r;
+    return true;
+  }
+
+  ServoTickJoint<S> joint_[N];
+};
+}  // namespace servo_ticks_detail
 
 //! N: most joints it holds (a firmware for one model sizes it to the model).
-template <typename S, uint8_t N = kMaxServoTickJoints>
+//! kSlots: 0, or joints share their ranges by slot i % kSlots: the joints
+//! of a slot must have the same limits and servo part (ServoStage makes
+//! sure), and joint i < kSlots is configured before the others of its slot.
+template <typename S, uint8_t N = kMaxServoTickJoints, uint8_t kSlots = 0>
 class ServoTickMap {
  public:
   //! Folds count channels (trims settings.trim_decideg[first_trim + i]) and
@@ -157,12 +202,13 @@ class ServoTickMap {
   ServoTickStatus configure_joint(uint8_t i, const ServoChannel<S>& ch, S trim, const Pca9685Timing& timing) {
     // Exact slope from the timing: ticks = us * 262144 / period_x64.
     const double ticks_per_us = 262144.0 / double(timing.period_x64());
-    ServoTickJoint<S>& j = joint_[i];
-    j.channel = ch.channel;
-    j.direction = ch.direction < 0 ? int8_t(-1) : int8_t(1);
+    ServoTickOwn<S>& own = joints_.own(i);
+    own.channel = ch.channel;
+    own.direction = ch.direction < 0 ? int8_t(-1) : int8_t(1);
     const S lo = min_of(ch.min_rad, ch.max_rad), hi = max_of(ch.min_rad, ch.max_rad);
     const S zero = ch.direction < 0 ? -ch.zero_rad : ch.zero_rad;
-    j.base_rad = ch.centre_rad - zero + trim - lo;
+    own.base_rad = ch.centre_rad - zero + trim - lo;
+    ServoTickRange<S> j;
     j.travel_rad = hi - lo;
     // The same pulse as servo_pulse_us() before rounding to whole us,
     // kept inside the pulse range (an angle limit beyond the travel).
@@ -179,28 +225,40 @@ class ServoTickMap {
     j.lo_ticks = timing.pulse_ticks(servo_pulse_us(ch, lo));
     j.hi_ticks = timing.pulse_ticks(servo_pulse_us(ch, hi));
     set_centre(j, timing.pulse_ticks(servo_pulse_us(ch, clamp(ch.centre_rad, lo, hi))));
-    return ServoTickStatus::kOk;
+    return joints_.set_range(i, j) ? ServoTickStatus::kOk : ServoTickStatus::kUnsupported;
   }
 
   //! Joint i's output before configure_joint() (a caller that must relax it first).
-  void set_channel(uint8_t i, uint8_t channel) { joint_[i].channel = channel; }
+  void set_channel(uint8_t i, uint8_t channel) { joints_.own(i).channel = channel; }
 
   uint8_t count() const { return count_; }
-  const ServoTickJoint<S>& joint(uint8_t i) const { return joint_[i]; }
+  //! Joint i's constants (a copy: joints may share their ranges).
+  ServoTickJoint<S> joint(uint8_t i) const {
+    ServoTickJoint<S> j;
+    static_cast<ServoTickRange<S>&>(j) = joints_.range(i, slot_of(i));
+    static_cast<ServoTickOwn<S>&>(j) = joints_.own(i);
+    return j;
+  }
+  //! Joint i's PCA9685 output.
+  uint8_t channel(uint8_t i) const { return joints_.own(i).channel; }
 
   //! Joint i's command for joint_rad [rad]: ticks and status (pulse_us is
   //! not computed by this path and left 0).
-  ServoCommand map(uint8_t i, S joint_rad) const {
-    const ServoTickJoint<S>& j = joint_[i];
+  ServoCommand map(uint8_t i, S joint_rad) const { return map(i, slot_of(i), joint_rad); }
+  //! The same with joint i's slot given (i % kSlots; any value for kSlots 0):
+  //! no division per joint.
+  ServoCommand map(uint8_t i, uint8_t slot, S joint_rad) const {
+    const ServoTickOwn<S>& o = joints_.own(i);
+    const ServoTickRange<S>& j = joints_.range(i, slot);
     ServoCommand cmd;
-    cmd.channel = j.channel;
+    cmd.channel = o.channel;
     cmd.pulse_us = 0;
     if (!servo_ticks_detail::finite(joint_rad)) {
       cmd.ticks = centre_ticks(j);
       cmd.status = ServoStatus::kNotFinite;
       return cmd;
     }
-    S d = j.direction < 0 ? j.base_rad - joint_rad : j.base_rad + joint_rad;
+    S d = o.direction < 0 ? o.base_rad - joint_rad : o.base_rad + joint_rad;
     cmd.status = ServoStatus::kOk;
     if (!servo_ticks_detail::finite(d)) {
       cmd.ticks = centre_ticks(j);
@@ -223,14 +281,15 @@ class ServoTickMap {
   //! (ServoOutput); returns the worst status.
   template <typename Output>
   ServoStatus write(Output& out, uint8_t first, const S* joint_rad, uint8_t n) const {
-    return write_joints(out, first, joint_rad, n);
+    return write_joints(out, first, joint_rad, n, PerJoint<kSlots == 0>());
   }
 
  private:
-  static void set_centre(ServoTickJoint<float>& j, uint16_t ticks) { j.centre_ticks = ticks; }
-  static void set_centre(ServoTickJoint<Fixed>&, uint16_t) {}
-  static uint16_t centre_ticks(const ServoTickJoint<float>& j) { return j.centre_ticks; }
-  static uint16_t centre_ticks(const ServoTickJoint<Fixed>& j) { return j.lo_ticks; }  // never: Fixed is finite
+  static uint8_t slot_of(uint8_t i) { return kSlots == 0 ? uint8_t(0) : uint8_t(i % (kSlots == 0 ? 1 : kSlots)); }
+  static void set_centre(ServoTickRange<float>& j, uint16_t ticks) { j.centre_ticks = ticks; }
+  static void set_centre(ServoTickRange<Fixed>&, uint16_t) {}
+  static uint16_t centre_ticks(const ServoTickRange<float>& j) { return j.centre_ticks; }
+  static uint16_t centre_ticks(const ServoTickRange<Fixed>& j) { return j.lo_ticks; }  // never: Fixed is finite
   static bool set_scale(ServoTickScale<float>& sc, double travel, double tpr, double base) {
     sc.ticks_per_rad = float(tpr);
     sc.base = float(base + 0.5);
@@ -254,9 +313,11 @@ class ServoTickMap {
     return servo_ticks_detail::ticks_of(d, sc.ticks_per_rad, sc.base);
   }
 
-  // Float: each joint through map().
-  template <typename Output>
-  ServoStatus write_joints(Output& out, uint8_t first, const float* joint_rad, uint8_t n) const {
+  template <bool kOn>
+  struct PerJoint {};
+  // Float, and shared ranges: each joint through map().
+  template <typename Output, typename T, bool kOn>
+  ServoStatus write_joints(Output& out, uint8_t first, const T* joint_rad, uint8_t n, PerJoint<kOn>) const {
     ServoStatus worst_status = ServoStatus::kOk;
     for (uint8_t i = 0; i < n && uint8_t(first + i) < count_; ++i) {
       const ServoCommand cmd = map(uint8_t(first + i), joint_rad[i]);
@@ -270,10 +331,10 @@ class ServoTickMap {
   // than calling map(): avr-gcc recomputes the joint's address for every
   // field and spills the command it returns, ~310 cycles per joint.
   template <typename Output>
-  ServoStatus write_joints(Output& out, uint8_t first, const Fixed* joint_rad, uint8_t n) const {
+  ServoStatus write_joints(Output& out, uint8_t first, const Fixed* joint_rad, uint8_t n, PerJoint<true>) const {
     if (first >= count_) return ServoStatus::kOk;
     if (n > uint8_t(count_ - first)) n = uint8_t(count_ - first);
-    const ServoTickJoint<Fixed>* j = joint_ + first;
+    const ServoTickJoint<Fixed>* j = joints_.joint_ + first;
     bool limited = false;
     for (; n != 0; --n, ++j, ++joint_rad) {
       // Fixed's saturating sum in place: avr-gcc keeps its operator out
@@ -293,7 +354,7 @@ class ServoTickMap {
     return limited ? ServoStatus::kLimited : ServoStatus::kOk;
   }
 
-  ServoTickJoint<S> joint_[N];
+  servo_ticks_detail::TickJoints<S, N, kSlots> joints_;
   uint8_t count_ = 0;
 };
 

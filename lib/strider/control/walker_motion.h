@@ -138,11 +138,10 @@ class WalkerMotion {
     const Transform<S> body = body_transform(pose);
     const GaitConfig<S>& cfg = walker_.engine().config();
     for (uint8_t i = 0; i < walker_.leg_count(); ++i) {
-      const AnyLeg<S>& leg = walker_.leg_model(i);
-      const Vec3<S> target = leg.mount().body_to_leg(foot_in_body(body, cfg.home[i]));
+      const Vec3<S> target = walker_.leg_mount(i).body_to_leg(foot_in_body(body, cfg.home[i]));
       typename AnyLeg<S>::Joints q;
       Vec3<S> reached;
-      const IkStatus st = leg.ik(target, q, reached);
+      const IkStatus st = walker_.leg_ik(i, target, q, reached);
       const bool two_dof = walker_.dof() == 2;
       if (!(st == IkStatus::kOk || (two_dof && st == IkStatus::kClamped))) return false;
     }

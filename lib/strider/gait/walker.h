@@ -15,6 +15,8 @@
 //!   foot in the air only keeps its height and direction: its reach follows
 //!   from its joints (a sprawling leg's foot swings outward as the knee lifts
 //!   it, seed 000 section 2.4), which is not reported as a clamp.
+//! A firmware keeps only the joints, status and contact (STRIDER_WALKER_FEET
+//! 0), and one IK solver per leg geometry (STRIDER_WALKER_SOLVERS).
 #ifndef STRIDER_GAIT_WALKER_H
 #define STRIDER_GAIT_WALKER_H
 
@@ -27,14 +29,117 @@ namespace strider {
 //! A 2-DOF foot moved by more than this counts as clamped [mm].
 constexpr double kClampToleranceMm = 0.5;
 
+//! Leg solvers a walker holds. As many as legs (the default): an AnyLeg per
+//! leg. Fewer: legs of one geometry (the same joint limits and, for abduction
+//! legs, the same side: AnyLeg::from_model gives them the same IK but for the
+//! mount) share one solver, and each leg keeps its mount; configure()
+//! refuses a model that needs more. A firmware's model file sets it to its
+//! model's leg_solver_count() (a hexapod18 firmware: 1 instead of six).
+#ifndef STRIDER_WALKER_SOLVERS
+#define STRIDER_WALKER_SOLVERS STRIDER_WALKER_LEGS
+#endif
+constexpr uint8_t kWalkerSolvers = uint8_t(STRIDER_WALKER_SOLVERS);
+static_assert(kWalkerSolvers >= 1 && kWalkerSolvers <= kWalkerLegs, "STRIDER_WALKER_SOLVERS: 1 to STRIDER_WALKER_LEGS");
+
+//! Whether the walker keeps each leg's engine target, reached foot, IK status
+//! and clamp in its LegResult (target_mm, foot_mm, ik_status, clamp_mm): host
+//! tools and tests read them; a firmware (STRIDER_WALKER_FEET 0, set by
+//! firmware_main.h) drives the servos from the joints and reports the status.
+#ifndef STRIDER_WALKER_FEET
+#define STRIDER_WALKER_FEET 1
+#endif
+constexpr bool kWalkerFeet = STRIDER_WALKER_FEET != 0;
+
+//! Legs i and j of `model` solve alike (one solver for both): the same
+//! joint limits and, for abduction legs, the same side.
+constexpr bool same_leg_solver(const RobotModel& model, uint8_t i, uint8_t j) {
+  const LegModel& a = model.legs[i];
+  const LegModel& b = model.legs[j];
+  if (model.kind == LegKind::kAbduction && a.side != b.side) return false;
+  for (uint8_t k = 0; k < kMaxLegDof; ++k)
+    if (!(a.joint[k].min_deg == b.joint[k].min_deg) || !(a.joint[k].max_deg == b.joint[k].max_deg)) return false;
+  return true;
+}
+//! The first leg of `model` that solves like leg i (i itself when none before it does).
+constexpr uint8_t leg_solver_of(const RobotModel& model, uint8_t i) {
+  uint8_t j = 0;
+  while (j < i && !same_leg_solver(model, i, j)) ++j;
+  return j;
+}
+//! How many distinct leg solvers `model` needs.
+constexpr uint8_t leg_solver_count(const RobotModel& model) {
+  uint8_t n = 0;
+  for (uint8_t i = 0; i < model.leg_count && i < kMaxLegs; ++i)
+    if (leg_solver_of(model, i) == i) ++n;
+  return n;
+}
+
+namespace walker_detail {
+
+//! The walker's legs: an AnyLeg per leg, or (kShared) one per geometry
+//! and each leg's mount and side.
+template <typename S, bool kShared = (kWalkerSolvers < kWalkerLegs)>
+struct LegSolvers {
+  bool build(const RobotModel& model) {
+    for (uint8_t i = 0; i < model.leg_count; ++i)
+      if (!AnyLeg<S>::from_model(model, i, legs[i])) return false;
+    return true;
+  }
+  const AnyLeg<S>& solver(uint8_t i) const { return legs[i]; }
+  const LegMount<S>& mount(uint8_t i) const { return legs[i].mount(); }
+  AnyLeg<S> leg(uint8_t i) const { return legs[i]; }
+  const AnyLeg<S>* per_leg() const { return legs; }
+
+  AnyLeg<S> legs[kWalkerLegs];
+};
 template <typename S>
-struct LegResult {
+struct LegSolvers<S, true> {
+  bool build(const RobotModel& model) {
+    uint8_t n = 0;
+    for (uint8_t i = 0; i < model.leg_count; ++i) {
+      AnyLeg<S> leg;
+      if (!AnyLeg<S>::from_model(model, i, leg)) return false;
+      mounts[i] = leg.mount();
+      sides[i] = leg.side();
+      const uint8_t first = leg_solver_of(model, i);
+      if (first < i) {
+        of[i] = of[first];
+        continue;
+      }
+      if (n == kWalkerSolvers) return false;
+      solvers[n] = leg;
+      of[i] = n++;
+    }
+    return true;
+  }
+  const AnyLeg<S>& solver(uint8_t i) const { return solvers[of[i]]; }
+  const LegMount<S>& mount(uint8_t i) const { return mounts[i]; }
+  AnyLeg<S> leg(uint8_t i) const { return solvers[of[i]].placed(mounts[i], sides[i]); }
+  const AnyLeg<S>* per_leg() const { return nullptr; }  // none kept
+
+  AnyLeg<S> solvers[kWalkerSolvers];  // the mount each holds is its first leg's, never read
+  LegMount<S> mounts[kWalkerLegs];
+  BodySide sides[kWalkerLegs] = {};
+  uint8_t of[kWalkerLegs] = {};  // leg -> its solver
+};
+
+}  // namespace walker_detail
+
+//! What a LegResult keeps for host tools (kWalkerFeet).
+template <typename S, bool kFeet = kWalkerFeet>
+struct LegFeet {
   Vec3<S> target_mm;                //!< engine target, body frame [mm]
   Vec3<S> foot_mm;                  //!< foot the joints reach, body frame [mm]
-  typename AnyLeg<S>::Joints q;     //!< joints, seed convention [rad]
   IkStatus ik_status;               //!< IK of the projected target
-  IkStatus status;                  //!< worst of ik_status and the clamp
   S clamp_mm;                       //!< how far the projection moved the target [mm]
+};
+template <typename S>
+struct LegFeet<S, false> {};
+
+template <typename S>
+struct LegResult : LegFeet<S> {
+  typename AnyLeg<S>::Joints q;     //!< joints, seed convention [rad]
+  IkStatus status;                  //!< worst of the IK status and the clamp
   bool contact;                     //!< foot on the ground
 };
 
@@ -50,7 +155,7 @@ class Walker {
                  bool sitting = false, bool solve_now = true) {
     if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || !velocity_limits_known(model, params, shape) || !build_legs(model))
       return false;
-    engine_.configure(model, legs_, params, shape, gait, sitting);  // the configuration built in place
+    configure_engine(model, params, shape, gait, sitting);
     reset_legs(solve_now);
     return true;
   }
@@ -92,7 +197,16 @@ class Walker {
 
   GaitEngine<S>& engine() { return engine_; }
   const GaitEngine<S>& engine() const { return engine_; }
-  const AnyLeg<S>& leg_model(uint8_t i) const { return legs_[i]; }
+  //! Leg i as one AnyLeg: its solver at its mount (a copy: legs of one
+  //! geometry may share their solver, kWalkerSolvers).
+  AnyLeg<S> leg_model(uint8_t i) const { return legs_.leg(i); }
+  //! Where leg i sits on the body.
+  const LegMount<S>& leg_mount(uint8_t i) const { return legs_.mount(i); }
+  //! Leg i's IK for a target in its leg frame (AnyLeg::ik).
+  IkStatus leg_ik(uint8_t i, const Vec3<S>& target, typename AnyLeg<S>::Joints& q, Vec3<S>& reached,
+                  const IkOptions<S>& opt = IkOptions<S>()) const {
+    return legs_.solver(i).ik(target, q, reached, opt);
+  }
   uint8_t leg_count() const { return engine_.leg_count(); }
   uint8_t dof() const { return dof_; }
 
@@ -140,46 +254,80 @@ class Walker {
     const bool projects = proj_.projects();
     for (uint8_t i = 0; i < leg_count(); ++i) {
       LegResult<S>& r = out_[i];
+      // The body-frame target and the foot reached: r's (kWalkerFeet) or locals.
+      Vec3<S> target_here, foot_here;
+      Vec3<S>& target = target_of(r, target_here);
+      Vec3<S>& foot = foot_of(r, foot_here);
       const Vec3<S>& p = engine_.foot(i);
       if (body != nullptr) {
-        r.target_mm = foot_in_body(*body, p);
+        target = foot_in_body(*body, p);
       } else if (still) {
-        copy(p, r.target_mm);
+        copy(p, target);
       } else {
-        r.target_mm.x = sub_inline(p.x, shift.x);
-        r.target_mm.y = sub_inline(p.y, shift.y);
-        r.target_mm.z = sub_inline(p.z, shift.z);
+        target.x = sub_inline(p.x, shift.x);
+        target.y = sub_inline(p.y, shift.y);
+        target.z = sub_inline(p.z, shift.z);
       }
       r.contact = engine_.contact(i);
-      const Vec3<S> leg_target = to_leg_unchecked(i, r.target_mm);
+      const Vec3<S> leg_target = to_leg_unchecked(i, target);
+      const AnyLeg<S>& solver = legs_.solver(i);
       if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
-        r.clamp_mm = S(0);
-        // The point reached (leg frame) goes into foot_mm, which the IK
+        // The point reached (leg frame) goes into foot, which the IK
         // leaves alone when it is unreachable, and is then replaced by its
         // body-frame point: no local to clear and copy.
-        r.ik_status = legs_[i].ik(leg_target, r.q, r.foot_mm, ik_options_);
-        r.status = r.ik_status;
+        const IkStatus ik = solver.ik(leg_target, r.q, foot, ik_options_);
+        set_ik(r, ik, S(0));
+        r.status = ik;
         // A target reached as given is the body-frame target itself: no
         // transform back (4 products).
-        if (r.ik_status == IkStatus::kUnreachable) continue;
-        if (same(r.foot_mm, leg_target)) {
-          copy(r.target_mm, r.foot_mm);
+        if (!kWalkerFeet || ik == IkStatus::kUnreachable) continue;
+        if (same(foot, leg_target)) {
+          copy(target, foot);
         } else {
-          r.foot_mm = to_body(i, r.foot_mm);
+          foot = to_body(i, foot);
         }
         continue;
       }
       Vec3<S> reached;
       S moved = S(0);
       const Vec3<S> t = proj_.apply(leg_target, moved);
-      r.clamp_mm = moved;
-      r.ik_status = legs_[i].ik(t, r.q, reached, ik_options_);
-      if (r.ik_status != IkStatus::kUnreachable)
-        r.foot_mm = moved == S(0) && same(reached, leg_target) ? r.target_mm : to_body(i, reached);
+      const IkStatus ik = solver.ik(t, r.q, reached, ik_options_);
+      set_ik(r, ik, moved);
+      if (kWalkerFeet && ik != IkStatus::kUnreachable)
+        foot = moved == S(0) && same(reached, leg_target) ? target : to_body(i, reached);
       constexpr S tolerance = scalar<S>(kClampToleranceMm);
       const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
-      r.status = worst(r.ik_status, slid ? IkStatus::kClamped : IkStatus::kOk);
+      r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
     }
+  }
+
+  // Where solve_legs() keeps a leg's body-frame target and reached foot:
+  // in its result (kWalkerFeet) or in the given locals.
+  static Vec3<S>& target_of(LegFeet<S, true>& r, Vec3<S>&) { return r.target_mm; }
+  static Vec3<S>& target_of(LegFeet<S, false>&, Vec3<S>& here) { return here; }
+  static Vec3<S>& foot_of(LegFeet<S, true>& r, Vec3<S>&) { return r.foot_mm; }
+  static Vec3<S>& foot_of(LegFeet<S, false>&, Vec3<S>& here) { return here; }
+  static void set_ik(LegFeet<S, true>& r, IkStatus ik, S clamp_mm) {
+    r.ik_status = ik;
+    r.clamp_mm = clamp_mm;
+  }
+  static void set_ik(LegFeet<S, false>&, IkStatus, S) {}
+
+  //! The engine's configuration from the model, built in place. The
+  //! velocity-limit search needs an AnyLeg per leg: shared solvers with the
+  //! search compiled in build them on the stack (without it the stored
+  //! limits need none).
+  void configure_engine(const RobotModel& model, const GaitParams& params, SwingShape shape, const GaitTable& gait,
+                        bool sitting) {
+#if STRIDER_VELOCITY_SEARCH
+    if (legs_.per_leg() == nullptr) {
+      AnyLeg<S> legs[kWalkerLegs];
+      for (uint8_t i = 0; i < model.leg_count; ++i) legs[i] = leg_model(i);
+      engine_.configure(model, legs, params, shape, gait, sitting);
+      return;
+    }
+#endif
+    engine_.configure(model, legs_.per_leg(), params, shape, gait, sitting);
   }
 
   static void copy(const Vec3<S>& from, Vec3<S>& to) {
@@ -192,7 +340,8 @@ class Walker {
     for (uint8_t i = 0; i < leg_count(); ++i) {
       out_[i].q = typename AnyLeg<S>::Joints();
       for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
-      out_[i].foot_mm = engine_.foot(i);
+      Vec3<S> unused;
+      foot_of(out_[i], unused) = engine_.foot(i);
     }
     if (solve_now) solve();
   }
@@ -217,7 +366,7 @@ class Walker {
   // Inline: the tick's one call site would pay ~100 cycles per leg for the
   // call, its register saves and the returned vector.
   STRIDER_ALWAYS_INLINE Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
-    const LegMount<S>& m = legs_[i].mount();
+    const LegMount<S>& m = legs_.mount(i);
     if (turn_[i] == kTurned) return m.body_to_leg(p);
     // Scalars, not a Vec3 difference (an out-of-line call on the AVR), and
     // Fixed's sums in place (add_inline).
@@ -231,7 +380,7 @@ class Walker {
     }
   }
   Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const {
-    const LegMount<S>& m = legs_[i].mount();
+    const LegMount<S>& m = legs_.mount(i);
     return turn_[i] == kStraight ? p + m.origin_mm : m.leg_to_body(p);
   }
 
@@ -244,10 +393,8 @@ class Walker {
   bool build_legs(const RobotModel& model) {
     model_ = nullptr;
     dof_ = 0;
-    for (uint8_t i = 0; i < model.leg_count; ++i) {
-      if (!AnyLeg<S>::from_model(model, i, legs_[i])) return false;
-      turn_[i] = turn_of(legs_[i].mount());
-    }
+    if (!legs_.build(model)) return false;
+    for (uint8_t i = 0; i < model.leg_count; ++i) turn_[i] = turn_of(legs_.mount(i));
     proj_ = ReachProjection<S>::make(model);
     model_ = &model;
     dof_ = model.dof();
@@ -258,7 +405,7 @@ class Walker {
   // read (the model may have been a copy that is gone, robot_app.h).
   const RobotModel* model_ = nullptr;
   uint8_t dof_ = 0;  // joints per leg; 0 before the legs are built
-  AnyLeg<S> legs_[kWalkerLegs];
+  walker_detail::LegSolvers<S> legs_;
   uint8_t turn_[kWalkerLegs] = {};  // MountTurn of each leg's mount
   ReachProjection<S> proj_{};
   IkOptions<S> ik_options_{};  // the defaults, built once rather than per leg and tick

@@ -63,6 +63,13 @@ class AnyLeg {
   uint8_t dof() const { return dof_of(kind_); }
   BodySide side() const { return side_; }
   const LegMount<S>& mount() const { return mount_; }
+  //! The same leg mounted elsewhere (legs of one geometry share a solver).
+  AnyLeg placed(const LegMount<S>& mount, BodySide side) const {
+    AnyLeg leg(*this);
+    leg.mount_ = mount;
+    leg.side_ = side;
+    return leg;
+  }
 
   //! The joint limits [rad]; slot 2 of a 2-DOF leg is [0, 0].
   JointLimits<S, kMaxDof> limits() const {
