@@ -66,7 +66,18 @@ constexpr strider::StoredStrides kStrides PROGMEM = strider::stored_strides(kMod
 constexpr strider::GaitConfig<Scalar> kGaitConfig PROGMEM =
     strider::stored_gait_config<Scalar>(kModelIndex, &kStrides.code[0][0]);
 
-using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count(), &kGaitConfig>;
+// The walker's legs, converted from the float model at compile time: the
+// start-up computes only their mounts' cos and sin.
+constexpr strider::WalkerLegs<Scalar> kWalkerLegs PROGMEM = strider::walker_legs<Scalar>(kModel);
+static_assert(kWalkerLegs.ok, "the model's legs fit the walker (STRIDER_WALKER_LEGS, STRIDER_WALKER_SOLVERS, STRIDER_LEG_KINDS)");
+
+// The servo stage's channels, likewise (a range per slot, kServoTickSlots).
+constexpr strider::JointChannels<Scalar, kModel.joint_count()> kJointChannels PROGMEM =
+    strider::joint_channels<Scalar, kModel.joint_count()>(kModel);
+static_assert(kJointChannels.count == kModel.joint_count(), "the model's channels fit the servo stage");
+
+using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count(), &kGaitConfig, &kWalkerLegs,
+                              &kJointChannels>;
 
 uint16_t g_servo_shadow[kBoards * strider::kPcaChannelsPerBoard];  // the boards this model uses
 Pca9685Output g_servos(g_servo_shadow, uint8_t(sizeof g_servo_shadow / sizeof g_servo_shadow[0]));

@@ -96,8 +96,14 @@ inline int32_t to_tenths(Fixed v) {
 //! kStoredConfig: the model's gait configuration in flash without its ramps
 //! (stored_gait_config(), a firmware's constant of its model at the gait
 //! defaults; nullptr: built from the model at start-up, fill_gait_config()).
+//! kStoredLegs (with kStoredConfig only): the walker's legs in flash
+//! (walker_legs(), a firmware's constant of its model; nullptr: converted
+//! from the model at start-up, AnyLeg::from_model()). kStoredChannels: the
+//! servo stage's channels in flash (joint_channels(), a firmware's constant
+//! of its model; nullptr: made from the model, make_joint_channel()).
 template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints,
-          const GaitConfig<S>* kStoredConfig = nullptr>
+          const GaitConfig<S>* kStoredConfig = nullptr, const WalkerLegs<S>* kStoredLegs = nullptr,
+          const JointChannels<S, kJoints>* kStoredChannels = nullptr>
 class RobotApp {
   class Sink;
 
@@ -192,7 +198,7 @@ class RobotApp {
   SonarFilter& sonar() { return sonar_; }
   const Controller<Sink, Store, false>& controller() const { return controller_; }
   const WalkerMotion<S>& motion() const { return motion_; }
-  const ServoStage<S, kJoints>& servos() const { return stage_; }
+  const ServoStage<S, kJoints, kStoredChannels>& servos() const { return stage_; }
   SettingsStatus load_status() const { return controller_.load_status(); }
   uint16_t overruns() const { return overruns_; }
   uint32_t tick_max_us() const { return tick_max_us_; }
@@ -249,7 +255,13 @@ class RobotApp {
     return motion_.configure(model, params, false);
   }
   bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>) {
+    return configure_walker(model, params, Stored<true>(), Stored<given(kStoredLegs)>());
+  }
+  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>, Stored<false>) {
     return motion_.configure_stored(model, params, kStoredConfig, false);
+  }
+  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>, Stored<true>) {
+    return motion_.configure_stored(model, params, kStoredConfig, kStoredLegs, false);
   }
   // Not inlined: the stage's temporaries are not on the stack with the
   // walker's configuration. The stage reads the model again (model_, not
@@ -328,7 +340,7 @@ class RobotApp {
   uint8_t boards_ = 0;       // PCA9685 boards the model uses
   Output& out_;
   WalkerMotion<S> motion_;
-  ServoStage<S, kJoints> stage_;
+  ServoStage<S, kJoints, kStoredChannels> stage_;
   Sink sink_;
   Controller<Sink, Store, false> controller_;  // input from parsers_
   CommandParser parsers_[kLinkPorts];
