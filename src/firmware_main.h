@@ -54,7 +54,8 @@ using Scalar = strider::Fixed;
 
 // The walker's gait configuration at the model's defaults, built at compile
 // time and kept in flash with the model's strides alone (not the whole
-// table): no float conversions or limits look-up at start-up.
+// table) and its ramps: no float conversions, limits look-up or velocity
+// plans at start-up.
 constexpr uint8_t model_index() {
   uint8_t r = 0;
   while (r < strider::kRobotCount && strider::kAllRobots[r] != &kModel) ++r;

@@ -93,9 +93,9 @@ inline int32_t to_tenths(Fixed v) {
 // reads a copy on the stack in begin(), the servo stage when the PWM or the
 // trims change).
 
-//! kStoredConfig: the model's gait configuration in flash without its ramps
-//! (stored_gait_config(), a firmware's constant of its model at the gait
-//! defaults; nullptr: built from the model at start-up, fill_gait_config()).
+//! kStoredConfig: the model's gait configuration in flash (stored_gait_config(),
+//! a firmware's constant of its model at the gait defaults, float's without
+//! its ramps; nullptr: built from the model at start-up, fill_gait_config()).
 //! kStoredLegs (with kStoredConfig only): the walker's legs in flash
 //! (walker_legs(), a firmware's constant of its model; nullptr: converted
 //! from the model at start-up, AnyLeg::from_model()). kStoredChannels: the

@@ -232,8 +232,8 @@ class Walker {
     return true;
   }
 
-  //! The same with `model`'s configuration at its gait defaults from flash,
-  //! without the ramps (GaitEngine::configure_stored()): no conversion of the
+  //! The same with `model`'s configuration at its gait defaults from flash
+  //! (GaitEngine::configure_stored(); for Fixed with its ramps): no conversion of the
   //! float model's gait figures, no limits look-up. The caller makes sure
   //! that flash_config is stored_gait_config() of this model (a firmware:
   //! at compile time).
