@@ -31,10 +31,10 @@ struct Lines {
 };
 
 template <typename S, const strider::GaitConfig<S>* kStored = nullptr, const strider::WalkerLegs<S>* kLegs = nullptr,
-          const strider::JointChannels<S, strider::kMaxServoJoints>* kChannels = nullptr>
+          const strider::JointChannels<S, strider::kMaxServoJoints>* kChannels = nullptr, uint16_t kAvoidClearMm = 0>
 struct Rig {
   using App = strider::RobotApp<S, strider_test::RecordingServo, strider_test::FakeStore, strider::kMaxServoJoints,
-                                kStored, kLegs, kChannels>;
+                                kStored, kLegs, kChannels, kAvoidClearMm>;
   const strider::RobotModel& model;
   strider_test::RecordingServo out;
   strider_test::FakeStore store;
@@ -380,7 +380,7 @@ void expect_constants_run_like_the_model() {
   const strider::RobotModel& m = *strider::kAllRobots[r];
   SCOPED_TRACE(m.name);
   Rig<Fixed> converted(m);
-  Rig<Fixed, &kConfigOf<r>, &kLegsOf<r>, &kChannelsOf<r>> constant(m);
+  Rig<Fixed, &kConfigOf<r>, &kLegsOf<r>, &kChannelsOf<r>, strider::avoid_clear_mm(*strider::kAllRobots[r])> constant(m);
   EXPECT_EQ(converted.lines.sent, constant.lines.sent);
   const auto& a = converted.app->motion().walker();
   const auto& b = constant.app->motion().walker();
@@ -452,6 +452,27 @@ void expect_channel_constants_alike() {
       }
   for (const strider::RobotModel* m : strider::kAllRobots)
     EXPECT_EQ(strider::channel_map_count_constant(*m), strider::channel_map_count(*m)) << m->name;
+}
+// The slew steps and the avoidance's clearing distance as constants are
+// the ones computed at run time from the servo parts' flash table and a
+// copy of the model.
+template <uint8_t r>
+void expect_step_and_clearance_constants_alike() {
+  const strider::RobotModel& m = *strider::kAllRobots[r];
+  SCOPED_TRACE(m.name);
+  for (uint8_t j = 0; j < m.dof(); ++j)
+    EXPECT_EQ(kChannelsOf<r>.step_us[j], strider::servo_step_us(strider::servo_travel(m.servo[j]).speed_deg_s));
+  constexpr uint16_t kClear = strider::avoid_clear_mm(*strider::kAllRobots[r]);
+  const strider::RobotModel copy = m;
+  EXPECT_EQ(kClear, strider::avoid_clear_mm(copy));
+  EXPECT_GT(kClear, 20);
+}
+TEST(RobotAppModelConstants, StepsAndClearanceAreTheRunTimeOnes) {
+  expect_step_and_clearance_constants_alike<0>();
+  expect_step_and_clearance_constants_alike<1>();
+  expect_step_and_clearance_constants_alike<2>();
+  expect_step_and_clearance_constants_alike<3>();
+  expect_step_and_clearance_constants_alike<4>();
 }
 TEST(RobotAppModelConstants, ChannelsAreTheModelsConvertedAtRunTime) {
   expect_channel_constants_alike<float>();

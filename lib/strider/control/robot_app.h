@@ -66,7 +66,7 @@ inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uin
 //! Avoidance's clearing distance: the widest standing foot's distance from
 //! the body's centre line plus kAvoidClearMarginMm [mm].
 constexpr float kAvoidClearMarginMm = 20.0f;
-inline uint16_t avoid_clear_mm(const RobotModel& m) {
+constexpr uint16_t avoid_clear_mm(const RobotModel& m) {
   float w = 0.0f;
   for (uint8_t i = 0; i < m.leg_count && i < kMaxLegs; ++i) {
     const float y = m.legs[i].stand_mm.y;
@@ -101,9 +101,11 @@ inline int32_t to_tenths(Fixed v) {
 //! from the model at start-up, AnyLeg::from_model()). kStoredChannels: the
 //! servo stage's channels in flash (joint_channels(), a firmware's constant
 //! of its model; nullptr: made from the model, make_joint_channel()).
+//! kAvoidClearMm: avoid_clear_mm() of the model as a constant (0: computed
+//! from the model at start-up).
 template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints,
           const GaitConfig<S>* kStoredConfig = nullptr, const WalkerLegs<S>* kStoredLegs = nullptr,
-          const JointChannels<S, kJoints>* kStoredChannels = nullptr>
+          const JointChannels<S, kJoints>* kStoredChannels = nullptr, uint16_t kAvoidClearMm = 0>
 class RobotApp {
   class Sink;
 
@@ -242,7 +244,7 @@ class RobotApp {
     copy_model(&model);
     name_ = model.name;
     boards_ = pca_board_count(model);
-    controller_.set_avoid_clear_mm(avoid_clear_mm(model));  // the copy: model_ may be in flash
+    controller_.set_avoid_clear_mm(kAvoidClearMm != 0 ? kAvoidClearMm : avoid_clear_mm(model));  // the copy: model_ may be in flash
     GaitParams params;
     return gait_params_of(model, &params) && configure_walker(model, params, Stored<given(kStoredConfig)>()) &&
            configure_stage(model);

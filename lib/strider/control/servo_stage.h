@@ -55,7 +55,13 @@ struct JointChannels {
   uint8_t output[N];
   int8_t direction[N];
   uint8_t count;  // channel_map_count(), 0: the model does not fit the stage
+  uint16_t step_us[kMaxLegDof];  // joint j's slew step per frame [us] (servo_step_us())
 };
+//! Joint j's slew step per frame [us]: a pulse change at the servo's top
+//! speed over one frame (500-2500 us over 180 deg), rounded.
+constexpr uint16_t servo_step_us(float speed_deg_s) {
+  return uint16_t(speed_deg_s * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f) + 0.5f);
+}
 namespace servo_stage_detail {
 template <typename S, uint8_t N, uint8_t... R, uint8_t... K>
 constexpr JointChannels<S, N> joint_channels(const RobotModel& m, walker_detail::Indices<R...>, walker_detail::Indices<K...>) {
@@ -67,8 +73,12 @@ constexpr JointChannels<S, N> joint_channels(const RobotModel& m, walker_detail:
       uint8_t(m.joint_count() <= N &&
                       (kServoTickSlots == 0 || (kServoTickSlots == m.dof() && leg_solver_count(m) == 1))
                   ? channel_map_count_constant(m)
-                  : 0)};
+                  : 0),
+      {servo_step_us(servo_parts_detail::travel_of(m.servo[0]).speed_deg_s),
+       servo_step_us(servo_parts_detail::travel_of(m.servo[1]).speed_deg_s),
+       servo_step_us(servo_parts_detail::travel_of(m.servo[2]).speed_deg_s)}};
 }
+static_assert(kMaxLegDof == 3, "joint_channels: a step per joint of a leg");
 }  // namespace servo_stage_detail
 //! Model m's channels for a stage of N joints (ServoStage's kChannels).
 template <typename S, uint8_t N>
@@ -231,6 +241,10 @@ class ServoStage {
     return write_legs(walker, out, model_);  // only a flag: the channels come from kChannels
   }
 
+  //! Joint j's slew step per frame [us]: from kChannels, or from its servo part.
+  uint16_t step_us(uint8_t j, Given<false>) const { return servo_step_us(servo_travel(part_[j]).speed_deg_s); }  // from flash
+  uint16_t step_us(uint8_t j, Given<true>) const { return flash_u16(&kChannels->step_us[0], j); }
+
   //! Joint k = leg dof + j's channel: from kChannels, or made from m.
   ServoChannel<S> channel_of(const RobotModel& m, uint8_t leg, uint8_t j, uint8_t k) const {
     return channel_of(m, leg, j, k, Given<kChannels != nullptr>());
@@ -290,9 +304,7 @@ class ServoStage {
     }
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
-      const float speed_deg_s = servo_travel(part_[j]).speed_deg_s;  // from flash
-      const float us = speed_deg_s * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f);
-      const uint16_t t = timing_.pulse_ticks(uint16_t(us + 0.5f));
+      const uint16_t t = timing_.pulse_ticks(step_us(j, Given<kChannels != nullptr>()));
       step_[j] = t == 0 ? uint16_t(1) : t;
     }
   }
