@@ -54,7 +54,8 @@ using Scalar = strider::Fixed;
 
 // The walker's gait configuration at the model's defaults, built at compile
 // time and kept in flash with the model's strides alone (not the whole
-// table): no float conversions or limits look-up at start-up.
+// table) and its ramps: no float conversions, limits look-up or velocity
+// plans at start-up.
 constexpr uint8_t model_index() {
   uint8_t r = 0;
   while (r < strider::kRobotCount && strider::kAllRobots[r] != &kModel) ++r;
@@ -66,7 +67,22 @@ constexpr strider::StoredStrides kStrides PROGMEM = strider::stored_strides(kMod
 constexpr strider::GaitConfig<Scalar> kGaitConfig PROGMEM =
     strider::stored_gait_config<Scalar>(kModelIndex, &kStrides.code[0][0]);
 
-using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count(), &kGaitConfig>;
+// The walker's legs, converted from the float model at compile time: the
+// start-up computes only their mounts' cos and sin.
+constexpr strider::WalkerLegs<Scalar> kWalkerLegs PROGMEM = strider::walker_legs<Scalar>(kModel);
+static_assert(kWalkerLegs.ok, "the model's legs fit the walker (STRIDER_WALKER_LEGS, STRIDER_WALKER_SOLVERS, STRIDER_LEG_KINDS)");
+
+// The servo stage's channels, likewise (a range per slot, kServoTickSlots).
+constexpr strider::JointChannels<Scalar, kModel.joint_count()> kJointChannels PROGMEM =
+    strider::joint_channels<Scalar, kModel.joint_count()>(kModel);
+static_assert(kJointChannels.count == kModel.joint_count(), "the model's channels fit the servo stage");
+
+// Avoidance's clearing distance, likewise.
+constexpr uint16_t kAvoidClearMm = strider::avoid_clear_mm(kModel);
+static_assert(kAvoidClearMm != 0, "avoid_clear_mm: a distance");
+
+using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count(), &kGaitConfig, &kWalkerLegs,
+                              &kJointChannels, kAvoidClearMm>;
 
 uint16_t g_servo_shadow[kBoards * strider::kPcaChannelsPerBoard];  // the boards this model uses
 Pca9685Output g_servos(g_servo_shadow, uint8_t(sizeof g_servo_shadow / sizeof g_servo_shadow[0]));

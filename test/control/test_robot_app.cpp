@@ -30,10 +30,11 @@ struct Lines {
   }
 };
 
-template <typename S, const strider::GaitConfig<S>* kStored = nullptr>
+template <typename S, const strider::GaitConfig<S>* kStored = nullptr, const strider::WalkerLegs<S>* kLegs = nullptr,
+          const strider::JointChannels<S, strider::kMaxServoJoints>* kChannels = nullptr, uint16_t kAvoidClearMm = 0>
 struct Rig {
   using App = strider::RobotApp<S, strider_test::RecordingServo, strider_test::FakeStore, strider::kMaxServoJoints,
-                                kStored>;
+                                kStored, kLegs, kChannels, kAvoidClearMm>;
   const strider::RobotModel& model;
   strider_test::RecordingServo out;
   strider_test::FakeStore store;
@@ -356,6 +357,133 @@ TEST(RobotAppStoredConfig, RunsLikeTheConfigurationFromTheModel) {
   same_run(3000, "F");
   EXPECT_TRUE(walked);
   EXPECT_EQ(built.lines.sent, stored.lines.sent);
+}
+
+// A firmware's RobotApp with the walker's legs and the servo channels from
+// compile-time constants too (walker_legs, joint_channels: no conversion of
+// the float model at start-up) runs exactly like one that converts the
+// model at run time, for every model: the same boot, the same pulses.
+using strider::Fixed;
+constexpr uint8_t kJ = strider::kMaxServoJoints;
+// One variable per model (a template argument is the address of a variable).
+template <uint8_t r>
+constexpr strider::GaitConfig<Fixed> kConfigOf = strider::stored_gait_config<Fixed>(r);
+template <uint8_t r>
+constexpr strider::WalkerLegs<Fixed> kLegsOf = strider::walker_legs<Fixed>(*strider::kAllRobots[r]);
+template <uint8_t r>
+constexpr strider::JointChannels<Fixed, kJ> kChannelsOf = strider::joint_channels<Fixed, kJ>(*strider::kAllRobots[r]);
+static_assert(strider::kRobotCount == 5, "RunLikeTheModelConvertedAtRunTime lists every built-in model");
+static_assert(kLegsOf<3>.ok && kLegsOf<3>.leg_count == 6 && kChannelsOf<3>.count == 18, "walker_legs, joint_channels: constants");
+
+template <uint8_t r>
+void expect_constants_run_like_the_model() {
+  const strider::RobotModel& m = *strider::kAllRobots[r];
+  SCOPED_TRACE(m.name);
+  Rig<Fixed> converted(m);
+  Rig<Fixed, &kConfigOf<r>, &kLegsOf<r>, &kChannelsOf<r>, strider::avoid_clear_mm(*strider::kAllRobots[r])> constant(m);
+  EXPECT_EQ(converted.lines.sent, constant.lines.sent);
+  const auto& a = converted.app->motion().walker();
+  const auto& b = constant.app->motion().walker();
+  ASSERT_EQ(a.leg_count(), b.leg_count());
+  ASSERT_EQ(a.dof(), b.dof());
+  for (uint8_t i = 0; i < a.leg_count(); ++i) {
+    const strider::LegMount<Fixed>& ma = a.leg_mount(i);
+    const strider::LegMount<Fixed>& mb = b.leg_mount(i);
+    EXPECT_TRUE(ma.origin_mm == mb.origin_mm && ma.yaw_rad == mb.yaw_rad && ma.cos_yaw == mb.cos_yaw &&
+                ma.sin_yaw == mb.sin_yaw)
+        << "leg " << int(i);
+    const strider::AnyLeg<Fixed> la = a.leg_model(i), lb = b.leg_model(i);
+    EXPECT_EQ(la.kind(), lb.kind());
+    EXPECT_EQ(la.side(), lb.side());
+    for (uint8_t j = 0; j < strider::kMaxLegDof; ++j) {
+      EXPECT_EQ(la.limits().lo[j], lb.limits().lo[j]);
+      EXPECT_EQ(la.limits().hi[j], lb.limits().hi[j]);
+    }
+  }
+  for (uint8_t k = 0; k < m.joint_count(); ++k) {
+    const strider::ServoChannel<Fixed> ca = converted.app->servos().channel(k), cb = constant.app->servos().channel(k);
+    EXPECT_TRUE(ca.channel == cb.channel && ca.direction == cb.direction && ca.zero_rad == cb.zero_rad &&
+                ca.centre_rad == cb.centre_rad && ca.min_rad == cb.min_rad && ca.max_rad == cb.max_rad &&
+                ca.us_per_rad == cb.us_per_rad && ca.min_pulse_us == cb.min_pulse_us && ca.max_pulse_us == cb.max_pulse_us)
+        << "joint " << int(k);
+    const strider::ServoTickJoint<Fixed> ta = converted.app->servos().tick_map().joint(k);
+    const strider::ServoTickJoint<Fixed> tb = constant.app->servos().tick_map().joint(k);
+    EXPECT_TRUE(ta.travel_rad == tb.travel_rad && ta.scale.base_q16 == tb.scale.base_q16 && ta.scale.k == tb.scale.k &&
+                ta.scale.shift == tb.scale.shift && ta.lo_ticks == tb.lo_ticks && ta.hi_ticks == tb.hi_ticks &&
+                ta.base_rad == tb.base_rad && ta.channel == tb.channel && ta.direction == tb.direction)
+        << "joint " << int(k);
+  }
+  bool walked = false;
+  const auto same_run = [&](uint32_t ms, const char* every_100_ms) {
+    for (uint32_t t = 0; t < ms; t += 20) {
+      if (every_100_ms != nullptr && t % 100 == 0) {
+        converted.send(1, every_100_ms);
+        constant.send(1, every_100_ms);
+      }
+      converted.run_ms(20);
+      constant.run_ms(20);
+      ASSERT_EQ(converted.ticks, constant.ticks) << "at " << t << " ms";
+      walked = walked || constant.app->motion().walker().engine().state() == strider::GaitState::kWalking;
+    }
+  };
+  same_run(strider::kSoftStartStepMs * 6 + 3000, nullptr);
+  EXPECT_EQ(constant.app->motion().walker().engine().state(), strider::GaitState::kStanding);
+  EXPECT_EQ(constant.ticks.size(), size_t(m.joint_count()));
+  same_run(2000, "F");
+  same_run(2000, "R");
+  EXPECT_TRUE(walked);
+  EXPECT_EQ(converted.lines.sent, constant.lines.sent);
+}
+template <typename S>
+void expect_channel_constants_alike() {
+  for (const strider::RobotModel* m : strider::kAllRobots)
+    for (uint8_t leg = 0; leg < m->leg_count; ++leg)
+      for (uint8_t j = 0; j < m->dof(); ++j) {
+        const strider::ServoChannel<S> a = strider::make_joint_channel<S>(*m, leg, j);
+        const strider::ServoChannel<S> b = strider::joint_channel_constant<S>(*m, leg, j);
+        EXPECT_TRUE(a.channel == b.channel && a.direction == b.direction &&
+                    std::memcmp(&a.zero_rad, &b.zero_rad, sizeof a.zero_rad) == 0 &&
+                    std::memcmp(&a.centre_rad, &b.centre_rad, sizeof a.centre_rad) == 0 &&
+                    std::memcmp(&a.min_rad, &b.min_rad, sizeof a.min_rad) == 0 &&
+                    std::memcmp(&a.max_rad, &b.max_rad, sizeof a.max_rad) == 0 &&
+                    std::memcmp(&a.us_per_rad, &b.us_per_rad, sizeof a.us_per_rad) == 0 &&
+                    a.min_pulse_us == b.min_pulse_us && a.max_pulse_us == b.max_pulse_us)
+            << m->name << " leg " << int(leg) << " joint " << int(j);
+      }
+  for (const strider::RobotModel* m : strider::kAllRobots)
+    EXPECT_EQ(strider::channel_map_count_constant(*m), strider::channel_map_count(*m)) << m->name;
+}
+// The slew steps and the avoidance's clearing distance as constants are
+// the ones computed at run time from the servo parts' flash table and a
+// copy of the model.
+template <uint8_t r>
+void expect_step_and_clearance_constants_alike() {
+  const strider::RobotModel& m = *strider::kAllRobots[r];
+  SCOPED_TRACE(m.name);
+  for (uint8_t j = 0; j < m.dof(); ++j)
+    EXPECT_EQ(kChannelsOf<r>.step_us[j], strider::servo_step_us(strider::servo_travel(m.servo[j]).speed_deg_s));
+  constexpr uint16_t kClear = strider::avoid_clear_mm(*strider::kAllRobots[r]);
+  const strider::RobotModel copy = m;
+  EXPECT_EQ(kClear, strider::avoid_clear_mm(copy));
+  EXPECT_GT(kClear, 20);
+}
+TEST(RobotAppModelConstants, StepsAndClearanceAreTheRunTimeOnes) {
+  expect_step_and_clearance_constants_alike<0>();
+  expect_step_and_clearance_constants_alike<1>();
+  expect_step_and_clearance_constants_alike<2>();
+  expect_step_and_clearance_constants_alike<3>();
+  expect_step_and_clearance_constants_alike<4>();
+}
+TEST(RobotAppModelConstants, ChannelsAreTheModelsConvertedAtRunTime) {
+  expect_channel_constants_alike<float>();
+  expect_channel_constants_alike<Fixed>();
+}
+TEST(RobotAppModelConstants, RunLikeTheModelConvertedAtRunTime) {
+  expect_constants_run_like_the_model<0>();
+  expect_constants_run_like_the_model<1>();
+  expect_constants_run_like_the_model<2>();
+  expect_constants_run_like_the_model<3>();
+  expect_constants_run_like_the_model<4>();
 }
 
 // Tuned gait parameters replace the defaults before the robot stands; bad

@@ -204,6 +204,28 @@ TYPED_TEST(GaitTickTest, StoredConfigIsTheModelsConfig) {
 // The compile-time configuration is a constant expression (what a firmware needs).
 constexpr GaitConfig<Fixed> kStoredHexapod = strider::stored_gait_config<Fixed>(3);
 static_assert(kStoredHexapod.leg_count == 6 && kStoredHexapod.min_support == 3, "stored_gait_config: constant");
+static_assert(kStoredHexapod.accel_mm_s2 > Fixed(0) && kStoredHexapod.target_speed_mm_s > Fixed(0),
+              "stored_gait_config<Fixed>: with its ramps");
+
+// Fixed's stored ramps (velocity_limit_table.h, generated) are the ones
+// finish_gait_config() computes for the stored configuration, bit for bit;
+// float's are left to finish_gait_config().
+TEST(StoredGaitConfig, FixedRampsAreFinishGaitConfigs) {
+  for (uint8_t r = 0; r < strider::kRobotCount; ++r) {
+    SCOPED_TRACE(strider::kAllRobots[r]->name);
+    const GaitConfig<Fixed> stored = strider::stored_gait_config<Fixed>(r);
+    GaitConfig<Fixed> finished = stored;
+    finished.accel_mm_s2 = finished.yaw_accel_rad_s2 = finished.target_speed_mm_s = Fixed(0);
+    strider::finish_gait_config(finished);
+    EXPECT_EQ(stored.accel_mm_s2.raw(), finished.accel_mm_s2.raw());
+    EXPECT_EQ(stored.yaw_accel_rad_s2.raw(), finished.yaw_accel_rad_s2.raw());
+    EXPECT_EQ(stored.target_speed_mm_s.raw(), finished.target_speed_mm_s.raw());
+    const GaitConfig<float> stored_float = strider::stored_gait_config<float>(r);
+    EXPECT_EQ(stored_float.accel_mm_s2, 0.0f);
+  }
+  EXPECT_TRUE(strider::stored_ramps_given<Fixed>());
+  EXPECT_FALSE(strider::stored_ramps_given<float>());
+}
 
 // The exact edge test that beyond_edge() short-cuts.
 template <typename S>

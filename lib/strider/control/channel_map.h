@@ -74,6 +74,41 @@ ServoChannel<S> make_joint_channel(const RobotModel& m, uint8_t leg, uint8_t j) 
   return ch;
 }
 
+//! make_joint_channel() as a constant (servo_travel() reads flash, which a
+//! constant expression cannot: the same figures from servo_parts_detail).
+template <typename S>
+constexpr ServoChannel<S> joint_channel_constant(const RobotModel& m, uint8_t leg, uint8_t j) {
+  return joint_channel_constant<S>(m, leg, j, servo_parts_detail::travel_of(m.servo[j]));
+}
+template <typename S>
+constexpr ServoChannel<S> joint_channel_constant(const RobotModel& m, uint8_t leg, uint8_t j, const ServoTravel& spec) {
+  return ServoChannel<S>{
+      joint_channel(m, leg, j),
+      joint_direction(m, leg, j),
+      scalar<S>(0.5 * (double(m.legs[leg].joint[j].min_deg) + double(m.legs[leg].joint[j].max_deg)) * kDegToRad),
+      scalar<S>(0.5 * double(spec.travel_deg) * kDegToRad),
+      scalar<S>((0.5 * double(spec.travel_deg) -
+                 0.5 * (double(m.legs[leg].joint[j].max_deg) - double(m.legs[leg].joint[j].min_deg))) *
+                kDegToRad),
+      scalar<S>((0.5 * double(spec.travel_deg) +
+                 0.5 * (double(m.legs[leg].joint[j].max_deg) - double(m.legs[leg].joint[j].min_deg))) *
+                kDegToRad),
+      scalar<S>(double(spec.max_pulse_us - spec.min_pulse_us) / (double(spec.travel_deg) * kDegToRad)),
+      spec.min_pulse_us,
+      spec.max_pulse_us};
+}
+
+//! channel_map_count() as a constant.
+constexpr uint8_t channel_map_count_constant(const RobotModel& m) {
+  if (m.joint_count() > kMaxServoJoints) return 0;
+  for (uint8_t leg = 0; leg < m.leg_count; ++leg)
+    for (uint8_t j = 0; j < m.dof(); ++j) {
+      const JointRange& r = m.legs[leg].joint[j];
+      if (r.max_deg - r.min_deg > servo_parts_detail::travel_of(m.servo[j]).travel_deg) return 0;
+    }
+  return m.joint_count();
+}
+
 //! The model's joint count when make_channel_map() can map it, else 0 (more
 //! joints than kMaxServoJoints, or a joint range wider than its servo's travel).
 inline uint8_t channel_map_count(const RobotModel& m) {

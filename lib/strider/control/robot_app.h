@@ -66,7 +66,7 @@ inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uin
 //! Avoidance's clearing distance: the widest standing foot's distance from
 //! the body's centre line plus kAvoidClearMarginMm [mm].
 constexpr float kAvoidClearMarginMm = 40.0f;
-inline uint16_t avoid_clear_mm(const RobotModel& m) {
+constexpr uint16_t avoid_clear_mm(const RobotModel& m) {
   float w = 0.0f;
   for (uint8_t i = 0; i < m.leg_count && i < kMaxLegs; ++i) {
     const float y = m.legs[i].stand_mm.y;
@@ -93,11 +93,19 @@ inline int32_t to_tenths(Fixed v) {
 // reads a copy on the stack in begin(), the servo stage when the PWM or the
 // trims change).
 
-//! kStoredConfig: the model's gait configuration in flash without its ramps
-//! (stored_gait_config(), a firmware's constant of its model at the gait
-//! defaults; nullptr: built from the model at start-up, fill_gait_config()).
+//! kStoredConfig: the model's gait configuration in flash (stored_gait_config(),
+//! a firmware's constant of its model at the gait defaults, float's without
+//! its ramps; nullptr: built from the model at start-up, fill_gait_config()).
+//! kStoredLegs (with kStoredConfig only): the walker's legs in flash
+//! (walker_legs(), a firmware's constant of its model; nullptr: converted
+//! from the model at start-up, AnyLeg::from_model()). kStoredChannels: the
+//! servo stage's channels in flash (joint_channels(), a firmware's constant
+//! of its model; nullptr: made from the model, make_joint_channel()).
+//! kAvoidClearMm: avoid_clear_mm() of the model as a constant (0: computed
+//! from the model at start-up).
 template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints,
-          const GaitConfig<S>* kStoredConfig = nullptr>
+          const GaitConfig<S>* kStoredConfig = nullptr, const WalkerLegs<S>* kStoredLegs = nullptr,
+          const JointChannels<S, kJoints>* kStoredChannels = nullptr, uint16_t kAvoidClearMm = 0>
 class RobotApp {
   class Sink;
 
@@ -192,7 +200,7 @@ class RobotApp {
   SonarFilter& sonar() { return sonar_; }
   const Controller<Sink, Store, false>& controller() const { return controller_; }
   const WalkerMotion<S>& motion() const { return motion_; }
-  const ServoStage<S, kJoints>& servos() const { return stage_; }
+  const ServoStage<S, kJoints, kStoredChannels>& servos() const { return stage_; }
   SettingsStatus load_status() const { return controller_.load_status(); }
   uint16_t overruns() const { return overruns_; }
   uint32_t tick_max_us() const { return tick_max_us_; }
@@ -236,7 +244,7 @@ class RobotApp {
     copy_model(&model);
     name_ = model.name;
     boards_ = pca_board_count(model);
-    controller_.set_avoid_clear_mm(avoid_clear_mm(model));  // the copy: model_ may be in flash
+    controller_.set_avoid_clear_mm(kAvoidClearMm != 0 ? kAvoidClearMm : avoid_clear_mm(model));  // the copy: model_ may be in flash
     GaitParams params;
     return gait_params_of(model, &params) && configure_walker(model, params, Stored<given(kStoredConfig)>()) &&
            configure_stage(model);
@@ -249,7 +257,13 @@ class RobotApp {
     return motion_.configure(model, params, false);
   }
   bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>) {
+    return configure_walker(model, params, Stored<true>(), Stored<given(kStoredLegs)>());
+  }
+  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>, Stored<false>) {
     return motion_.configure_stored(model, params, kStoredConfig, false);
+  }
+  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>, Stored<true>) {
+    return motion_.configure_stored(model, params, kStoredConfig, kStoredLegs, false);
   }
   // Not inlined: the stage's temporaries are not on the stack with the
   // walker's configuration. The stage reads the model again (model_, not
@@ -328,7 +342,7 @@ class RobotApp {
   uint8_t boards_ = 0;       // PCA9685 boards the model uses
   Output& out_;
   WalkerMotion<S> motion_;
-  ServoStage<S, kJoints> stage_;
+  ServoStage<S, kJoints, kStoredChannels> stage_;
   Sink sink_;
   Controller<Sink, Store, false> controller_;  // input from parsers_
   CommandParser parsers_[kLinkPorts];

@@ -44,7 +44,53 @@ constexpr uint16_t kFramePeriodMs = 20;      //!< nominal frame period for the s
 #endif
 constexpr uint8_t kServoTickSlots = uint8_t(STRIDER_SERVO_TICK_SLOTS);
 
-template <typename S, uint8_t N = kMaxServoJoints>
+//! A stage's channels as a constant of its model (joint_channels(): a
+//! firmware keeps its model's in flash): joint k's channel is range[k %
+//! kRanges] with output[k] and direction[k] (legs of one geometry share
+//! their ranges, kServoTickSlots).
+template <typename S, uint8_t N>
+struct JointChannels {
+  static constexpr uint8_t kRanges = kServoTickSlots != 0 ? kServoTickSlots : N;
+  ServoChannel<S> range[kRanges];
+  uint8_t output[N];
+  int8_t direction[N];
+  uint8_t count;  // channel_map_count(), 0: the model does not fit the stage
+  uint16_t step_us[kMaxLegDof];  // joint j's slew step per frame [us] (servo_step_us())
+};
+//! Joint j's slew step per frame [us]: a pulse change at the servo's top
+//! speed over one frame (500-2500 us over 180 deg), rounded.
+constexpr uint16_t servo_step_us(float speed_deg_s) {
+  return uint16_t(speed_deg_s * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f) + 0.5f);
+}
+namespace servo_stage_detail {
+template <typename S, uint8_t N, uint8_t... R, uint8_t... K>
+constexpr JointChannels<S, N> joint_channels(const RobotModel& m, walker_detail::Indices<R...>, walker_detail::Indices<K...>) {
+  return JointChannels<S, N>{
+      {(R < m.joint_count() ? joint_channel_constant<S>(m, uint8_t(R / m.dof()), uint8_t(R % m.dof()))
+                            : ServoChannel<S>{})...},
+      {(K < m.joint_count() ? joint_channel(m, uint8_t(K / m.dof()), uint8_t(K % m.dof())) : uint8_t(0))...},
+      {(K < m.joint_count() ? joint_direction(m, uint8_t(K / m.dof()), uint8_t(K % m.dof())) : int8_t(1))...},
+      uint8_t(m.joint_count() <= N &&
+                      (kServoTickSlots == 0 || (kServoTickSlots == m.dof() && leg_solver_count(m) == 1))
+                  ? channel_map_count_constant(m)
+                  : 0),
+      {servo_step_us(servo_parts_detail::travel_of(m.servo[0]).speed_deg_s),
+       servo_step_us(servo_parts_detail::travel_of(m.servo[1]).speed_deg_s),
+       servo_step_us(servo_parts_detail::travel_of(m.servo[2]).speed_deg_s)}};
+}
+static_assert(kMaxLegDof == 3, "joint_channels: a step per joint of a leg");
+}  // namespace servo_stage_detail
+//! Model m's channels for a stage of N joints (ServoStage's kChannels).
+template <typename S, uint8_t N>
+constexpr JointChannels<S, N> joint_channels(const RobotModel& m) {
+  return servo_stage_detail::joint_channels<S, N>(m, typename walker_detail::MakeIndices<JointChannels<S, N>::kRanges>::type(),
+                                                  typename walker_detail::MakeIndices<N>::type());
+}
+
+//! kChannels: the model's channels in flash (joint_channels() of the model
+//! given to configure(): a firmware's constant), nullptr: made from the
+//! model when needed (make_joint_channel()).
+template <typename S, uint8_t N = kMaxServoJoints, const JointChannels<S, N>* kChannels = nullptr>
 class ServoStage {
  public:
   //! Channel map of `model` (readable: a copy of `source` if that is in
@@ -56,7 +102,8 @@ class ServoStage {
     // legs of one geometry (the same limits: one range per slot); fit_legs()
     // configures leg 0 first.
     const bool slots_fit = kServoTickSlots == 0 || (kServoTickSlots == model.dof() && leg_solver_count(model) == 1);
-    count_ = model.joint_count() <= N && slots_fit ? channel_map_count(model) : uint8_t(0);
+    count_ = kChannels != nullptr ? flash_u8(&kChannels->count)
+             : model.joint_count() <= N && slots_fit ? channel_map_count(model) : uint8_t(0);
     model_ = source != nullptr ? source : &model;
     where_ = where;
     dof_ = model.dof();
@@ -100,11 +147,13 @@ class ServoStage {
   ServoChannel<S> channel(uint8_t k) const {
     RobotModel m;
     read_model(*model_, where_, &m);
-    return make_joint_channel<S>(m, uint8_t(k / dof_), uint8_t(k % dof_));
+    return channel_of(m, uint8_t(k / dof_), uint8_t(k % dof_), k);
   }
   bool on(uint8_t k) const { return ticks_[k] != kOff; }
   uint16_t ticks(uint8_t k) const { return on(k) ? ticks_[k] : uint16_t(0); }   //!< last written [PCA9685 ticks], 0 off
   const Pca9685Timing& timing() const { return timing_; }
+  //! The per-frame map's constants (host tools and tests).
+  const ServoTickMap<S, N, kServoTickSlots>& tick_map() const { return tick_map_; }
   ServoStatus last_status() const { return status_; }
 
   //! Applies pending settings now (prescale to the boards, the fast map's
@@ -159,7 +208,7 @@ class ServoStage {
         const uint8_t k = uint8_t(leg * dof_ + j);
         const ServoCommand cmd = model == nullptr
                                      ? tick_map_.map(k, j, r.q[j])
-                                     : map_joint(make_joint_channel<S>(*model, leg, j), r.q[j],
+                                     : map_joint(channel_of(*model, leg, j, k), r.q[j],
                                                  trim_from_decideg<S>(settings_->trim_decideg[k]), timing_);
         worst_status = worst(worst_status, cmd.status);
         uint16_t next = cmd.ticks;
@@ -177,9 +226,38 @@ class ServoStage {
   }
   template <typename Output>
   STRIDER_NOINLINE ServoStatus write_legs_slowly(const Walker<S>& walker, Output& out) {
+    return write_legs_slowly(walker, out, Given<kChannels != nullptr>());
+  }
+  template <bool kOn>
+  struct Given {};
+  template <typename Output>
+  ServoStatus write_legs_slowly(const Walker<S>& walker, Output& out, Given<false>) {
     RobotModel m;
     read_model(*model_, where_, &m);
     return write_legs(walker, out, &m);
+  }
+  template <typename Output>
+  ServoStatus write_legs_slowly(const Walker<S>& walker, Output& out, Given<true>) {
+    return write_legs(walker, out, model_);  // only a flag: the channels come from kChannels
+  }
+
+  //! Joint j's slew step per frame [us]: from kChannels, or from its servo part.
+  uint16_t step_us(uint8_t j, Given<false>) const { return servo_step_us(servo_travel(part_[j]).speed_deg_s); }  // from flash
+  uint16_t step_us(uint8_t j, Given<true>) const { return flash_u16(&kChannels->step_us[0], j); }
+
+  //! Joint k = leg dof + j's channel: from kChannels, or made from m.
+  ServoChannel<S> channel_of(const RobotModel& m, uint8_t leg, uint8_t j, uint8_t k) const {
+    return channel_of(m, leg, j, k, Given<kChannels != nullptr>());
+  }
+  ServoChannel<S> channel_of(const RobotModel& m, uint8_t leg, uint8_t j, uint8_t, Given<false>) const {
+    return make_joint_channel<S>(m, leg, j);
+  }
+  ServoChannel<S> channel_of(const RobotModel&, uint8_t, uint8_t, uint8_t k, Given<true>) const {
+    ServoChannel<S> ch;
+    flash_copy(&ch, &kChannels->range[k % JointChannels<S, N>::kRanges], sizeof ch);
+    ch.channel = flash_u8(&kChannels->output[k]);
+    ch.direction = int8_t(flash_u8(&kChannels->direction[k]));
+    return ch;
   }
 
   //! The tick map's constants for the timing and trims of up to n more
@@ -187,13 +265,20 @@ class ServoStage {
   //! fast_ says whether the map holds every joint.
   STRIDER_NOINLINE void fit_legs(uint8_t n) {
     if (count_ == 0 || fitted_legs_ >= legs_) return;  // a model that does not fit; nothing to do
+    fit_legs(n, Given<kChannels != nullptr>());
+  }
+  void fit_legs(uint8_t n, Given<false>) {
     RobotModel m;
     read_model(*model_, where_, &m);
+    fit_legs(n, m);
+  }
+  void fit_legs(uint8_t n, Given<true>) { fit_legs(n, *model_); }  // the model is not read
+  void fit_legs(uint8_t n, const RobotModel& m) {
     for (; n != 0 && fitted_legs_ < legs_; --n, ++fitted_legs_)
       for (uint8_t j = 0; j < dof_; ++j) {
         const uint8_t k = uint8_t(fitted_legs_ * dof_ + j);
         const S trim = trim_from_decideg<S>(settings_->trim_decideg[k]);
-        if (tick_map_.configure_joint(k, make_joint_channel<S>(m, fitted_legs_, j), trim, timing_) != ServoTickStatus::kOk)
+        if (tick_map_.configure_joint(k, channel_of(m, fitted_legs_, j, k), trim, timing_) != ServoTickStatus::kOk)
           unfit_ = true;
       }
     if (fitted_legs_ == legs_) fast_ = !unfit_;
@@ -219,9 +304,7 @@ class ServoStage {
     }
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
-      const float speed_deg_s = servo_travel(part_[j]).speed_deg_s;  // from flash
-      const float us = speed_deg_s * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f);
-      const uint16_t t = timing_.pulse_ticks(uint16_t(us + 0.5f));
+      const uint16_t t = timing_.pulse_ticks(step_us(j, Given<kChannels != nullptr>()));
       step_[j] = t == 0 ? uint16_t(1) : t;
     }
   }

@@ -55,6 +55,18 @@ class WalkerMotion {
     return true;
   }
 
+  //! The same with the walker's legs from flash too (walker_legs() of the
+  //! model: a firmware's constant).
+  bool configure_stored(const RobotModel& model, const GaitParams& params, const GaitConfig<S>* flash_config,
+                        const WalkerLegs<S>* flash_legs, bool solve_now = true) {
+    GaitTable gait;
+    if (!load_gait(model, params.default_gait, &gait) ||
+        !walker_.configure_stored(flash_legs, gait, flash_config, true, solve_now))
+      return false;
+    configured();
+    return true;
+  }
+
   Walker<S>& walker() { return walker_; }
   const Walker<S>& walker() const { return walker_; }
   const GaitTable& gait() const { return walker_.engine().gait(); }

@@ -155,9 +155,29 @@ constexpr StoredStrides stored_strides(uint8_t r) {
   return s;
 }
 
+namespace gait_config_detail {
+//! The ramps of stored configuration r: Fixed's from the table (what
+//! finish_gait_config() gives it, computed by tools/gen), float's left to
+//! finish_gait_config() at run time (stored_ramps_given).
+constexpr void set_stored_ramps(GaitConfig<Fixed>& c, uint8_t r) {
+  using T = detail::VelocityLimitTables<>;
+  c.accel_mm_s2 = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][0]) | (uint32_t(T::kRamp[r][1]) << 16)));
+  c.yaw_accel_rad_s2 = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][2]) | (uint32_t(T::kRamp[r][3]) << 16)));
+  c.target_speed_mm_s = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][4]) | (uint32_t(T::kRamp[r][5]) << 16)));
+}
+constexpr void set_stored_ramps(GaitConfig<float>&, uint8_t) {}
+}  // namespace gait_config_detail
+//! Whether stored_gait_config<S>() includes the ramps (Fixed) or leaves
+//! them to finish_gait_config() (float).
+template <typename S>
+constexpr bool stored_ramps_given() { return false; }
+template <>
+constexpr bool stored_ramps_given<Fixed>() { return true; }
+
 //! What fill_gait_config() gives built-in model r (kAllRobots[r]) at its
-//! gait defaults (kGaitParams[r], the stored velocity limits) before
-//! finish_gait_config() adds the ramps, as a constant: a firmware, whose
+//! gait defaults (kGaitParams[r], the stored velocity limits), as a
+//! constant; for float without the ramps, which finish_gait_config() adds
+//! (stored_ramps_given()): a firmware, whose
 //! model is a constant of the build, keeps it in flash instead of converting
 //! the float model and looking the limits up at start-up. flash_codes: where
 //! the strides are (STRIDER_VELOCITY_SEARCH 0; nullptr: the whole table's).
@@ -200,6 +220,7 @@ constexpr GaitConfig<S> stored_gait_config(uint8_t r, const uint16_t* flash_code
     c.edge_mm[i] = shortest * scalar<S>(0.5);
   }
   gait_config_detail::set_speeds(c);
+  gait_config_detail::set_stored_ramps(c, r);
   return c;
 }
 

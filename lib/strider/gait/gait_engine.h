@@ -74,12 +74,13 @@ class GaitEngine {
     fill_gait_config(cfg_, model, legs, params, shape);
     configure(cfg_, gait, sitting);
   }
-  //! The same from a configuration in flash without its ramps
-  //! (stored_gait_config(): a firmware's constant), copied into place and
-  //! finished there (finish_gait_config()): no copy on the stack.
+  //! The same from a configuration in flash (stored_gait_config(): a
+  //! firmware's constant), copied into place and, without its ramps
+  //! (float: stored_ramps_given()), finished there (finish_gait_config()):
+  //! no copy on the stack.
   void configure_stored(const GaitConfig<S>* flash_config, const GaitTable& gait, bool sitting = false) {
     flash_copy(&cfg_, flash_config, sizeof cfg_);
-    finish_gait_config(cfg_);
+    finish_stored(cfg_);
     configure(cfg_, gait, sitting);
   }
 
@@ -213,6 +214,10 @@ class GaitEngine {
   }
 
  private:
+  // A stored configuration with its ramps (Fixed) needs no finishing.
+  static void finish_stored(GaitConfig<float>& c) { finish_gait_config(c); }
+  static void finish_stored(GaitConfig<Fixed>&) {}
+
   void load_table(const GaitTable& t);
 
   S budget() const { return base_.shift_body ? cfg_.shift_budget_mm : S(0); }

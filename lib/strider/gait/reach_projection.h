@@ -36,7 +36,7 @@ struct ReachProjection {
   S a2_mm;      //!< sprawl: shank a2
   int8_t shift; //!< working units for the sprawl's squares (gait_units.h)
 
-  static ReachProjection make(const RobotModel& model) {
+  static constexpr ReachProjection make(const RobotModel& model) {
     const S a1 = scalar<S>(model.links.l1_mm), a2 = scalar<S>(model.links.l2_mm);
     return ReachProjection{model.kind, a1, a2, gait_units::shift_for(a1 + a2)};
   }

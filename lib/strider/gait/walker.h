@@ -74,7 +74,31 @@ constexpr uint8_t leg_solver_count(const RobotModel& model) {
   return n;
 }
 
+//! The index of leg i's solver among `model`'s leg solvers.
+constexpr uint8_t leg_solver_index(const RobotModel& model, uint8_t i) {
+  const uint8_t first = leg_solver_of(model, i);
+  uint8_t n = 0;
+  for (uint8_t k = 0; k < first; ++k)
+    if (leg_solver_of(model, k) == k) ++n;
+  return n;
+}
+//! The first leg of `model`'s leg solver n (model.leg_count when there is none).
+constexpr uint8_t leg_of_solver(const RobotModel& model, uint8_t n) {
+  for (uint8_t i = 0; i < model.leg_count && i < kMaxLegs; ++i)
+    if (leg_solver_of(model, i) == i && n-- == 0) return i;
+  return model.leg_count;
+}
+
 namespace walker_detail {
+
+template <uint8_t... I>
+struct Indices {};
+template <uint8_t N, uint8_t... I>
+struct MakeIndices : MakeIndices<uint8_t(N - 1), uint8_t(N - 1), I...> {};
+template <uint8_t... I>
+struct MakeIndices<0, I...> {
+  using type = Indices<I...>;
+};
 
 //! The walker's legs: an AnyLeg per leg, or (kShared) one per geometry
 //! and each leg's mount and side.
@@ -84,6 +108,18 @@ struct LegSolvers {
     for (uint8_t i = 0; i < model.leg_count; ++i)
       if (!AnyLeg<S>::from_model(model, i, legs[i])) return false;
     return true;
+  }
+  //! build()'s legs as a constant, but for the mounts' cos and sin (mount_trig()).
+  static constexpr LegSolvers constant(const RobotModel& model) {
+    return constant(model, typename MakeIndices<kWalkerLegs>::type());
+  }
+  template <uint8_t... I>
+  static constexpr LegSolvers constant(const RobotModel& model, Indices<I...>) {
+    return LegSolvers{{AnyLeg<S>::constant(model, I)...}};
+  }
+  static constexpr bool fits(const RobotModel& model) { return model.leg_count <= kWalkerLegs; }
+  void mount_trig() {
+    for (uint8_t i = 0; i < kWalkerLegs; ++i) legs[i].mount_trig();
   }
   const AnyLeg<S>& solver(uint8_t i) const { return legs[i]; }
   const LegMount<S>& mount(uint8_t i) const { return legs[i].mount(); }
@@ -114,6 +150,24 @@ struct LegSolvers<S, true> {
     }
     return true;
   }
+  //! build()'s legs as a constant, but for the mounts' cos and sin (mount_trig()).
+  static constexpr LegSolvers constant(const RobotModel& model) {
+    return constant(model, typename MakeIndices<kWalkerSolvers>::type(), typename MakeIndices<kWalkerLegs>::type());
+  }
+  template <uint8_t... N, uint8_t... I>
+  static constexpr LegSolvers constant(const RobotModel& model, Indices<N...>, Indices<I...>) {
+    return LegSolvers{{AnyLeg<S>::constant(model, leg_of_solver(model, N))...},
+                      {AnyLeg<S>::constant(model, I).mount()...},
+                      {(I < model.leg_count ? model.legs[I].side : BodySide::kLeft)...},
+                      {(I < model.leg_count ? leg_solver_index(model, I) : uint8_t(0))...}};
+  }
+  static constexpr bool fits(const RobotModel& model) {
+    return model.leg_count <= kWalkerLegs && leg_solver_count(model) <= kWalkerSolvers;
+  }
+  void mount_trig() {
+    for (uint8_t n = 0; n < kWalkerSolvers; ++n) solvers[n].mount_trig();
+    for (uint8_t i = 0; i < kWalkerLegs; ++i) mounts[i] = LegMount<S>::make(mounts[i].origin_mm, mounts[i].yaw_rad);
+  }
   const AnyLeg<S>& solver(uint8_t i) const { return solvers[of[i]]; }
   const LegMount<S>& mount(uint8_t i) const { return mounts[i]; }
   AnyLeg<S> leg(uint8_t i) const { return solvers[of[i]].placed(mounts[i], sides[i]); }
@@ -126,6 +180,24 @@ struct LegSolvers<S, true> {
 };
 
 }  // namespace walker_detail
+
+//! A walker's legs built from a model at compile time (walker_legs()): a
+//! firmware keeps its model's in flash and converts nothing at start-up
+//! (Walker::configure_stored()).
+template <typename S>
+struct WalkerLegs {
+  walker_detail::LegSolvers<S> legs;  // the mounts without their cos and sin
+  ReachProjection<S> proj;
+  uint8_t leg_count;
+  uint8_t dof;
+  bool ok;  // the model fits this build's walker (kWalkerLegs, kWalkerSolvers) and its leg kinds
+};
+template <typename S>
+constexpr WalkerLegs<S> walker_legs(const RobotModel& model) {
+  return WalkerLegs<S>{walker_detail::LegSolvers<S>::constant(model), ReachProjection<S>::make(model), model.leg_count,
+                       model.dof(),
+                       walker_detail::LegSolvers<S>::fits(model) && leg_kind_compiled(model.kind)};
+}
 
 //! What a LegResult keeps for host tools (kWalkerFeet).
 template <typename S, bool kFeet = kWalkerFeet>
@@ -170,14 +242,24 @@ class Walker {
     return true;
   }
 
-  //! The same with `model`'s configuration at its gait defaults from flash,
-  //! without the ramps (GaitEngine::configure_stored()): no conversion of the
+  //! The same with `model`'s configuration at its gait defaults from flash
+  //! (GaitEngine::configure_stored(); for Fixed with its ramps): no conversion of the
   //! float model's gait figures, no limits look-up. The caller makes sure
   //! that flash_config is stored_gait_config() of this model (a firmware:
   //! at compile time).
   bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>* flash_config,
                         bool sitting = false, bool solve_now = true) {
     if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || !build_legs(model)) return false;
+    engine_.configure_stored(flash_config, gait, sitting);
+    reset_legs(solve_now);
+    return true;
+  }
+
+  //! The same with the legs from flash too (walker_legs() of the model,
+  //! which the caller makes sure of): no conversion of the float model at all.
+  bool configure_stored(const WalkerLegs<S>* flash_legs, const GaitTable& gait, const GaitConfig<S>* flash_config,
+                        bool sitting = false, bool solve_now = true) {
+    if (!build_legs(flash_legs, gait.leg_count)) return false;
     engine_.configure_stored(flash_config, gait, sitting);
     reset_legs(solve_now);
     return true;
@@ -416,6 +498,21 @@ class Walker {
     proj_ = ReachProjection<S>::make(model);
     model_ = &model;
     dof_ = model.dof();
+    return true;
+  }
+
+  //! The legs from flash (no copy of the whole constant on the stack);
+  //! false when they do not fit or have another leg count than the gait's.
+  bool build_legs(const WalkerLegs<S>* flash_legs, uint8_t gait_legs) {
+    model_ = nullptr;
+    dof_ = 0;
+    const uint8_t legs = flash_u8(&flash_legs->leg_count);
+    if (flash_u8(&flash_legs->ok) == 0 || legs > kWalkerLegs || legs != gait_legs) return false;
+    flash_copy(&legs_, &flash_legs->legs, sizeof legs_);
+    legs_.mount_trig();
+    for (uint8_t i = 0; i < legs; ++i) turn_[i] = turn_of(legs_.mount(i));
+    flash_copy(&proj_, &flash_legs->proj, sizeof proj_);
+    dof_ = flash_u8(&flash_legs->dof);
     return true;
   }
 

@@ -59,10 +59,27 @@ class AnyLeg {
     return true;
   }
 
+  //! from_model()'s leg as a constant (a firmware's model is one): the same
+  //! conversions, evaluated at compile time, but for the mount's cos and
+  //! sin, which are left 0 (cos() and sin() are not constant expressions):
+  //! mounted() gives them at run time, and the result is from_model()'s leg
+  //! bit for bit. A leg kind that is not compiled in (or index past the
+  //! legs) gives the default leg.
+  static constexpr AnyLeg constant(const RobotModel& model, uint8_t index) {
+    return index >= model.leg_count || index >= kMaxLegs || !leg_kind_compiled(model.kind)
+               ? AnyLeg(LegKind::kSprawl, BodySide::kLeft, LegMount<S>{Vec3<S>(), S(0), S(0), S(0)}, Legs())
+               : AnyLeg(model.kind, model.legs[index].side,
+                        LegMount<S>{vec_of(model.legs[index].mount_mm),
+                                    deg_to_rad<S>(model.legs[index].mount_yaw_deg), S(0), S(0)},
+                        constant_legs(model, model.legs[index]));
+  }
+  //! The leg with its mount's cos and sin (constant()'s legs).
+  void mount_trig() { mount_ = LegMount<S>::make(mount_.origin_mm, mount_.yaw_rad); }
+
   LegKind kind() const { return kind_; }
   uint8_t dof() const { return dof_of(kind_); }
-  BodySide side() const { return side_; }
-  const LegMount<S>& mount() const { return mount_; }
+  constexpr BodySide side() const { return side_; }
+  constexpr const LegMount<S>& mount() const { return mount_; }
   //! The same leg mounted elsewhere (legs of one geometry share a solver).
   AnyLeg placed(const LegMount<S>& mount, BodySide side) const {
     AnyLeg leg(*this);
@@ -174,8 +191,8 @@ class AnyLeg {
   // A kind not compiled in is never built, so its cases are dead code.
   static constexpr bool on(LegKind kind) { return leg_kind_compiled(kind); }
   template <uint8_t N>
-  static JointLimits<S, N> limits_of(const LegModel& lm) {
-    JointLimits<S, N> l;
+  static constexpr JointLimits<S, N> limits_of(const LegModel& lm) {
+    JointLimits<S, N> l{};
     for (uint8_t j = 0; j < N; ++j) {
       l.lo[j] = deg_to_rad<S>(lm.joint[j].min_deg);
       l.hi[j] = deg_to_rad<S>(lm.joint[j].max_deg);
@@ -225,6 +242,8 @@ class AnyLeg {
   struct Absent {
     static constexpr uint8_t kDof = Leg::kDof;
     using Joints = typename Leg::Joints;
+    constexpr Absent() : limits() {}
+    constexpr explicit Absent(const Leg&) : limits() {}
     JointLimits<S, kDof> limits;
     Absent& operator=(const Leg&) { return *this; }
     Vec3<S> fk(const Joints&) const { return Vec3<S>(); }
@@ -257,13 +276,44 @@ class AnyLeg {
 
   // One leg of the four kinds; kind_ says which member is live. The
   // constructor is needed because Fixed has a non-trivial default constructor.
+  template <LegKind kKind>
+  struct KindTag {};
   union Legs {
-    Legs() : sprawl() {}
+    constexpr Legs() : sprawl() {}
+    constexpr Legs(const SprawlLeg<S>& l, KindTag<LegKind::kSprawl>) : sprawl(l) {}
+    constexpr Legs(const PlanarLeg<S>& l, KindTag<LegKind::kPlanar>) : planar(l) {}
+    constexpr Legs(const CoxaFemurTibiaLeg<S>& l, KindTag<LegKind::kCoxaFemurTibia>) : cft(l) {}
+    constexpr Legs(const AbductionLeg<S>& l, KindTag<LegKind::kAbduction>) : abduction(l) {}
     Slot<LegKind::kSprawl, SprawlLeg<S> > sprawl;
     Slot<LegKind::kPlanar, PlanarLeg<S> > planar;
     Slot<LegKind::kCoxaFemurTibia, CoxaFemurTibiaLeg<S> > cft;
     Slot<LegKind::kAbduction, AbductionLeg<S> > abduction;
   };
+
+  constexpr AnyLeg(LegKind kind, BodySide side, const LegMount<S>& mount, const Legs& legs)
+      : kind_(kind), side_(side), mount_(mount), legs_(legs) {}
+  // Vec3<S>::from(), as a constant.
+  static constexpr Vec3<S> vec_of(const Vec3<float>& v) {
+    return Vec3<S>(scalar<S>(double(v.x)), scalar<S>(double(v.y)), scalar<S>(double(v.z)));
+  }
+  // from_model()'s leg types, as constants.
+  static constexpr Legs constant_legs(const RobotModel& model, const LegModel& lm) {
+    return model.kind == LegKind::kSprawl
+               ? Legs(SprawlLeg<S>::make(scalar<S>(model.links.l1_mm), scalar<S>(model.links.l2_mm), limits_of<2>(lm)),
+                      KindTag<LegKind::kSprawl>())
+           : model.kind == LegKind::kPlanar
+               ? Legs(PlanarLeg<S>::make(scalar<S>(model.links.l1_mm), scalar<S>(model.links.l2_mm), limits_of<2>(lm)),
+                      KindTag<LegKind::kPlanar>())
+           : model.kind == LegKind::kCoxaFemurTibia
+               ? Legs(CoxaFemurTibiaLeg<S>::make(scalar<S>(model.links.d1_mm), scalar<S>(model.links.l1_mm),
+                                                 scalar<S>(model.links.l2_mm), scalar<S>(model.links.l3_mm),
+                                                 limits_of<3>(lm)),
+                      KindTag<LegKind::kCoxaFemurTibia>())
+               : Legs(AbductionLeg<S>::make(scalar<S>(model.links.l1_mm), scalar<S>(model.links.l2_mm),
+                                            scalar<S>(model.links.l3_mm), limits_of<3>(lm),
+                                            lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight),
+                      KindTag<LegKind::kAbduction>());
+  }
 
   LegKind kind_;
   BodySide side_;
