@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Turns out/bench/avr.json (written by `tools/dev bench`) into the Markdown
-tables of docs/benchmarks.md, or prints them.
+tables of docs/benchmarks.md and the firmware sizes table of docs/firmware.md,
+or prints them.
 
 usage: bench_report.py [--json out/bench/avr.json] [--write docs/benchmarks.md]
+                       [--firmware-table docs/firmware.md]
 """
 import argparse
 import json
@@ -12,6 +14,34 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 BEGIN = "<!-- bench:begin -->"
 END = "<!-- bench:end -->"
+FIRMWARE_BEGIN = "<!-- firmware:begin -->"
+FIRMWARE_END = "<!-- firmware:end -->"
+
+
+def firmware_table(d):
+    """The per-model firmware figures (avr-size, the virtual Mega's run)."""
+    f_mhz = d["f_cpu"] / 1e6
+    out = ["| model | flash [B] | static RAM [B] | peak stack [B] | tick max [cycles] | overruns | largest I2C frame |",
+           "|---|---|---|---|---|---|---|"]
+    for model, f in d.get("firmware", {}).items():
+        tick_ms = f["tick_cycles_max"] / f_mhz / 1000.0
+        i2c_ms = f["i2c_frame_us_max_400khz"] / 1000.0
+        out.append(f"| {model} | {f['flash_bytes']:,} | {f['ram_static_bytes']:,} | {f['stack_peak_bytes']:,} | "
+                   f"{f['tick_cycles_max']:,} ({tick_ms:.1f} ms) | {f['overruns']} | "
+                   f"{f['i2c_frame_bytes_max']} B = {i2c_ms:.2f} ms at 400 kHz |")
+    return "\n".join(out)
+
+
+def replace_section(path, begin, end, text):
+    path = pathlib.Path(path)
+    doc = path.read_text()
+    if begin not in doc or end not in doc:
+        print(f"{path}: no {begin} ... {end} section", file=sys.stderr)
+        return False
+    head, rest = doc.split(begin, 1)
+    tail = rest.split(end, 1)[1]
+    path.write_text(f"{head}{begin}\n{text}\n{end}{tail}")
+    return True
 
 
 def tables(d):
@@ -53,20 +83,20 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--json", default=str(ROOT / "out/bench/avr.json"))
     ap.add_argument("--write", help="Markdown file whose bench section is replaced")
+    ap.add_argument("--firmware-table", help="Markdown file whose firmware section is replaced")
     a = ap.parse_args()
-    text = tables(json.load(open(a.json)))
-    if not a.write:
-        print(text)
+    d = json.load(open(a.json))
+    if not a.write and not a.firmware_table:
+        print(tables(d))
+        print()
+        print(firmware_table(d))
         return 0
-    path = pathlib.Path(a.write)
-    doc = path.read_text()
-    if BEGIN not in doc or END not in doc:
-        print(f"{path}: no {BEGIN} ... {END} section", file=sys.stderr)
-        return 1
-    head, rest = doc.split(BEGIN, 1)
-    tail = rest.split(END, 1)[1]
-    path.write_text(f"{head}{BEGIN}\n{text}\n{END}{tail}")
-    return 0
+    ok = True
+    if a.write:
+        ok = replace_section(a.write, BEGIN, END, tables(d)) and ok
+    if a.firmware_table:
+        ok = replace_section(a.firmware_table, FIRMWARE_BEGIN, FIRMWARE_END, firmware_table(d)) and ok
+    return 0 if ok else 1
 
 
 if __name__ == "__main__":
