@@ -47,17 +47,31 @@ inline uint32_t mantissa(float f, uint8_t* sh) {
   return e == 0 ? u : ((u & 0x7FFFFFu) | 0x800000u);
 }
 
-//! floor(f 2^17) and whether that dropped bits (f in [0, 1]).
-inline uint32_t times_2_17(float f, bool* inexact) {
-  uint8_t sh;
-  const uint32_t m = mantissa(f, &sh);
-  const uint8_t n = uint8_t(sh - 17);  // >= 6
+//! m >> n and whether that dropped bits: whole bytes first (the AVR
+//! shifts by a variable count one bit per loop).
+inline uint32_t shift_down(uint32_t m, uint8_t n, bool* inexact) {
+  bool lost = false;
   if (n > 31) {
     *inexact = m != 0;
     return 0;
   }
-  *inexact = (m & ((uint32_t(1) << n) - 1u)) != 0;
-  return m >> n;
+  for (; n >= 8; n = uint8_t(n - 8)) {
+    lost |= uint8_t(m) != 0;
+    m >>= 8;
+  }
+  for (; n != 0; --n) {
+    lost |= (m & 1u) != 0;
+    m >>= 1;
+  }
+  *inexact = lost;
+  return m;
+}
+
+//! floor(f 2^17) and whether that dropped bits (f in [0, 1]).
+inline uint32_t times_2_17(float f, bool* inexact) {
+  uint8_t sh;
+  const uint32_t m = mantissa(f, &sh);
+  return shift_down(m, uint8_t(sh - 17), inexact);  // sh - 17 >= 6
 }
 
 //! round(f 2^16), halves up, for f in [0, 1]: phase16() before its wrap
@@ -78,8 +92,24 @@ inline uint32_t swing_span(float duty) {
 //! saturated at Fixed's largest raw value (den 0 too).
 inline Fixed round_power_over(uint8_t n, uint32_t den) {
   if (den == 0) return Fixed::max();
-  uint32_t q = den == 1 ? 1u : 0u, r = den == 1 ? 0u : 1u;  // 2^0 / den, then one bit more per step
-  for (uint16_t bits = uint16_t(n) + 17u; bits != 0; --bits) {
+  // 2^i / den for the largest 2^i <= den (no quotient bits before it),
+  // then one bit more per step.
+  uint32_t top = den, r = 1;
+  uint8_t i = 0;
+  if (top >> 16) {
+    top >>= 16;
+    r <<= 16;
+    i = 16;
+  }
+  if (top >> 8) {
+    top >>= 8;
+    r <<= 8;
+    i = uint8_t(i + 8);
+  }
+  for (; top > 1u; top >>= 1, r <<= 1) ++i;
+  uint32_t q = r == den ? 1u : 0u;
+  if (q != 0) r = 0;
+  for (uint16_t bits = uint16_t(uint16_t(n) + 17u - i); bits != 0; --bits) {
     if (q >= 0x80000000u) return Fixed::max();
     q <<= 1;
     r <<= 1;  // r < den < 2^31
@@ -102,9 +132,8 @@ STRIDER_NOINLINE inline Fixed inverse_of(float f, bool rest) {
   uint32_t m = mantissa(f, &sh);
   if (!rest) return round_power_over(sh, m);
   if (sh > 31) {
-    const uint8_t n = uint8_t(sh - 31);
-    const bool inexact = n > 31 ? m != 0 : (m & ((uint32_t(1) << n) - 1u)) != 0;
-    m = (n > 31 ? 0u : m >> n) + (inexact ? 1u : 0u);
+    bool inexact;
+    m = shift_down(m, uint8_t(sh - 31), &inexact) + (inexact ? 1u : 0u);
     sh = 31;
   }
   const uint32_t one = uint32_t(1) << sh;
