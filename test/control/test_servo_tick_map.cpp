@@ -10,11 +10,13 @@
 #include <cstdlib>
 #include <limits>
 
+#include "control/channel_map.h"
 #include "control/servo_frame.h"
 #include "control/servo_tick_map.h"
 #include "fakes/recording_servo.h"
 #include "math/fixed.h"
 #include "math/scalar.h"
+#include "robots/all_robots.h"
 
 using strider::Fixed;
 using strider::Pca9685Timing;
@@ -139,6 +141,97 @@ TYPED_TEST(ServoTickMapTest, FrameWritesEveryChannelLikeTheGeneralFrame) {
   strider_test::RecordingServo tail;
   strider::write_servo_frame(tail, map, q, 3, 2);
   EXPECT_EQ(tail.writes.size(), 1u);
+}
+
+// The Fixed map's slope and offset in integers (no float library on the
+// AVR) against the double computation it replaced: the same ticks over
+// dense sweeps of every built-in model's joints, trims and PWM settings,
+// or at most one tick apart (counted and printed; never past the limits,
+// which MatchesMapJointOverSweeps and the bounds below check).
+struct DoubleScale {
+  bool ok;
+  double travel, tpr, base;
+};
+DoubleScale double_scale(const strider::ServoChannel<Fixed>& ch, Fixed trim, const Pca9685Timing& timing,
+                         double* base_rad) {
+  const double ticks_per_us = 262144.0 / double(timing.period_x64());
+  const Fixed lo = strider::min_of(ch.min_rad, ch.max_rad), hi = strider::max_of(ch.min_rad, ch.max_rad);
+  const Fixed zero = ch.direction < 0 ? -ch.zero_rad : ch.zero_rad;
+  *base_rad = (ch.centre_rad - zero + trim - lo).to_double();
+  const double lo_us = double(std::min(ch.min_pulse_us, ch.max_pulse_us));
+  const double hi_us = double(std::max(ch.min_pulse_us, ch.max_pulse_us));
+  const double upr = ch.us_per_rad.to_double();
+  const double at_lo = double(ch.min_pulse_us) + lo.to_double() * upr;
+  const double at_hi = double(ch.min_pulse_us) + hi.to_double() * upr;
+  DoubleScale r{false, (hi - lo).to_double(), upr * ticks_per_us, at_lo * ticks_per_us};
+  r.ok = !(at_lo < lo_us || at_hi > hi_us || !(upr >= 0.0)) && r.travel < 4.0 && r.tpr > 0.5 && r.tpr < 8192.0 &&
+         r.base + r.tpr * r.travel < 4096.0;
+  return r;
+}
+// The old Fixed folding: k, shift and base_q16 from the doubles.
+strider::ServoTickScale<Fixed> old_scale(const DoubleScale& d) {
+  strider::ServoTickScale<Fixed> sc;
+  uint8_t shift = 2;
+  while (d.tpr * double(uint32_t(1) << (shift + 1)) < 65535.5 && shift < 17) ++shift;
+  sc.shift = shift;
+  sc.k = uint16_t(d.tpr * double(uint32_t(1) << shift) + 0.5);
+  sc.base_q16 = uint32_t(d.base * 65536.0 + 0.5);
+  return sc;
+}
+
+TEST(ServoTickMapFixed, IntegerScaleMatchesTheDoubleOne) {
+  long joints = 0, samples = 0, off_by_one = 0, scale_diffs = 0;
+  const int16_t trims[] = {0, 1, -7, 45, -120, 300, -450};
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    const uint8_t n = m->joint_count();
+    for (uint32_t osc : {20000000u, 23000000u, 25000000u, 26500000u, 27000000u, 30000000u}) {
+      for (uint16_t pwm : {uint16_t(24), uint16_t(50), uint16_t(60), uint16_t(100), uint16_t(200), uint16_t(330)}) {
+        Pca9685Timing timing;
+        ASSERT_NE(timing.configure(osc, pwm), strider::PwmTimingStatus::kBadOscillator);
+        for (int16_t trim_d : trims) {
+          for (uint8_t k = 0; k < n; ++k) {
+            const strider::ServoChannel<Fixed> ch =
+                strider::make_joint_channel<Fixed>(*m, uint8_t(k / m->dof()), uint8_t(k % m->dof()));
+            const Fixed trim = strider::trim_from_decideg<Fixed>(trim_d);
+            double base_rad;
+            const DoubleScale d = double_scale(ch, trim, timing, &base_rad);
+            ServoTickMap<Fixed, 1> map;
+            const ServoTickStatus st = map.configure_joint(0, ch, trim, timing);
+            ASSERT_EQ(st == ServoTickStatus::kOk, d.ok) << m->name << " joint " << int(k);
+            if (!d.ok) continue;
+            ++joints;
+            const strider::ServoTickJoint<Fixed> j = map.joint(0);
+            const strider::ServoTickScale<Fixed> want = old_scale(d);
+            ASSERT_EQ(j.scale.shift, want.shift);
+            ASSERT_LE(std::abs(int(j.scale.k) - int(want.k)), 1);
+            ASSERT_LE(std::labs(long(j.scale.base_q16) - long(want.base_q16)), 1L);
+            if (j.scale.k != want.k || j.scale.base_q16 != want.base_q16) ++scale_diffs;
+            for (int q = -3200; q <= 3200; ++q) {
+              const Fixed d_rad = Fixed::from_raw(int32_t(q) * 64);  // -3.1 .. 3.1 rad, every 2^-10 rad
+              const strider::ServoCommand got = map.map(0, d_rad);
+              // The old ticks: the same clamped d with the old scale.
+              int32_t dd = j.direction < 0 ? (j.base_rad - d_rad).raw() : (j.base_rad + d_rad).raw();
+              if (dd < 0) dd = 0;
+              if (dd > j.travel_rad.raw()) dd = j.travel_rad.raw();
+              uint16_t t = strider::servo_ticks_detail::ticks_of(Fixed::from_raw(dd), want.k, want.shift,
+                                                                 want.base_q16);
+              t = t < j.lo_ticks ? j.lo_ticks : t > j.hi_ticks ? j.hi_ticks : t;
+              ++samples;
+              ASSERT_GE(got.ticks, j.lo_ticks);
+              ASSERT_LE(got.ticks, j.hi_ticks);
+              const int diff = std::abs(int(got.ticks) - int(t));
+              ASSERT_LE(diff, 1) << m->name << " joint " << int(k) << " q " << q;
+              if (diff != 0) ++off_by_one;
+            }
+          }
+        }
+      }
+    }
+  }
+  std::printf("integer scale: %ld joints, %ld with k or base 1 unit apart, %ld of %ld ticks one apart\n", joints,
+              scale_diffs, off_by_one, samples);
+  EXPECT_GT(joints, 1000);
+  EXPECT_LE(off_by_one * 10000, samples);  // rare: at most 1e-4 of the samples
 }
 
 TEST(ServoTickMapFixed, RefusesTravelsItCannotScale) {

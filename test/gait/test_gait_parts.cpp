@@ -170,6 +170,74 @@ TEST(Phase, FloatAndFixedIncrementsAgree) {
   EXPECT_EQ(strider::phase_to<Fixed>(32768), Fixed(0.5));
 }
 
+// The Fixed engine takes a table's float duty and offsets from their bits
+// (integers only): the same values as the double path (phase16(),
+// phase_span(), Fixed(double)) bit for bit, over every float k 2^-20 in
+// [0, 1], random floats in [2^-8, 1), and the library's tables, whose values
+// are also those of single precision (the AVR's double).
+struct TableUnits {
+  uint32_t q16, swing;
+  int32_t inv, inv_rest;
+};
+TableUnits double_units(float f) {
+  return {uint32_t(Fixed(double(f)).raw()), strider::phase_span(1.0 - double(f)), Fixed(1.0 / double(f)).raw(),
+          Fixed(1.0 / (1.0 - double(f))).raw()};
+}
+void expect_integer_units(float f) {
+  namespace tf = strider::table_fraction;
+  const TableUnits want = double_units(f);
+  ASSERT_EQ(tf::q16(f), want.q16) << f;
+  ASSERT_EQ(Phase16(tf::q16(f) & 0xFFFFu), strider::phase16(double(f))) << f;
+  ASSERT_EQ(tf::swing_span(f), want.swing) << f;
+  if (f > 0.0f) {
+    ASSERT_EQ(tf::inverse(f).raw(), want.inv) << f;
+  }
+  if (f < 1.0f) {
+    ASSERT_EQ(tf::inverse_of_rest(f).raw(), want.inv_rest) << f;
+  }
+}
+
+TEST(Phase, TableFractionsFromTheBitsMatchTheDoublePath) {
+  for (uint32_t k = 0; k <= (uint32_t(1) << 20); ++k) expect_integer_units(float(k) / 1048576.0f);
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<uint32_t> bits(0x3B800000u, 0x3F7FFFFFu);  // [2^-8, 1)
+  for (int n = 0; n < 2000000; ++n) expect_integer_units(strider::detail::bits_float(bits(rng)));
+  // Single precision (the AVR's double) gives the same for the library.
+  const strider::GaitTable* tables[] = {&strider::kGaitWalk,   &strider::kGaitTrot,   &strider::kGaitPace,
+                                        &strider::kGaitCrawl,  &strider::kGaitTripod, &strider::kGaitRipple,
+                                        &strider::kGaitWave};
+  for (const strider::GaitTable* t : tables) {
+    const volatile float d = t->duty;  // single precision throughout
+    const float rest = 1.0f - d, inv = 1.0f / d, inv_rest = 1.0f / rest;
+    EXPECT_EQ(strider::table_fraction::swing_span(t->duty), uint32_t(rest * 65536.0f + 0.5f)) << t->name;
+    EXPECT_EQ(strider::table_fraction::inverse(t->duty).raw(), int32_t(inv * 65536.0f + 0.5f)) << t->name;
+    EXPECT_EQ(strider::table_fraction::inverse_of_rest(t->duty).raw(), int32_t(inv_rest * 65536.0f + 0.5f))
+        << t->name;
+    for (int i = 0; i < t->leg_count; ++i) {
+      expect_integer_units(t->offset[i]);
+      EXPECT_EQ(strider::table_fraction::q16(t->offset[i]), uint32_t(t->offset[i] * 65536.0f + 0.5f)) << t->name;
+    }
+    expect_integer_units(t->duty);
+  }
+}
+
+TEST(Phase, TableFractionsOfTinyDutiesWithinOneUnit) {
+  // Below 2^-8 the rest 1 - duty is rounded to 2^-31 first: within one
+  // Fixed unit of the double path; the other values stay exact.
+  namespace tf = strider::table_fraction;
+  for (uint32_t u = 0x00000001u; u < 0x3B800000u; u += 997u) {
+    const float f = strider::detail::bits_float(u);
+    const TableUnits want = double_units(f);
+    ASSERT_EQ(tf::q16(f), want.q16) << f;
+    ASSERT_EQ(tf::swing_span(f), want.swing) << f;
+    ASSERT_EQ(tf::inverse(f).raw(), want.inv) << f;
+    ASSERT_LE(std::abs(tf::inverse_of_rest(f).raw() - want.inv_rest), 1) << f;
+  }
+  EXPECT_EQ(tf::inverse(0.0f).raw(), Fixed::kMaxRaw);
+  EXPECT_EQ(tf::inverse_of_rest(1.0f).raw(), Fixed::kMaxRaw);
+  EXPECT_EQ(tf::inverse_of_rest(0.0f).raw(), Fixed::kOneRaw);
+}
+
 // ---- swing shapes ------------------------------------------------------------------
 
 const SwingShape kShapes[] = {SwingShape::kRectangle, SwingShape::kSemicircle, SwingShape::kEllipse,

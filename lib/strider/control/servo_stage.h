@@ -157,7 +157,7 @@ class ServoStage {
   ServoStatus last_status() const { return status_; }
 
   //! Applies pending settings now (prescale to the boards, the fast map's
-  //! constants: float work, ~20 ms on the AVR), e.g. at start-up, so that no
+  //! constants), e.g. at start-up, so that no
   //! control tick pays for it. frame() does it too when settings change,
   //! the map's constants one leg per frame.
   template <typename Output>

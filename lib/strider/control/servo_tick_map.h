@@ -21,6 +21,7 @@
 
 #include <stdint.h>
 
+#include "../math/flash_table.h"
 #include "../math/float_bits.h"
 #include "../math/mul16.h"
 #include "../math/scalar.h"
@@ -45,6 +46,22 @@ using detail::float_bits;
 using detail::kFloatInfBits;
 using detail::kFloatSignBit;
 using detail::magnitude_bits;
+
+//! floor(num 2^bits / den) by long division, bit by bit (den < 2^31, the
+//! quotient < 2^32: the caller's bound); *inexact: a remainder is left.
+STRIDER_NOINLINE inline uint32_t div_shifted(uint32_t num, uint32_t den, uint8_t bits, bool* inexact) {
+  uint32_t q = num / den, r = num % den;
+  for (; bits != 0; --bits) {
+    r <<= 1;
+    q <<= 1;
+    if (r >= den) {
+      r -= den;
+      q |= 1u;
+    }
+  }
+  if (inexact) *inexact = r != 0;
+  return q;
+}
 
 //! ticks = (d [Q16.16] * k) >> shift + base [Q16.16], rounded (shift in
 //! [3, 17], d in [0, 4) rad: configure()). d has 18 significant bits, so the
@@ -196,8 +213,6 @@ class ServoTickMap {
   //! not change count() (a caller that configures joint by joint, as the
   //! servo stage does, reads them with map() only).
   ServoTickStatus configure_joint(uint8_t i, const ServoChannel<S>& ch, S trim, const Pca9685Timing& timing) {
-    // Exact slope from the timing: ticks = us * 262144 / period_x64.
-    const double ticks_per_us = 262144.0 / double(timing.period_x64());
     ServoTickOwn<S>& own = joints_.own(i);
     own.channel = ch.channel;
     own.direction = ch.direction < 0 ? int8_t(-1) : int8_t(1);
@@ -206,17 +221,7 @@ class ServoTickMap {
     own.base_rad = ch.centre_rad - zero + trim - lo;
     ServoTickRange<S> j;
     j.travel_rad = hi - lo;
-    // The same pulse as servo_pulse_us() before rounding to whole us,
-    // kept inside the pulse range (an angle limit beyond the travel).
-    const double lo_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.min_pulse_us : ch.max_pulse_us);
-    const double hi_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.max_pulse_us : ch.min_pulse_us);
-    const double us_per_rad = to_double(ch.us_per_rad);
-    double at_lo = double(ch.min_pulse_us) + to_double(lo) * us_per_rad;
-    double at_hi = double(ch.min_pulse_us) + to_double(hi) * us_per_rad;
-    if (at_lo < lo_us || at_hi > hi_us || !(us_per_rad >= 0.0)) return ServoTickStatus::kUnsupported;
-    const double tpr = us_per_rad * ticks_per_us;
-    const double base = at_lo * ticks_per_us;
-    if (!set_scale(j.scale, to_double(j.travel_rad), tpr, base)) return ServoTickStatus::kUnsupported;
+    if (!set_scale(j.scale, ch, lo, hi, timing)) return ServoTickStatus::kUnsupported;
     // The bounds and the centre exactly as map_joint() sends them.
     j.lo_ticks = timing.pulse_ticks(servo_pulse_us(ch, lo));
     j.hi_ticks = timing.pulse_ticks(servo_pulse_us(ch, hi));
@@ -287,20 +292,70 @@ class ServoTickMap {
   static void set_centre(ServoTickRange<Fixed>&, uint16_t) {}
   static uint16_t centre_ticks(const ServoTickRange<float>& j) { return j.centre_ticks; }
   static uint16_t centre_ticks(const ServoTickRange<Fixed>& j) { return j.lo_ticks; }  // never: Fixed is finite
-  static bool set_scale(ServoTickScale<float>& sc, double travel, double tpr, double base) {
+  // The slope and offset of the ticks over the servo angle from its lowest
+  // limit lo, for the pulse of servo_pulse_us() before its rounding to whole
+  // us: ticks = us * 262144 / period_x64. False: the joint cannot use this
+  // path (an angle limit beyond the pulse range, a travel of 4 rad or more,
+  // a slope or a pulse out of range).
+  static bool set_scale(ServoTickScale<float>& sc, const ServoChannel<float>& ch, float lo, float hi,
+                        const Pca9685Timing& timing) {
+    const double ticks_per_us = 262144.0 / double(timing.period_x64());
+    const double lo_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.min_pulse_us : ch.max_pulse_us);
+    const double hi_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.max_pulse_us : ch.min_pulse_us);
+    const double us_per_rad = double(ch.us_per_rad);
+    const double at_lo = double(ch.min_pulse_us) + double(lo) * us_per_rad;
+    const double at_hi = double(ch.min_pulse_us) + double(hi) * us_per_rad;
+    if (at_lo < lo_us || at_hi > hi_us || !(us_per_rad >= 0.0)) return false;
+    const double tpr = us_per_rad * ticks_per_us;
+    const double base = at_lo * ticks_per_us;
+    const double travel = double(hi - lo);
     sc.ticks_per_rad = float(tpr);
     sc.base = float(base + 0.5);
     return travel < 4.0 && base + tpr * travel < 4096.0;
   }
-  static bool set_scale(ServoTickScale<Fixed>& sc, double travel, double tpr, double base) {
-    if (!(travel < 4.0) || !(tpr > 0.5) || !(tpr < 8192.0) || !(base >= 0.0) || base + tpr * travel >= 4096.0)
-      return false;
-    // k = tpr 2^shift in [2^15, 2^16): 16 significant bits whatever the PWM.
+  // Fixed: integers only (no float library on the AVR). The slope
+  // us_per_rad * 262144 / period and the offset at_lo * 262144 / period are
+  // exact quotients, rounded once; the pulse at a limit, min_pulse + limit
+  // us_per_rad, is Fixed's product (within 2^-17 us of the exact one).
+  static bool set_scale(ServoTickScale<Fixed>& sc, const ServoChannel<Fixed>& ch, Fixed lo, Fixed hi,
+                        const Pca9685Timing& timing) {
+    const uint32_t period = timing.period_x64();  // 34,952 .. 3.4e6
+    const uint16_t lo_us = ch.min_pulse_us < ch.max_pulse_us ? ch.min_pulse_us : ch.max_pulse_us;
+    const uint16_t hi_us = ch.min_pulse_us < ch.max_pulse_us ? ch.max_pulse_us : ch.min_pulse_us;
+    const int32_t upr = ch.us_per_rad.raw();
+    uint32_t at_lo, at_hi;  // [Q16.16 us]
+    if (upr < 0 || !pulse_q16(ch, lo, &at_lo) || !pulse_q16(ch, hi, &at_hi)) return false;
+    if (at_lo < (uint32_t(lo_us) << 16) || at_hi > (uint32_t(hi_us) << 16)) return false;
+    if ((hi - lo).raw() >= (int32_t(4) << Fixed::kFracBits)) return false;  // travel < 4 rad
+    // ticks_per_rad = upr 4 / period < 8192, and ticks(hi) = at_hi 4 / period
+    // [Q16.16] < 4096 (at_lo <= at_hi: upr >= 0, lo <= hi).
+    if (upr / period >= 2048u || at_hi / period >= 1024u) return false;
+    // x = ticks_per_rad 2^18, truncated (< 2^31); inexact: a remainder.
+    bool inexact = false;
+    const uint32_t x = servo_ticks_detail::div_shifted(uint32_t(upr), period, 20, &inexact);
+    if (x < (uint32_t(1) << 17) || (x == (uint32_t(1) << 17) && !inexact)) return false;  // ticks_per_rad > 0.5
+    // k = ticks_per_rad 2^shift in [2^15, 2^16): the largest shift <= 17
+    // with ticks_per_rad 2^(shift + 1) < 65535.5, i.e. x < 131071 2^(16 - shift).
     uint8_t shift = 2;
-    while (tpr * double(uint32_t(1) << (shift + 1)) < 65535.5 && shift < 17) ++shift;
+    while (shift < 17 && x < (uint32_t(131071) << (16 - shift))) ++shift;
     sc.shift = shift;
-    sc.k = uint16_t(tpr * double(uint32_t(1) << shift) + 0.5);
-    sc.base_q16 = uint32_t(base * 65536.0 + 0.5);
+    sc.k = uint16_t((x + (uint32_t(1) << (17 - shift))) >> (18 - shift));  // rounded
+    // base_q16 = at_lo 2^18 / period, rounded (< 2^28).
+    sc.base_q16 = (servo_ticks_detail::div_shifted(at_lo, period, 19, nullptr) + 1u) >> 1;
+    return true;
+  }
+  //! min_pulse + angle us_per_rad [Q16.16 us]; false below 0 us or from 65536 us.
+  static bool pulse_q16(const ServoChannel<Fixed>& ch, Fixed angle, uint32_t* q16) {
+    const int32_t p = (angle * ch.us_per_rad).raw();
+    if (p == Fixed::kMaxRaw || p == Fixed::kMinRaw) return false;  // saturated
+    const uint32_t m = uint32_t(ch.min_pulse_us) << 16;
+    if (p < 0) {
+      if (uint32_t(-p) > m) return false;
+      *q16 = m - uint32_t(-p);
+    } else {
+      if (uint32_t(p) > ~m) return false;
+      *q16 = m + uint32_t(p);
+    }
     return true;
   }
   static uint16_t ticks(const ServoTickScale<Fixed>& sc, Fixed d) {

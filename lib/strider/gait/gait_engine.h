@@ -219,6 +219,10 @@ class GaitEngine {
   static void finish_stored(GaitConfig<Fixed>&) {}
 
   void load_table(const GaitTable& t);
+  void set_fractions(const GaitTable& t, float);
+  void set_fractions(const GaitTable& t, Fixed);
+  static Phase16 table_phase(float offset, float);
+  static Phase16 table_phase(float offset, Fixed);
 
   S budget() const { return base_.shift_body ? cfg_.shift_budget_mm : S(0); }
 

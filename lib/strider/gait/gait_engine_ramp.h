@@ -102,14 +102,11 @@ void GaitEngine<S>::set_gait(const GaitTable& gait) {
 
 template <typename S>
 void GaitEngine<S>::load_table(const GaitTable& t) {
-  swing_len_ = phase_span(1.0 - double(t.duty));
-  duty_ = scalar<S>(double(t.duty));
-  inv_swing_ = scalar<S>(1.0 / (1.0 - double(t.duty)));
-  inv_stance_ = scalar<S>(1.0 / double(t.duty));
+  set_fractions(t, S());
   invalidate_touchdown();
   uint32_t latest_end = 0;
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
-    offset_[i] = phase16(double(t.offset[i]));
+    offset_[i] = table_phase(t.offset[i], S());
     const uint32_t end = uint32_t(offset_[i]) + swing_len_;
     if (end <= kPhaseOne && end > latest_end) latest_end = end;
   }
@@ -117,6 +114,31 @@ void GaitEngine<S>::load_table(const GaitTable& t) {
   // before it when the body must shift first.
   start_phase_ =
       t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
+}
+
+//! The table's duty in the engine's units: float through double (the host),
+//! Fixed from the float's bits (integers only: the same values, test/gait).
+template <typename S>
+void GaitEngine<S>::set_fractions(const GaitTable& t, float) {
+  swing_len_ = phase_span(1.0 - double(t.duty));
+  duty_ = scalar<S>(double(t.duty));
+  inv_swing_ = scalar<S>(1.0 / (1.0 - double(t.duty)));
+  inv_stance_ = scalar<S>(1.0 / double(t.duty));
+}
+template <typename S>
+void GaitEngine<S>::set_fractions(const GaitTable& t, Fixed) {
+  swing_len_ = table_fraction::swing_span(t.duty);
+  duty_ = Fixed::from_raw(int32_t(table_fraction::q16(t.duty)));
+  inv_swing_ = table_fraction::inverse_of_rest(t.duty);
+  inv_stance_ = table_fraction::inverse(t.duty);
+}
+template <typename S>
+Phase16 GaitEngine<S>::table_phase(float offset, float) {
+  return phase16(double(offset));
+}
+template <typename S>
+Phase16 GaitEngine<S>::table_phase(float offset, Fixed) {
+  return Phase16(table_fraction::q16(offset) & 0xFFFFu);
 }
 
 //! Plans the command and starts the ramp to it. The ramp runs in phase,
