@@ -76,8 +76,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   //! One control tick: deadman and avoidance; sends the walking command.
   //! walked_vy: the sideways speed the gait really walks [0.1 mm/s]
   //! (Avoidance::update). Returns true when *w holds a notice (`info ...`).
-  bool tick(uint32_t now_ms, const SonarReading& sonar, ReplyWriter& w,
-            int32_t walked_vy = Avoidance::kUnknownSpeed) {
+  STRIDER_NOINLINE bool tick(uint32_t now_ms, const SonarReading& sonar, ReplyWriter& w,
+                             int32_t walked_vy = Avoidance::kUnknownSpeed) {
     sonar_ = sonar;
     if (mode_ == RobotMode::kWalking && deadman_.expired(now_ms, true)) {
       stop();
@@ -112,7 +112,10 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   uint8_t speed_pct() const { return speed_pct_; }
 
  private:
-  bool handle(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
+  // Not inlined into the callers: they keep a reply buffer on the stack, and
+  // the replies' code addresses the writer through a register here instead
+  // of at the far end of the caller's frame (flash).
+  STRIDER_NOINLINE bool handle(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
     if (r == ParseResult::kNothing) return false;
     if (r == ParseResult::kError) {
       write_parse_error(w, c.error);
