@@ -132,6 +132,14 @@ class ReplyWriter {
   bool truncated_ = false;
 };
 
+//! A reply buffer behind its writer: a caller's frame keeps the writer's
+//! fields at its near end (short addressing on the AVR), the buffer after.
+struct ReplyLine {
+  ReplyLine() : w(buf, sizeof buf) {}
+  ReplyWriter w;
+  char buf[kMaxReplyBytes];
+};
+
 //! `err <code> <reason>` for any numeric code (parser: 1-19, controller: 20+).
 inline void write_error(ReplyWriter& w, uint8_t code, const char* reason) {
   w.text("err ").integer(code).ch(' ').text(reason);

@@ -274,8 +274,9 @@ class RobotApp {
   //! The boot notices: model and boards, how the settings loaded.
   template <typename Link>
   STRIDER_NOINLINE void announce(Link& link) {
-    char buf[kMaxReplyBytes];
-    ReplyWriter w(buf, sizeof buf);
+    ReplyLine line;
+    ReplyWriter& w = line.w;
+    char* const buf = line.buf;
     if (!ok_) {
       w.text(FlashText{app_text::kErrModel});
       link.send_line(kAllPorts, buf);
@@ -284,7 +285,7 @@ class RobotApp {
     w.text(FlashText{app_text::kInfoStrider}).text(name_).text(FlashText{app_text::kReady});
     w.field(FlashText{app_text::kJoints}, stage_.joint_count()).field(FlashText{app_text::kBoards}, boards_);
     link.send_line(kAllPorts, buf);
-    ReplyWriter e(buf, sizeof buf);
+    ReplyWriter e(buf, sizeof line.buf);
     e.text(FlashText{app_text::kInfoEeprom}).text(to_flash(load_status()));
     if (load_status() != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
     link.send_line(kAllPorts, buf);
@@ -300,10 +301,10 @@ class RobotApp {
       Command c;
       reply(p, parsers_[p].idle_timeout(&c), c, now_ms, link);
     }
-    char buf[kMaxReplyBytes];
-    ReplyWriter w(buf, sizeof buf);
+    ReplyLine line;
+    ReplyWriter& w = line.w;
     const int32_t walked_vy = to_tenths(motion_.walker().engine().vy());
-    if (controller_.tick(now_ms, sonar_.reading(now_us), w, walked_vy)) link.send_line(kAllPorts, buf);
+    if (controller_.tick(now_ms, sonar_.reading(now_us), w, walked_vy)) link.send_line(kAllPorts, line.buf);
   }
 
   //! After relax, the next motion command switches the servos on again.
@@ -314,9 +315,9 @@ class RobotApp {
   template <typename Link>
   void reply(uint8_t port, ParseResult r, const Command& c, uint32_t now_ms, Link& link) {
     if (r == ParseResult::kNothing) return;
-    char buf[kMaxReplyBytes];
-    ReplyWriter w(buf, sizeof buf);
-    if (controller_.on_parsed(r, c, now_ms, w)) link.send_line(port, buf);
+    ReplyLine line;
+    ReplyWriter& w = line.w;
+    if (controller_.on_parsed(r, c, now_ms, w)) link.send_line(port, line.buf);
   }
 
   void write_status(ReplyWriter& w) {
