@@ -263,8 +263,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   }
 
   void status(ReplyWriter& w) {
-    w.text(FlashText{text::kOkStatus}).field_text(FlashText{text::kMode}, to_flash(mode_)).field(FlashText{text::kSpeed}, speed_pct_);
-    w.field_tenths(FlashText{text::kVx}, out_.vx).field_tenths(FlashText{text::kVy}, out_.vy).field_tenths(FlashText{text::kWz}, out_.wz);
+    w.text(FlashText{text::kOkStatus}).field_text(FlashText{text::kMode}, to_flash(mode_));
+    w.format(FlashText{text::kStatusSpeedFmt}, speed_pct_, out_.vx, out_.vy).field_tenths(FlashText{text::kWz}, out_.wz);
     if (settings_.avoid_enabled) w.field_text(FlashText{text::kAvoid}, to_flash(avoid_.state()));
     else w.field_text(FlashText{text::kAvoid}, FlashText{text::kOff});
     const FlashText sonar = sonar_.status == SonarStatus::kOk ? FlashText{text::kOk}

@@ -49,12 +49,9 @@ constexpr char kOn[] STRIDER_PROGMEM = "on";
 constexpr char kOff[] STRIDER_PROGMEM = "off";
 constexpr char kStarting[] STRIDER_PROGMEM = "starting";
 constexpr char kLimited[] STRIDER_PROGMEM = "limited";
-constexpr char kOverruns[] STRIDER_PROGMEM = "overruns";
-constexpr char kTickMaxUs[] STRIDER_PROGMEM = "tick_max_us";
 constexpr char kStackPeak[] STRIDER_PROGMEM = "stack_peak";
-constexpr char kWalkVx[] STRIDER_PROGMEM = "walk_vx";
-constexpr char kWalkVy[] STRIDER_PROGMEM = "walk_vy";
-constexpr char kWalkWz[] STRIDER_PROGMEM = "walk_wz";
+constexpr char kWalkFmt[] STRIDER_PROGMEM = " walk_vx=" "\2" " walk_vy=" "\2" " walk_wz=" "\2";  // ReplyWriter::format()
+constexpr char kOverrunsFmt[] STRIDER_PROGMEM = " overruns=" "\1" " tick_max_us=" "\1";
 // The names of the gait engine's and the IK's states (to_string() in
 // gait_engine.h and ik_status.h), in flash; a test keeps them equal.
 constexpr char kGaitStateNames[] STRIDER_PROGMEM = "sitting\0standing_up\0standing\0walking\0stopping\0sitting_down";
@@ -323,9 +320,8 @@ class RobotApp {
   void write_status(ReplyWriter& w) {
     // What the gait engine walks: the command after avoidance and the robot's limits.
     const GaitEngine<S>& e = motion_.walker().engine();
-    w.field_tenths(FlashText{app_text::kWalkVx}, to_tenths(e.vx()))
-        .field_tenths(FlashText{app_text::kWalkVy}, to_tenths(e.vy()))
-        .field_tenths(FlashText{app_text::kWalkWz}, to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)));
+    w.format(FlashText{app_text::kWalkFmt}, to_tenths(e.vx()), to_tenths(e.vy()),
+             to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)));
     const FlashText servos = stage_.all_on() ? FlashText{app_text::kOn}
                              : stage_.starting() ? FlashText{app_text::kStarting} : FlashText{app_text::kOff};
     w.field_text(FlashText{app_text::kGait}, motion_.gait().name)
@@ -333,7 +329,7 @@ class RobotApp {
         .field_text(FlashText{app_text::kIk}, app_text::to_flash(motion_.walker().worst_status()))
         .field_text(FlashText{app_text::kServos}, servos);
     if (stage_.last_status() != ServoStatus::kOk) w.field_text(FlashText{app_text::kServos}, FlashText{app_text::kLimited});
-    w.field(FlashText{app_text::kOverruns}, overruns_).field(FlashText{app_text::kTickMaxUs}, int32_t(tick_max_us_));
+    w.format(FlashText{app_text::kOverrunsFmt}, overruns_, int32_t(tick_max_us_));
     if (stack_probe_ != nullptr) w.field(FlashText{app_text::kStackPeak}, stack_probe_());
   }
 
