@@ -76,8 +76,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   //! One control tick: deadman and avoidance; sends the walking command.
   //! walked_vy: the sideways speed the gait really walks [0.1 mm/s]
   //! (Avoidance::update). Returns true when *w holds a notice (`info ...`).
-  STRIDER_NOINLINE bool tick(uint32_t now_ms, const SonarReading& sonar, ReplyWriter& w,
-                             int32_t walked_vy = Avoidance::kUnknownSpeed) {
+  bool tick(uint32_t now_ms, const SonarReading& sonar, ReplyWriter& w,
+            int32_t walked_vy = Avoidance::kUnknownSpeed) {
     sonar_ = sonar;
     if (mode_ == RobotMode::kWalking && deadman_.expired(now_ms, true)) {
       stop();
