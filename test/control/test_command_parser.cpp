@@ -326,6 +326,67 @@ TEST(Decimal, ScalesAndRounds) {
   }
 }
 
+// The digit loop's first form (separate integer and fraction loops, the
+// overflow check by division): the shorter one must give the same status
+// and value for every input.
+namespace {
+strider::DecimalStatus reference_parse_decimal(const char* text, uint8_t len, uint8_t decimals, int32_t* out) {
+  uint8_t i = 0;
+  bool negative = false;
+  if (i < len && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
+  const int32_t kLimit = 2000000000;  // a little under 2^31: the check below never overflows
+  int32_t value = 0;
+  uint8_t int_digits = 0, frac_digits = 0;
+  bool round_up = false;
+  bool overflow = false;
+  while (i < len && text[i] >= '0' && text[i] <= '9') {
+    const int32_t d = text[i++] - '0';
+    if (value > (kLimit - d) / 10) overflow = true; else value = value * 10 + d;
+    ++int_digits;
+  }
+  if (i < len && text[i] == '.') {
+    ++i;
+    while (i < len && text[i] >= '0' && text[i] <= '9') {
+      const int32_t d = text[i++] - '0';
+      if (frac_digits < decimals) {
+        if (value > (kLimit - d) / 10) overflow = true; else value = value * 10 + d;
+      } else if (frac_digits == decimals) {
+        round_up = d >= 5;
+      }
+      ++frac_digits;
+    }
+  }
+  if (i != len || (int_digits == 0 && frac_digits == 0)) return strider::DecimalStatus::kSyntax;
+  for (uint8_t k = frac_digits; k < decimals; ++k) {
+    if (value > kLimit / 10) overflow = true; else value *= 10;
+  }
+  if (round_up) {
+    if (value >= kLimit) overflow = true; else ++value;
+  }
+  if (overflow) return strider::DecimalStatus::kOverflow;
+  *out = negative ? -value : value;
+  return strider::DecimalStatus::kOk;
+}
+}  // namespace
+
+TEST(Decimal, SameAsTheTwoLoopForm) {
+  std::mt19937 rng(5u);
+  const char alphabet[] = "0123456789.+-x 9";
+  std::uniform_int_distribution<int> len_of(0, 14), char_of(0, int(sizeof alphabet) - 2), dec_of(0, 3);
+  for (int n = 0; n < 200000; ++n) {
+    std::string s;
+    const int len = len_of(rng);
+    for (int k = 0; k < len; ++k) s += alphabet[char_of(rng)];
+    if (n % 3 == 0 && !s.empty()) s[0] = char('1' + n % 9);  // more long numbers (overflow)
+    const uint8_t dec = uint8_t(dec_of(rng));
+    int32_t a = -777, b = -777;
+    const auto sa = strider::parse_decimal(s.data(), uint8_t(s.size()), dec, &a);
+    const auto sb = reference_parse_decimal(s.data(), uint8_t(s.size()), dec, &b);
+    ASSERT_EQ(sa, sb) << '"' << s << "\" " << int(dec);
+    ASSERT_EQ(a, b) << '"' << s << "\" " << int(dec);
+  }
+}
+
 TEST(Reply, FormatsWithoutOverrun) {
   char buf[strider::kMaxReplyBytes];
   strider::ReplyWriter w(buf, sizeof buf);

@@ -151,6 +151,29 @@ TEST(Controller, CalibrationSaveAbortAndReload) {
   EXPECT_EQ(replies.back(), "err 22 store failed");
 }
 
+// Every reply with numbers in it, byte for byte (docs/protocol.md).
+TEST(Controller, NumericRepliesVerbatim) {
+  Rig r;
+  const auto replies = r.send(
+      "strafe -2.5\nturn 12.3\nvel 1 -2 3.5\npose -1.5 2 0.04\nheight 120.5\navoid 150 2999\ndeadman 2500\n"
+      "baud 57600\ncal start\ncal trim 17 -0.1\ncal osc 24999999\ncal pwm 333\ncal show\ncal abort\n");
+  ASSERT_EQ(replies.size(), 14u);
+  EXPECT_EQ(replies[0], "ok move vx=0.0 vy=-2.5 wz=0.0");
+  EXPECT_EQ(replies[1], "ok move vx=0.0 vy=0.0 wz=12.3");
+  EXPECT_EQ(replies[2], "ok move vx=1.0 vy=-2.0 wz=3.5");
+  EXPECT_EQ(replies[3], "ok pose roll=-1.5 pitch=2.0 yaw=0.0");
+  EXPECT_EQ(replies[4], "ok height mm=120.5");
+  EXPECT_EQ(replies[5], "ok avoid stop_mm=150 slow_mm=2999");
+  EXPECT_EQ(replies[6], "ok deadman ms=2500");
+  EXPECT_EQ(replies[7], "ok baud rate=57600 after save and reset");
+  EXPECT_EQ(replies[8], "ok cal start");
+  EXPECT_EQ(replies[9], "ok cal trim joint=17 deg=-0.1");
+  EXPECT_EQ(replies[10], "ok cal osc hz=24999999");
+  EXPECT_EQ(replies[11], "ok cal pwm hz=333");
+  EXPECT_EQ(replies[12], "ok cal osc=24999999 trims=0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,-0.1");
+  EXPECT_EQ(replies[13], "ok cal aborted");
+}
+
 TEST(Controller, CorruptEepromFallsBackAndSays) {
   FakeStore store;
   strider::Settings s = strider::default_settings();

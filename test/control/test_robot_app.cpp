@@ -209,6 +209,25 @@ TYPED_TEST(RobotAppTest, PortsKeepTheirOwnLines) {
   EXPECT_EQ(r.lines.sent[3].second, "ok gait trot");
 }
 
+// The whole status line, byte for byte (docs/protocol.md), walking after a
+// few ticks and with one overrun recorded.
+TYPED_TEST(RobotAppTest, StatusLineVerbatim) {
+  using S = TypeParam;
+  Rig<S> r(strider::kSprawl8);
+  r.run_ms(3000);
+  r.app->record_tick_time(21000);
+  const std::string cmd = "deadman 0\nvel 30 -20 10\n";
+  for (char ch : cmd) r.app->on_byte(0, uint8_t(ch), r.now_us, r.lines);
+  r.run_ms(1000);
+  const size_t from = r.lines.sent.size();
+  for (char ch : std::string("status\n")) r.app->on_byte(1, uint8_t(ch), r.now_us, r.lines);
+  ASSERT_EQ(r.lines.sent.size(), from + 1);
+  EXPECT_EQ(r.lines.sent[from].first, 1);
+  EXPECT_EQ(r.lines.sent[from].second,
+            "ok status mode=walking speed=50 vx=30.0 vy=-20.0 wz=10.0 avoid=forward sonar=none deadman_ms=0 eeprom=empty "
+            "walk_vx=30.0 walk_vy=-20.0 walk_wz=10.0 gait=crawl state=walking ik=clamped servos=on overruns=1 tick_max_us=21000");
+}
+
 TYPED_TEST(RobotAppTest, RefusedPoseAndGarbageChangeNothing) {
   using S = TypeParam;
   Rig<S> r(strider::kHexapod18);

@@ -16,6 +16,9 @@
 namespace strider {
 
 constexpr uint8_t kMaxLineTokens = 5;  //!< command word + up to 4 arguments (one more to detect extras)
+constexpr int32_t kMaxLinearDecimm_s = 5000;  //!< |walk|, |strafe| <= 500.0 mm/s
+constexpr int32_t kMaxTurnDecideg_s = 3600;   //!< |turn| <= 360.0 deg/s
+constexpr int32_t kMaxPoseDecideg = 300;      //!< |roll|, |pitch|, |yaw| <= 30.0 deg
 
 namespace detail {
 
@@ -161,11 +164,39 @@ inline ParseError parse_gait(const Token* t, uint8_t n, Command* cmd) {
   return ParseError::kNone;
 }
 
-}  // namespace detail
+//! The commands of one word and numbers (or none): `count` numbers into
+//! arg[slot..], all with `decimals` decimals and in [lo, hi]. A table in
+//! flash that one loop reads, instead of a call with its own constants per
+//! command.
+struct WordCommand {
+  const char* word;  // words::, in flash
+  CommandKind kind;
+  uint8_t count;
+  uint8_t slot;
+  uint8_t decimals;
+  int32_t lo;
+  int32_t hi;
+};
+constexpr WordCommand kWordCommands[] STRIDER_PROGMEM = {
+    {words::kWalk, CommandKind::kMove, 1, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
+    {words::kStrafe, CommandKind::kMove, 1, 1, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
+    {words::kTurn, CommandKind::kMove, 1, 2, 1, -kMaxTurnDecideg_s, kMaxTurnDecideg_s},
+    {words::kVel, CommandKind::kMove, 3, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
+    {words::kVelocity, CommandKind::kMove, 3, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
+    {words::kStop, CommandKind::kStop, 0, 0, 0, 0, 0},
+    {words::kRelax, CommandKind::kRelax, 0, 0, 0, 0, 0},
+    {words::kSpeed, CommandKind::kSpeed, 1, 0, 0, 0, 100},
+    {words::kPose, CommandKind::kPose, 3, 0, 1, -kMaxPoseDecideg, kMaxPoseDecideg},
+    {words::kHeight, CommandKind::kHeight, 1, 0, 1, 100, 4000},
+    {words::kDeadman, CommandKind::kDeadman, 1, 0, 0, 0, 60000},
+    {words::kBaud, CommandKind::kBaud, 1, 0, 0, 0, 2000000},
+    {words::kSave, CommandKind::kSave, 0, 0, 0, 0, 0},
+    {words::kStatus, CommandKind::kStatus, 0, 0, 0, 0, 0},
+    {words::kHelp, CommandKind::kHelp, 0, 0, 0, 0, 0},
+};
+constexpr uint8_t kWordCommandCount = uint8_t(sizeof kWordCommands / sizeof kWordCommands[0]);
 
-constexpr int32_t kMaxLinearDecimm_s = 5000;  //!< |walk|, |strafe| <= 500.0 mm/s
-constexpr int32_t kMaxTurnDecideg_s = 3600;   //!< |turn| <= 360.0 deg/s
-constexpr int32_t kMaxPoseDecideg = 300;      //!< |roll|, |pitch|, |yaw| <= 30.0 deg
+}  // namespace detail
 
 //! Parses one line (len bytes, printable ASCII, no line ending). On success
 //! returns kNone and fills *cmd (source kLine); otherwise returns the error.
@@ -177,35 +208,24 @@ inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd
   if (n == 0) return ParseError::kNone;  // blank line: nothing to do, no reply
   if (n > kMaxLineTokens) return ParseError::kExtraArgument;
   const Token& w = t[0];
-  if (token_is(w, words::kWalk)) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd); }
-  if (token_is(w, words::kStrafe)) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 1, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd); }
-  if (token_is(w, words::kTurn)) { cmd->kind = CommandKind::kMove; return number_args(t, n, 1, 1, 2, 1, -kMaxTurnDecideg_s, kMaxTurnDecideg_s, cmd); }
-  if (token_is(w, words::kVel) || token_is(w, words::kVelocity)) {
-    cmd->kind = CommandKind::kMove;
-    ParseError e = number_args(t, n, 1, 3, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s, cmd);
-    if (e == ParseError::kNone && (cmd->arg[2] < -kMaxTurnDecideg_s || cmd->arg[2] > kMaxTurnDecideg_s)) {
-      e = ParseError::kOutOfRange;
-    }
-    return e;
-  }
-  if (token_is(w, words::kStop)) { cmd->kind = CommandKind::kStop; return no_args(n, 1); }
-  if (token_is(w, words::kRelax)) { cmd->kind = CommandKind::kRelax; return no_args(n, 1); }
-  if (token_is(w, words::kSpeed)) { cmd->kind = CommandKind::kSpeed; return number_args(t, n, 1, 1, 0, 0, 0, 100, cmd); }
   if (token_is(w, words::kGait)) return parse_gait(t, n, cmd);
-  if (token_is(w, words::kPose)) { cmd->kind = CommandKind::kPose; return number_args(t, n, 1, 3, 0, 1, -kMaxPoseDecideg, kMaxPoseDecideg, cmd); }
-  if (token_is(w, words::kHeight)) { cmd->kind = CommandKind::kHeight; return number_args(t, n, 1, 1, 0, 1, 100, 4000, cmd); }
   if (token_is(w, words::kAvoid)) return parse_avoid(t, n, cmd);
-  if (token_is(w, words::kDeadman)) { cmd->kind = CommandKind::kDeadman; return number_args(t, n, 1, 1, 0, 0, 0, 60000, cmd); }
-  if (token_is(w, words::kBaud)) {
-    cmd->kind = CommandKind::kBaud;
-    const ParseError e = number_args(t, n, 1, 1, 0, 0, 0, 2000000, cmd);
-    if (e != ParseError::kNone) return e;
-    return valid_baud(uint32_t(cmd->arg[0])) ? ParseError::kNone : ParseError::kOutOfRange;
-  }
   if (token_is(w, words::kCal)) return parse_cal(t, n, cmd);
-  if (token_is(w, words::kSave)) { cmd->kind = CommandKind::kSave; return no_args(n, 1); }
-  if (token_is(w, words::kStatus)) { cmd->kind = CommandKind::kStatus; return no_args(n, 1); }
-  if (token_is(w, words::kHelp)) { cmd->kind = CommandKind::kHelp; return no_args(n, 1); }
+  for (uint8_t i = 0; i < kWordCommandCount; ++i) {
+    WordCommand wc;
+    flash_copy(&wc, &kWordCommands[i], sizeof wc);
+    if (!token_is(w, wc.word)) continue;
+    cmd->kind = wc.kind;
+    if (wc.count == 0) return no_args(n, 1);
+    const ParseError e = number_args(t, n, 1, wc.count, wc.slot, wc.decimals, wc.lo, wc.hi, cmd);
+    if (e != ParseError::kNone) return e;
+    // vel: the turn rate has a range of its own (walk and strafe: arg[2] is 0).
+    if (wc.kind == CommandKind::kMove && (cmd->arg[2] < -kMaxTurnDecideg_s || cmd->arg[2] > kMaxTurnDecideg_s)) {
+      return ParseError::kOutOfRange;
+    }
+    if (wc.kind == CommandKind::kBaud && !valid_baud(uint32_t(cmd->arg[0]))) return ParseError::kOutOfRange;
+    return ParseError::kNone;
+  }
   if (len == 1) {  // a light button's lowercase byte typed on its own line
     const char c = line[0];
     if (c == 'w' || c == 'u' || c == 'v' || c == 'x') { cmd->kind = CommandKind::kLight; cmd->arg[0] = c; return ParseError::kNone; }

@@ -112,7 +112,10 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   uint8_t speed_pct() const { return speed_pct_; }
 
  private:
-  bool handle(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
+  // Not inlined into the callers: they keep a reply buffer on the stack, and
+  // the replies' code addresses the writer through a register here instead
+  // of at the far end of the caller's frame (flash).
+  STRIDER_NOINLINE bool handle(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
     if (r == ParseResult::kNothing) return false;
     if (r == ParseResult::kError) {
       write_parse_error(w, c.error);
@@ -140,7 +143,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
       mode_ = RobotMode::kWalking;
       sink_.set_velocity(cmd_);  // avoidance refines it on the next tick
     }
-    w.text(FlashText{text::kOkMove}).field_tenths(FlashText{text::kVx}, t.vx).field_tenths(FlashText{text::kVy}, t.vy).field_tenths(FlashText{text::kWz}, t.wz);
+    w.format(FlashText{text::kOkMoveFmt}, t.vx, t.vy, t.wz);
   }
 
   void apply(const Command& c, ReplyWriter& w) {
@@ -162,7 +165,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
         return;
       case CommandKind::kSpeed:
         speed_pct_ = uint8_t(c.arg[0]);
-        w.text(FlashText{text::kOkSpeed}).field(FlashText{text::kPct}, c.arg[0]);
+        w.format(FlashText{text::kOkSpeedFmt}, c.arg[0]);
         return;
       case CommandKind::kGait:
         if (!sink_.set_gait(c.word)) return fail(w, ControlError::kUnknownGait, FlashText{text::kUnknownGait});
@@ -170,11 +173,11 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
         return;
       case CommandKind::kPose:
         if (!sink_.set_body_pose(c.arg[0], c.arg[1], c.arg[2])) return fail(w, ControlError::kRefused, FlashText{text::kPoseRefused});
-        w.text(FlashText{text::kOkPose}).field_tenths(FlashText{text::kRoll}, c.arg[0]).field_tenths(FlashText{text::kPitch}, c.arg[1]).field_tenths(FlashText{text::kYaw}, c.arg[2]);
+        w.format(FlashText{text::kOkPoseFmt}, c.arg[0], c.arg[1], c.arg[2]);
         return;
       case CommandKind::kHeight:
         if (!sink_.set_body_height(c.arg[0])) return fail(w, ControlError::kRefused, FlashText{text::kHeightRefused});
-        w.text(FlashText{text::kOkHeight}).field_tenths(FlashText{text::kMm}, c.arg[0]);
+        w.format(FlashText{text::kOkHeightFmt}, c.arg[0]);
         return;
       case CommandKind::kAvoidEnable:
         settings_.avoid_enabled = uint8_t(c.arg[0]);
@@ -183,16 +186,16 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
       case CommandKind::kAvoidLimits:
         settings_.avoid_stop_mm = uint16_t(c.arg[0]);
         settings_.avoid_slow_mm = uint16_t(c.arg[1]);
-        w.text(FlashText{text::kOkAvoid}).field(FlashText{text::kStopMm}, c.arg[0]).field(FlashText{text::kSlowMm}, c.arg[1]);
+        w.format(FlashText{text::kOkAvoidFmt}, c.arg[0], c.arg[1]);
         return;
       case CommandKind::kDeadman:
         settings_.deadman_ms = uint16_t(c.arg[0]);
         deadman_.set_timeout(settings_.deadman_ms);
-        w.text(FlashText{text::kOkDeadman}).field(FlashText{text::kMs}, c.arg[0]);
+        w.format(FlashText{text::kOkDeadmanFmt}, c.arg[0]);
         return;
       case CommandKind::kBaud:
         settings_.baud = uint32_t(c.arg[0]);
-        w.text(FlashText{text::kOkBaud}).field(FlashText{text::kRate}, c.arg[0]).text(FlashText{text::kSpAfterSaveAndReset});
+        w.format(FlashText{text::kOkBaudFmt}, c.arg[0]);
         return;
       default: return apply_cal(c, w);
     }
@@ -214,12 +217,13 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
                                                              : cal_.set_pwm(uint16_t(c.arg[0]));
         if (s != CalStatus::kOk) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
         sink_.apply_settings(cal_.live());
-        if (c.kind == CommandKind::kCalTrim) w.text(FlashText{text::kOkCalTrim}).field(FlashText{text::kJoint}, c.arg[0]).field_tenths(FlashText{text::kDeg}, c.arg[1]);
-        else w.text(c.kind == CommandKind::kCalOsc ? FlashText{text::kOkCalOsc} : FlashText{text::kOkCalPwm}).field(FlashText{text::kHz}, c.arg[0]);
+        w.format(c.kind == CommandKind::kCalTrim ? FlashText{text::kOkCalTrimFmt}
+                 : c.kind == CommandKind::kCalOsc ? FlashText{text::kOkCalOscFmt} : FlashText{text::kOkCalPwmFmt},
+                 c.arg[0], c.arg[1]);
         return;
       }
       case CommandKind::kCalShow:
-        w.text(FlashText{text::kOkCal}).field(FlashText{text::kOsc}, int32_t(cal_.live().pca_osc_hz)).text(FlashText{text::kSpTrims});
+        w.format(FlashText{text::kOkCalShowFmt}, int32_t(cal_.live().pca_osc_hz));
         for (uint8_t i = 0; i < kMaxServoJoints; ++i) {
           if (i) w.ch(',');
           w.tenths(cal_.live().trim_decideg[i]);
@@ -259,8 +263,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   }
 
   void status(ReplyWriter& w) {
-    w.text(FlashText{text::kOkStatus}).field_text(FlashText{text::kMode}, to_flash(mode_)).field(FlashText{text::kSpeed}, speed_pct_);
-    w.field_tenths(FlashText{text::kVx}, out_.vx).field_tenths(FlashText{text::kVy}, out_.vy).field_tenths(FlashText{text::kWz}, out_.wz);
+    w.text(FlashText{text::kOkStatus}).field_text(FlashText{text::kMode}, to_flash(mode_));
+    w.format(FlashText{text::kStatusSpeedFmt}, speed_pct_, out_.vx, out_.vy).field_tenths(FlashText{text::kWz}, out_.wz);
     if (settings_.avoid_enabled) w.field_text(FlashText{text::kAvoid}, to_flash(avoid_.state()));
     else w.field_text(FlashText{text::kAvoid}, FlashText{text::kOff});
     const FlashText sonar = sonar_.status == SonarStatus::kOk ? FlashText{text::kOk}

@@ -7,9 +7,25 @@
 
 #include <stdint.h>
 
+#include "../math/flash_table.h"
+
 namespace strider {
 
 enum class DecimalStatus : uint8_t { kOk = 0, kSyntax = 1, kOverflow = 2 };
+
+namespace detail {
+constexpr int32_t kDecimalLimit = 2000000000;  // a little under 2^31: value * 10 + 9 never overflows below it
+
+//! *value = *value * 10 + d (d 0-9) unless that passes kDecimalLimit: then
+//! false and *value unchanged. One copy for every digit of parse_decimal().
+STRIDER_NOINLINE inline bool push_digit(int32_t* value, uint8_t d) {
+  if (*value > kDecimalLimit / 10) return false;
+  const int32_t v = *value * 10 + d;
+  if (v > kDecimalLimit) return false;
+  *value = v;
+  return true;
+}
+}  // namespace detail
 
 //! Parses text[0..len) as a decimal scaled by 10^decimals (decimals <= 3).
 //! *out is written only on kOk.
@@ -17,34 +33,34 @@ inline DecimalStatus parse_decimal(const char* text, uint8_t len, uint8_t decima
   uint8_t i = 0;
   bool negative = false;
   if (i < len && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
-  const int32_t kLimit = 2000000000;  // a little under 2^31: the check below never overflows
   int32_t value = 0;
   uint8_t int_digits = 0, frac_digits = 0;
+  bool dot = false;
   bool round_up = false;
   bool overflow = false;
-  while (i < len && text[i] >= '0' && text[i] <= '9') {
-    const int32_t d = text[i++] - '0';
-    if (value > (kLimit - d) / 10) overflow = true; else value = value * 10 + d;
-    ++int_digits;
-  }
-  if (i < len && text[i] == '.') {
-    ++i;
-    while (i < len && text[i] >= '0' && text[i] <= '9') {
-      const int32_t d = text[i++] - '0';
-      if (frac_digits < decimals) {
-        if (value > (kLimit - d) / 10) overflow = true; else value = value * 10 + d;
-      } else if (frac_digits == decimals) {
-        round_up = d >= 5;
-      }
-      ++frac_digits;
+  for (; i < len; ++i) {
+    const char ch = text[i];
+    if (ch == '.' && !dot) {
+      dot = true;
+      continue;
     }
+    if (ch < '0' || ch > '9') break;
+    const uint8_t d = uint8_t(ch - '0');
+    if (!dot) {
+      ++int_digits;
+    } else {
+      const uint8_t k = frac_digits++;
+      if (k == decimals) round_up = d >= 5;
+      if (k >= decimals) continue;
+    }
+    if (!detail::push_digit(&value, d)) overflow = true;
   }
   if (i != len || (int_digits == 0 && frac_digits == 0)) return DecimalStatus::kSyntax;
   for (uint8_t k = frac_digits; k < decimals; ++k) {
-    if (value > kLimit / 10) overflow = true; else value *= 10;
+    if (!detail::push_digit(&value, 0)) overflow = true;
   }
   if (round_up) {
-    if (value >= kLimit) overflow = true; else ++value;
+    if (value >= detail::kDecimalLimit) overflow = true; else ++value;
   }
   if (overflow) return DecimalStatus::kOverflow;
   *out = negative ? -value : value;

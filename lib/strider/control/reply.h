@@ -88,6 +88,30 @@ class ReplyWriter {
   ReplyWriter& field_text(FlashText key, const char* v) { return ch(' ').text(key).ch('=').text(v); }
   ReplyWriter& field_text(FlashText key, FlashText v) { return ch(' ').text(key).ch('=').text(v); }
 
+  //! Text in flash with up to three numbers in it: a byte kFormatInteger
+  //! there writes the next of a, b, c as integer(), kFormatTenths as
+  //! tenths(). One call per reply instead of one per field: the replies'
+  //! labels and values come from one flash string, e.g.
+  //! "ok pose roll=" "\2" " pitch=" "\2" " yaw=" "\2" (kept apart so that no
+  //! letter or digit joins the escape).
+  STRIDER_NOINLINE ReplyWriter& format(FlashText fmt, int32_t a, int32_t b = 0, int32_t c = 0) {
+    const int32_t v[3] = {a, b, c};
+    uint8_t k = 0;
+    for (const char* p = fmt.p;; ++p) {
+      const char ch = flash_char(p);
+      if (ch == 0) break;
+      if (ch == kFormatInteger || ch == kFormatTenths) {
+        const int32_t x = k < 3 ? v[k++] : 0;
+        if (ch == kFormatInteger) integer(x); else tenths(x);
+      } else {
+        put(ch);
+      }
+    }
+    return *this;
+  }
+  static constexpr char kFormatInteger = '\1';  //!< format(): the next number, as integer()
+  static constexpr char kFormatTenths = '\2';   //!< format(): the next number, as tenths()
+
   //! Appends CR LF (the HC-05 terminals show lines either way).
   ReplyWriter& end_line() { return text("\r\n"); }
 
@@ -106,6 +130,14 @@ class ReplyWriter {
   uint8_t cap_;
   uint8_t len_;
   bool truncated_ = false;
+};
+
+//! A reply buffer behind its writer: a caller's frame keeps the writer's
+//! fields at its near end (short addressing on the AVR), the buffer after.
+struct ReplyLine {
+  ReplyLine() : w(buf, sizeof buf) {}
+  ReplyWriter w;
+  char buf[kMaxReplyBytes];
 };
 
 //! `err <code> <reason>` for any numeric code (parser: 1-19, controller: 20+).

@@ -49,12 +49,9 @@ constexpr char kOn[] STRIDER_PROGMEM = "on";
 constexpr char kOff[] STRIDER_PROGMEM = "off";
 constexpr char kStarting[] STRIDER_PROGMEM = "starting";
 constexpr char kLimited[] STRIDER_PROGMEM = "limited";
-constexpr char kOverruns[] STRIDER_PROGMEM = "overruns";
-constexpr char kTickMaxUs[] STRIDER_PROGMEM = "tick_max_us";
 constexpr char kStackPeak[] STRIDER_PROGMEM = "stack_peak";
-constexpr char kWalkVx[] STRIDER_PROGMEM = "walk_vx";
-constexpr char kWalkVy[] STRIDER_PROGMEM = "walk_vy";
-constexpr char kWalkWz[] STRIDER_PROGMEM = "walk_wz";
+constexpr char kWalkFmt[] STRIDER_PROGMEM = " walk_vx=" "\2" " walk_vy=" "\2" " walk_wz=" "\2";  // ReplyWriter::format()
+constexpr char kOverrunsFmt[] STRIDER_PROGMEM = " overruns=" "\1" " tick_max_us=" "\1";
 // The names of the gait engine's and the IK's states (to_string() in
 // gait_engine.h and ik_status.h), in flash; a test keeps them equal.
 constexpr char kGaitStateNames[] STRIDER_PROGMEM = "sitting\0standing_up\0standing\0walking\0stopping\0sitting_down";
@@ -274,8 +271,9 @@ class RobotApp {
   //! The boot notices: model and boards, how the settings loaded.
   template <typename Link>
   STRIDER_NOINLINE void announce(Link& link) {
-    char buf[kMaxReplyBytes];
-    ReplyWriter w(buf, sizeof buf);
+    ReplyLine line;
+    ReplyWriter& w = line.w;
+    char* const buf = line.buf;
     if (!ok_) {
       w.text(FlashText{app_text::kErrModel});
       link.send_line(kAllPorts, buf);
@@ -284,7 +282,7 @@ class RobotApp {
     w.text(FlashText{app_text::kInfoStrider}).text(name_).text(FlashText{app_text::kReady});
     w.field(FlashText{app_text::kJoints}, stage_.joint_count()).field(FlashText{app_text::kBoards}, boards_);
     link.send_line(kAllPorts, buf);
-    ReplyWriter e(buf, sizeof buf);
+    ReplyWriter e(buf, sizeof line.buf);
     e.text(FlashText{app_text::kInfoEeprom}).text(to_flash(load_status()));
     if (load_status() != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
     link.send_line(kAllPorts, buf);
@@ -300,10 +298,10 @@ class RobotApp {
       Command c;
       reply(p, parsers_[p].idle_timeout(&c), c, now_ms, link);
     }
-    char buf[kMaxReplyBytes];
-    ReplyWriter w(buf, sizeof buf);
+    ReplyLine line;
+    ReplyWriter& w = line.w;
     const int32_t walked_vy = to_tenths(motion_.walker().engine().vy());
-    if (controller_.tick(now_ms, sonar_.reading(now_us), w, walked_vy)) link.send_line(kAllPorts, buf);
+    if (controller_.tick(now_ms, sonar_.reading(now_us), w, walked_vy)) link.send_line(kAllPorts, line.buf);
   }
 
   //! After relax, the next motion command switches the servos on again.
@@ -314,17 +312,16 @@ class RobotApp {
   template <typename Link>
   void reply(uint8_t port, ParseResult r, const Command& c, uint32_t now_ms, Link& link) {
     if (r == ParseResult::kNothing) return;
-    char buf[kMaxReplyBytes];
-    ReplyWriter w(buf, sizeof buf);
-    if (controller_.on_parsed(r, c, now_ms, w)) link.send_line(port, buf);
+    ReplyLine line;
+    ReplyWriter& w = line.w;
+    if (controller_.on_parsed(r, c, now_ms, w)) link.send_line(port, line.buf);
   }
 
   void write_status(ReplyWriter& w) {
     // What the gait engine walks: the command after avoidance and the robot's limits.
     const GaitEngine<S>& e = motion_.walker().engine();
-    w.field_tenths(FlashText{app_text::kWalkVx}, to_tenths(e.vx()))
-        .field_tenths(FlashText{app_text::kWalkVy}, to_tenths(e.vy()))
-        .field_tenths(FlashText{app_text::kWalkWz}, to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)));
+    w.format(FlashText{app_text::kWalkFmt}, to_tenths(e.vx()), to_tenths(e.vy()),
+             to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)));
     const FlashText servos = stage_.all_on() ? FlashText{app_text::kOn}
                              : stage_.starting() ? FlashText{app_text::kStarting} : FlashText{app_text::kOff};
     w.field_text(FlashText{app_text::kGait}, motion_.gait().name)
@@ -332,7 +329,7 @@ class RobotApp {
         .field_text(FlashText{app_text::kIk}, app_text::to_flash(motion_.walker().worst_status()))
         .field_text(FlashText{app_text::kServos}, servos);
     if (stage_.last_status() != ServoStatus::kOk) w.field_text(FlashText{app_text::kServos}, FlashText{app_text::kLimited});
-    w.field(FlashText{app_text::kOverruns}, overruns_).field(FlashText{app_text::kTickMaxUs}, int32_t(tick_max_us_));
+    w.format(FlashText{app_text::kOverrunsFmt}, overruns_, int32_t(tick_max_us_));
     if (stack_probe_ != nullptr) w.field(FlashText{app_text::kStackPeak}, stack_probe_());
   }
 

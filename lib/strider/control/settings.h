@@ -83,8 +83,34 @@ inline uint16_t get_u16(const uint8_t*& p) { const uint16_t v = uint16_t(p[0] | 
 inline uint32_t get_u32(const uint8_t*& p) { const uint32_t lo = get_u16(p); return lo | (uint32_t(get_u16(p)) << 16); }
 }  // namespace detail
 
+#if defined(__BYTE_ORDER__) && defined(__ORDER_LITTLE_ENDIAN__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+constexpr bool kLittleEndianTarget = true;
+#else
+constexpr bool kLittleEndianTarget = false;
+#endif
+//! True where a Settings' bytes are its payload: little-endian and no
+//! padding (the AVR). encode/decode then copy bytes instead of building each
+//! field from its bytes (about 400 B less flash on the AVR).
+constexpr bool kSettingsBytesArePayload = kLittleEndianTarget && sizeof(Settings) == kSettingsPayloadBytes;
+static_assert(!kSettingsBytesArePayload ||
+                  (__builtin_offsetof(Settings, pwm_hz) == 4 && __builtin_offsetof(Settings, baud) == 6 &&
+                   __builtin_offsetof(Settings, deadman_ms) == 10 && __builtin_offsetof(Settings, avoid_stop_mm) == 12 &&
+                   __builtin_offsetof(Settings, avoid_slow_mm) == 14 && __builtin_offsetof(Settings, avoid_enabled) == 16 &&
+                   __builtin_offsetof(Settings, speed_pct) == 17 && __builtin_offsetof(Settings, trim_decideg) == 18),
+              "the payload's layout (encode_settings) is the struct's");
+
+namespace detail {
+inline void copy_bytes(uint8_t* to, const uint8_t* from, uint8_t n) {
+  for (uint8_t i = 0; i < n; ++i) to[i] = from[i];
+}
+}  // namespace detail
+
 //! Writes the payload (kSettingsPayloadBytes) of s into out.
 inline void encode_settings(const Settings& s, uint8_t* out) {
+  if (kSettingsBytesArePayload) {
+    detail::copy_bytes(out, reinterpret_cast<const uint8_t*>(&s), kSettingsPayloadBytes);
+    return;
+  }
   uint8_t* p = out;
   detail::put_u32(p, s.pca_osc_hz);
   detail::put_u16(p, s.pwm_hz);
@@ -99,6 +125,10 @@ inline void encode_settings(const Settings& s, uint8_t* out) {
 
 //! Reads a payload written by encode_settings (no validation).
 inline void decode_settings(const uint8_t* in, Settings* s) {
+  if (kSettingsBytesArePayload) {
+    detail::copy_bytes(reinterpret_cast<uint8_t*>(s), in, kSettingsPayloadBytes);
+    return;
+  }
   const uint8_t* p = in;
   s->pca_osc_hz = detail::get_u32(p);
   s->pwm_hz = detail::get_u16(p);
