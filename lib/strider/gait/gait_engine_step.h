@@ -10,8 +10,10 @@ namespace strider {
 
 template <typename S>
 void GaitEngine<S>::step_walk(S dt) {
-  step_command(dt);
-  update_landing();
+  // A steady command (the ramp over, the products known) and its landing
+  // stride known: step_command() and update_landing() have nothing to do.
+  if (ramp_ < S(1) || !vel_fresh_) step_command(dt);
+  if (!land_fresh_) update_landing();
   StepCache& sc = step_cache_;
   if (!(sc.vx == vx_ && sc.vy == vy_ && sc.wz == wz_ && sc.dt == dt))
     sc = StepCache{vx_, vy_, wz_, dt, BodyStep<S>::make(vx_, vy_, wz_, dt)};
@@ -93,11 +95,22 @@ bool GaitEngine<S>::step_ground(const BodyStep<S>& step, S dt) {
     changed = true;
   }
   // Feet on the ground stay on the ground: they move by the inverse step.
-  for (uint8_t i = 0; i < n; ++i) {
+  // Not turning (walking straight): move_ground_point()'s differences, in
+  // place and without its call.
+  const bool straight = step.sin_yaw == S(0) && step.cos_yaw == S(1);
+  Vec3<S>* foot = foot_;
+  int32_t* elapsed = stance_elapsed_;
+  for (uint8_t i = 0; i < n; ++i, ++foot, ++elapsed) {
     if (!contact_[i] || landed[i]) continue;
-    // Field by field (leg_ik::copy_point): avr-gcc copies a whole Vec3 with a byte loop.
-    leg_ik::copy_point(step.move_ground_point(foot_[i]), foot_[i]);
-    stance_elapsed_[i] = min_of(stance_elapsed_[i] + int32_t(delta), int32_t(kPhaseOne));
+    if (straight) {
+      foot->x = sub_inline(foot->x, step.dx_mm);
+      foot->y = sub_inline(foot->y, step.dy_mm);
+    } else {
+      // Field by field (leg_ik::copy_point): avr-gcc copies a whole Vec3 with a byte loop.
+      leg_ik::copy_point(step.move_ground_point(*foot), *foot);
+    }
+    const int32_t e = *elapsed + int32_t(delta);
+    *elapsed = e < int32_t(kPhaseOne) ? e : int32_t(kPhaseOne);
   }
   return changed;
 }
