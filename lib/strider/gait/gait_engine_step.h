@@ -82,26 +82,24 @@ bool GaitEngine<S>::step_ground(const BodyStep<S>& step, S dt) {
   const uint32_t delta = Phase16(clock_.now() - clock_.before());
   const uint8_t n = cfg_.leg_count;
   bool changed = false;
-  bool landed[kWalkerLegs] = {};
-  // Touch-downs first, so a foot landing this tick counts as support.
-  for (uint8_t i = 0; i < n; ++i) {
-    if (contact_[i]) continue;
-    swing_elapsed_[i] += delta;
-    if (swing_elapsed_[i] < leg_swing_len_[i]) continue;
-    foot_[i] = Vec3<S>(target_[i].x, target_[i].y, cfg_.home[i].z);
-    contact_[i] = true;
-    stance_elapsed_[i] = int32_t(swing_elapsed_[i] - leg_swing_len_[i]);
-    landed[i] = true;
-    changed = true;
-  }
-  // Feet on the ground stay on the ground: they move by the inverse step.
   // Not turning (walking straight): move_ground_point()'s differences, in
   // place and without its call.
   const bool straight = step.sin_yaw == S(0) && step.cos_yaw == S(1);
   Vec3<S>* foot = foot_;
   int32_t* elapsed = stance_elapsed_;
+  // One pass: a foot landing this tick stays where it lands (the feet on
+  // the ground move on their own, so the order of the legs does not matter).
   for (uint8_t i = 0; i < n; ++i, ++foot, ++elapsed) {
-    if (!contact_[i] || landed[i]) continue;
+    if (!contact_[i]) {
+      swing_elapsed_[i] += delta;
+      if (swing_elapsed_[i] < leg_swing_len_[i]) continue;
+      *foot = Vec3<S>(target_[i].x, target_[i].y, cfg_.home[i].z);
+      contact_[i] = true;
+      *elapsed = int32_t(swing_elapsed_[i] - leg_swing_len_[i]);
+      changed = true;
+      continue;
+    }
+    // Feet on the ground stay on the ground: they move by the inverse step.
     if (straight) {
       foot->x = sub_inline(foot->x, step.dx_mm);
       foot->y = sub_inline(foot->y, step.dy_mm);
