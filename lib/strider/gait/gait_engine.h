@@ -151,6 +151,17 @@ class GaitEngine {
                                      sub_inline(pose_.translation_mm.z, drop)),
                              pose_.roll_rad, pose_.pitch_rad, pose_.yaw_rad);
   }
+  //! body_pose()'s translation, and whether its roll, pitch and yaw are all
+  //! zero (integer tests of float bits): a walker with a level body needs
+  //! no more of the pose.
+  Vec3<S> body_translation() const {
+    const S drop = progress_ >= S(1) ? S(0) : cfg_.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress_));
+    return Vec3<S>(add_inline(shift_.x_mm(), pose_.translation_mm.x), add_inline(shift_.y_mm(), pose_.translation_mm.y),
+                   sub_inline(pose_.translation_mm.z, drop));
+  }
+  bool body_level() const {
+    return leg_ik::is_zero(pose_.roll_rad) && leg_ik::is_zero(pose_.pitch_rad) && leg_ik::is_zero(pose_.yaw_rad);
+  }
   S shift_x_mm() const { return shift_.x_mm(); }
   S shift_y_mm() const { return shift_.y_mm(); }
   //! Static stability margin of the CoM [mm] (stability.h), this tick;

@@ -214,7 +214,8 @@ Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
     td_fresh_ = true;
   }
   const Vec3<S>& h = cfg_.home[i];
-  if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(h.x + td_dx_, h.y + td_dy_, h.z);
+  // Sums in place (scalar.h's add_inline: the same bits as operator+).
+  if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
   return Vec3<S>(td_cos_ * h.x - td_sin_ * h.y + td_dx_, td_sin_ * h.x + td_cos_ * h.y + td_dy_, h.z);
 }
 

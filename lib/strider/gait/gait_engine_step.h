@@ -22,7 +22,7 @@ void GaitEngine<S>::step_walk(S dt) {
   // A foot on the ground at the edge of its reach that this step would take
   // farther out holds the body for this tick (it lifts as soon as it can).
   held_ = false;
-  bool edge[kWalkerLegs] = {};
+  bool edge[kWalkerLegs];  // legs 0 to leg_count - 1, all set here
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
   for (uint8_t i = 0; i < cfg_.leg_count && !held_; ++i) {
     if (!edge[i]) continue;
@@ -59,10 +59,12 @@ void GaitEngine<S>::step_walk(S dt) {
   bool changed = step_ground(step, dt);
   if (step_lift(edge)) changed = true;
   step_swing(dt);
-  for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
-    if (!contact_[i]) continue;
-    const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
-    foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
+  if (cfg_.stance_depth_mm != S(0)) {
+    for (uint8_t i = 0; i < n; ++i) {
+      if (!contact_[i]) continue;
+      const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
+      foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
+    }
   }
   if (changed) support_dirty_ = true;
   step_shift(dt);
@@ -93,7 +95,9 @@ bool GaitEngine<S>::step_ground(const BodyStep<S>& step, S dt) {
     if (!contact_[i]) {
       swing_elapsed_[i] += delta;
       if (swing_elapsed_[i] < leg_swing_len_[i]) continue;
-      *foot = Vec3<S>(target_[i].x, target_[i].y, cfg_.home[i].z);
+      foot->x = target_[i].x;
+      foot->y = target_[i].y;
+      foot->z = cfg_.home[i].z;
       contact_[i] = true;
       *elapsed = int32_t(swing_elapsed_[i] - leg_swing_len_[i]);
       changed = true;

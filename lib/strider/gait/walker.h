@@ -326,6 +326,12 @@ class Walker {
 
  private:
   void solve() {
+    // A level body (the usual case): its translation only, no whole pose.
+    if (engine_.body_level()) {
+      const Vec3<S> shift = engine_.body_translation();
+      solve_legs(nullptr, shift);
+      return;
+    }
     const BodyPose<S> pose = engine_.body_pose();
     using leg_ik::is_zero;  // integer tests of float bits (a float comparison is a call on the AVR)
     if (!is_zero(pose.roll_rad) || !is_zero(pose.pitch_rad) || !is_zero(pose.yaw_rad)) {
