@@ -67,7 +67,8 @@ void GaitEngine<S>::step_walk(S dt) {
     }
   }
   if (changed) support_dirty_ = true;
-  step_shift(dt);
+  // A gait without body shift and no shift left (a trot, a tripod): nothing to move, no call.
+  if (base_.shift_body || shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) step_shift(dt);
 
   if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
   if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
