@@ -386,7 +386,7 @@ class GaitEngine {
   // Per-tick work that only changes with the command: the body step and the
   // rotation and offset of every touch-down point.
   struct StepCache {
-    S vx, vy, wz, dt;
+    S dt;  // the tick the step is for; 0 (no tick has it): vx_, vy_ or wz_ changed since
     BodyStep<S> step;
   } step_cache_{};
   bool td_fresh_ = false;

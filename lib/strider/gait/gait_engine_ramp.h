@@ -184,6 +184,7 @@ void GaitEngine<S>::step_command(S dt) {
   vx_ = vx;
   vy_ = vy;
   wz_ = wz;
+  step_cache_.dt = S(0);  // the body step is made again
   vel_fresh_ = true;
 }
 

@@ -15,8 +15,7 @@ void GaitEngine<S>::step_walk(S dt) {
   if (ramp_ < S(1) || !vel_fresh_) step_command(dt);
   if (!land_fresh_) update_landing();
   StepCache& sc = step_cache_;
-  if (!(sc.vx == vx_ && sc.vy == vy_ && sc.wz == wz_ && sc.dt == dt))
-    sc = StepCache{vx_, vy_, wz_, dt, BodyStep<S>::make(vx_, vy_, wz_, dt)};
+  if (!(sc.dt == dt)) sc = StepCache{dt, BodyStep<S>::make(vx_, vy_, wz_, dt)};
   // Field by field: avr-gcc copies the whole struct with a byte loop.
   BodyStep<S> step{sc.step.dx_mm, sc.step.dy_mm, sc.step.dyaw, sc.step.cos_yaw, sc.step.sin_yaw};
   // A foot on the ground at the edge of its reach that this step would take
