@@ -326,21 +326,19 @@ class Walker {
 
  private:
   void solve() {
-    // A level body (the usual case): its translation only, no whole pose.
+    // A level body (the usual case; integer tests of float bits, as a float
+    // comparison is a call on the AVR): its translation only, no whole pose
+    // and no rotation to build.
     if (engine_.body_level()) {
       const Vec3<S> shift = engine_.body_translation();
       solve_legs(nullptr, shift);
       return;
     }
     const BodyPose<S> pose = engine_.body_pose();
-    using leg_ik::is_zero;  // integer tests of float bits (a float comparison is a call on the AVR)
-    if (!is_zero(pose.roll_rad) || !is_zero(pose.pitch_rad) || !is_zero(pose.yaw_rad)) {
-      const Transform<S> body = body_transform(pose);
-      solve_legs(&body, pose.translation_mm);
-    } else {
-      solve_legs(nullptr, pose.translation_mm);  // no rotation to build
-    }
+    const Transform<S> body = body_transform(pose);
+    solve_legs(&body, pose.translation_mm);
   }
+
 
   //! Every leg for the body posed by `body` (nullptr: not turned, only
   //! moved by `shift` [mm]). Vectors are copied field by field, as avr-gcc
