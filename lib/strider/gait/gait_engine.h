@@ -145,10 +145,8 @@ class GaitEngine {
   BodyPose<S> body_pose() const {
     // Standing (progress 1): no drop, and no products for it.
     const S drop = progress_ >= S(1) ? S(0) : cfg_.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress_));
-    // Sums in place (scalar.h: the same bits as operator+ and operator-).
-    return BodyPose<S>::make(Vec3<S>(add_inline(shift_.x_mm(), pose_.translation_mm.x),
-                                     add_inline(shift_.y_mm(), pose_.translation_mm.y),
-                                     sub_inline(pose_.translation_mm.z, drop)),
+    return BodyPose<S>::make(Vec3<S>(shift_.x_mm() + pose_.translation_mm.x, shift_.y_mm() + pose_.translation_mm.y,
+                                     pose_.translation_mm.z - drop),
                              pose_.roll_rad, pose_.pitch_rad, pose_.yaw_rad);
   }
   //! body_pose()'s translation, and whether its roll, pitch and yaw are all
