@@ -117,7 +117,7 @@ class GaitEngine {
 
   void tick(S dt) {
     if (!(dt > S(0))) return;
-    step_pose(dt);
+    if (!pose_at_goal_) step_pose(dt);  // at its goal (the usual case): no call
     switch (state_) {
       case GaitState::kSitting: break;
       case GaitState::kStandingUp:
@@ -148,6 +148,17 @@ class GaitEngine {
     return BodyPose<S>::make(Vec3<S>(shift_.x_mm() + pose_.translation_mm.x, shift_.y_mm() + pose_.translation_mm.y,
                                      pose_.translation_mm.z - drop),
                              pose_.roll_rad, pose_.pitch_rad, pose_.yaw_rad);
+  }
+  //! body_pose()'s translation, and whether its roll, pitch and yaw are all
+  //! zero (integer tests of float bits): a walker with a level body needs
+  //! no more of the pose.
+  Vec3<S> body_translation() const {
+    const S drop = progress_ >= S(1) ? S(0) : cfg_.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress_));
+    return Vec3<S>(add_inline(shift_.x_mm(), pose_.translation_mm.x), add_inline(shift_.y_mm(), pose_.translation_mm.y),
+                   sub_inline(pose_.translation_mm.z, drop));
+  }
+  bool body_level() const {
+    return leg_ik::is_zero(pose_.roll_rad) && leg_ik::is_zero(pose_.pitch_rad) && leg_ik::is_zero(pose_.yaw_rad);
   }
   S shift_x_mm() const { return shift_.x_mm(); }
   S shift_y_mm() const { return shift_.y_mm(); }
@@ -186,19 +197,12 @@ class GaitEngine {
   //! is at 0.5 / kStrideShare = 0.556): a foot on the ground there lifts
   //! early, or, without the support to lift, holds the body still. Never
   //! while the command is steady (the plan keeps strides within the limits).
-  bool beyond_edge(uint8_t i, const Vec3<S>& p) const {
+  STRIDER_ALWAYS_INLINE bool beyond_edge(uint8_t i, const Vec3<S>& p) const {
     const S dx = sub_inline(p.x, cfg_.home[i].x), dy = sub_inline(p.y, cfg_.home[i].y);
     const S r = cfg_.edge_mm[i];
     // inside the shortest stride's diamond: no product (sums in place, scalar.h)
     if (add_inline(abs_inline(dx), abs_inline(dy)) <= r) return false;
-    // Inside the shortest stride's circle (a little smaller, for rounding):
-    // two products instead of the atan2, the square root and the lookup.
-    const S ux = gait_units::to_unit(dx, cfg_.unit_shift), uy = gait_units::to_unit(dy, cfg_.unit_shift);
-    if (ux * ux + uy * uy <= edge_r2_[i]) return false;
-    const S stride = cfg_.limits.leg_stride(i, dx, dy);
-    const S d = gait_units::length_mm(dx, dy, cfg_.unit_shift);
-    constexpr S share = scalar<S>(kEdgeShare);
-    return d > stride * share;
+    return beyond_diamond(i, dx, dy);
   }
   //! The share of a leg's longest stride beyond which a foot is at its edge.
   static constexpr double edge_share() { return kEdgeShare; }
@@ -282,6 +286,19 @@ class GaitEngine {
     return down > cfg_.min_support;
   }
 
+  //! beyond_edge() for a foot (dx, dy) [mm] from home outside the shortest
+  //! stride's diamond: apart, so that the usual answer (inside it) costs no
+  //! call.
+  STRIDER_NOINLINE bool beyond_diamond(uint8_t i, S dx, S dy) const {
+    // Inside the shortest stride's circle (a little smaller, for rounding):
+    // two products instead of the atan2, the square root and the lookup.
+    const S ux = gait_units::to_unit(dx, cfg_.unit_shift), uy = gait_units::to_unit(dy, cfg_.unit_shift);
+    if (ux * ux + uy * uy <= edge_r2_[i]) return false;
+    const S stride = cfg_.limits.leg_stride(i, dx, dy);
+    const S d = gait_units::length_mm(dx, dy, cfg_.unit_shift);
+    constexpr S share = scalar<S>(kEdgeShare);
+    return d > stride * share;
+  }
   bool at_edge(uint8_t i) const { return beyond_edge(i, foot_[i]); }
   //! Where foot i lands (stance.h's touchdown_point with cached terms).
   Vec3<S> touchdown(uint8_t i);
@@ -354,6 +371,7 @@ class GaitEngine {
   S edge_r2_[kWalkerLegs] = {};  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
   bool settled_[kWalkerLegs] = {};  // swinging foot's touch-down point already at touchdown(i)
   bool vel_fresh_ = false;       // vx_, vy_, wz_ are now_s_ x hz_
+  bool land_fresh_ = false;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)
   // Odometry step in the world frame, kept while the body does not turn.
   S odo_dx_ = S(0), odo_dy_ = S(0), odo_wx_ = S(0), odo_wy_ = S(0);
   BodyShift<S> shift_;
@@ -370,7 +388,7 @@ class GaitEngine {
   // Per-tick work that only changes with the command: the body step and the
   // rotation and offset of every touch-down point.
   struct StepCache {
-    S vx, vy, wz, dt;
+    S dt;  // the tick the step is for; 0 (no tick has it): vx_, vy_ or wz_ changed since
     BodyStep<S> step;
   } step_cache_{};
   bool td_fresh_ = false;

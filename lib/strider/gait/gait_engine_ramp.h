@@ -29,6 +29,7 @@ void GaitEngine<S>::configure(const GaitConfig<S>& config, const GaitTable& gait
   hz_ = cfg_.limits.min_hz;
   to_ = VelocityPlan<S>{S(0), S(0), S(0), hz_, false};
   from_s_ = to_s_ = now_s_ = land_s_ = Stride{S(0), S(0), S(0), hz_};
+  land_fresh_ = false;
   ramp_ = S(1);
   shift_.reset();
   pose_ = goal_pose_ = BodyOffsets<S>::zero();
@@ -96,6 +97,7 @@ void GaitEngine<S>::set_gait(const GaitTable& gait) {
   now_s_.yaw = now_s_.yaw * r;
   if (r > S(1)) now_s_.hz = now_s_.hz / r;
   vel_fresh_ = false;
+  land_fresh_ = false;
   step_command(S(0));
   replan();
 }
@@ -157,6 +159,7 @@ void GaitEngine<S>::replan() {
   ramp_cycles_ = cycles;
   ramp_per_cycle_ = S(1) / cycles;
   ramp_ = S(0);
+  land_fresh_ = false;
 }
 
 template <typename S>
@@ -192,6 +195,7 @@ void GaitEngine<S>::step_command(S dt) {
     now_s_ = lerp(from_s_, to_s_, ramp_);
     if (ramp_ >= S(1)) now_s_ = to_s_;
     vel_fresh_ = false;
+    land_fresh_ = false;
   }
   if (vel_fresh_) return;  // a steady command: the products of the last tick hold
   // Products into locals first, then the stores: written member by member,
@@ -202,6 +206,7 @@ void GaitEngine<S>::step_command(S dt) {
   vx_ = vx;
   vy_ = vy;
   wz_ = wz;
+  step_cache_.dt = S(0);  // the body step is made again
   vel_fresh_ = true;
 }
 
@@ -232,7 +237,8 @@ Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
     td_fresh_ = true;
   }
   const Vec3<S>& h = cfg_.home[i];
-  if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(h.x + td_dx_, h.y + td_dy_, h.z);
+  // Sums in place (scalar.h's add_inline: the same bits as operator+).
+  if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
   return Vec3<S>(td_cos_ * h.x - td_sin_ * h.y + td_dx_, td_sin_ * h.x + td_cos_ * h.y + td_dy_, h.z);
 }
 
@@ -240,6 +246,8 @@ Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
 //! ramp: a foot landing now is placed for it.
 template <typename S>
 void GaitEngine<S>::update_landing() {
+  // The ramp over and land_s_ already now_s_: nothing changes.
+  if (land_fresh_) return;
   const Stride was = land_s_;
   land_s_ = now_s_;
   if (ramp_ < S(1)) {
@@ -253,6 +261,7 @@ void GaitEngine<S>::update_landing() {
     land_s_ = lerp(from_s_, to_s_, S(1) - lag);
   }
   if (!(land_s_.x == was.x && land_s_.y == was.y && land_s_.yaw == was.yaw)) invalidate_touchdown();
+  land_fresh_ = ramp_ >= S(1);
 }
 
 }  // namespace strider

@@ -10,17 +10,18 @@ namespace strider {
 
 template <typename S>
 void GaitEngine<S>::step_walk(S dt) {
-  step_command(dt);
-  update_landing();
+  // A steady command (the ramp over, the products known) and its landing
+  // stride known: step_command() and update_landing() have nothing to do.
+  if (ramp_ < S(1) || !vel_fresh_) step_command(dt);
+  if (!land_fresh_) update_landing();
   StepCache& sc = step_cache_;
-  if (!(sc.vx == vx_ && sc.vy == vy_ && sc.wz == wz_ && sc.dt == dt))
-    sc = StepCache{vx_, vy_, wz_, dt, BodyStep<S>::make(vx_, vy_, wz_, dt)};
+  if (!(sc.dt == dt)) sc = StepCache{dt, BodyStep<S>::make(vx_, vy_, wz_, dt)};
   // Field by field: avr-gcc copies the whole struct with a byte loop.
   BodyStep<S> step{sc.step.dx_mm, sc.step.dy_mm, sc.step.dyaw, sc.step.cos_yaw, sc.step.sin_yaw};
   // A foot on the ground at the edge of its reach that this step would take
   // farther out holds the body for this tick (it lifts as soon as it can).
   held_ = false;
-  bool edge[kWalkerLegs] = {};
+  bool edge[kWalkerLegs];  // legs 0 to leg_count - 1, all set here
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
   for (uint8_t i = 0; i < cfg_.leg_count && !held_; ++i) {
     if (!edge[i]) continue;
@@ -57,13 +58,16 @@ void GaitEngine<S>::step_walk(S dt) {
   bool changed = step_ground(step, dt);
   if (step_lift(edge)) changed = true;
   step_swing(dt);
-  for (uint8_t i = 0; i < n && cfg_.stance_depth_mm != S(0); ++i) {
-    if (!contact_[i]) continue;
-    const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
-    foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
+  if (cfg_.stance_depth_mm != S(0)) {
+    for (uint8_t i = 0; i < n; ++i) {
+      if (!contact_[i]) continue;
+      const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
+      foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
+    }
   }
   if (changed) support_dirty_ = true;
-  step_shift(dt);
+  // A gait without body shift and no shift left (a trot, a tripod): nothing to move, no call.
+  if (base_.shift_body || shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) step_shift(dt);
 
   if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
   if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
@@ -80,24 +84,35 @@ bool GaitEngine<S>::step_ground(const BodyStep<S>& step, S dt) {
   const uint32_t delta = Phase16(clock_.now() - clock_.before());
   const uint8_t n = cfg_.leg_count;
   bool changed = false;
-  bool landed[kWalkerLegs] = {};
-  // Touch-downs first, so a foot landing this tick counts as support.
-  for (uint8_t i = 0; i < n; ++i) {
-    if (contact_[i]) continue;
-    swing_elapsed_[i] += delta;
-    if (swing_elapsed_[i] < leg_swing_len_[i]) continue;
-    foot_[i] = Vec3<S>(target_[i].x, target_[i].y, cfg_.home[i].z);
-    contact_[i] = true;
-    stance_elapsed_[i] = int32_t(swing_elapsed_[i] - leg_swing_len_[i]);
-    landed[i] = true;
-    changed = true;
-  }
-  // Feet on the ground stay on the ground: they move by the inverse step.
-  for (uint8_t i = 0; i < n; ++i) {
-    if (!contact_[i] || landed[i]) continue;
-    // Field by field (leg_ik::copy_point): avr-gcc copies a whole Vec3 with a byte loop.
-    leg_ik::copy_point(step.move_ground_point(foot_[i]), foot_[i]);
-    stance_elapsed_[i] = min_of(stance_elapsed_[i] + int32_t(delta), int32_t(kPhaseOne));
+  // Not turning (walking straight): move_ground_point()'s differences, in
+  // place and without its call.
+  const bool straight = step.sin_yaw == S(0) && step.cos_yaw == S(1);
+  Vec3<S>* foot = foot_;
+  int32_t* elapsed = stance_elapsed_;
+  // One pass: a foot landing this tick stays where it lands (the feet on
+  // the ground move on their own, so the order of the legs does not matter).
+  for (uint8_t i = 0; i < n; ++i, ++foot, ++elapsed) {
+    if (!contact_[i]) {
+      swing_elapsed_[i] += delta;
+      if (swing_elapsed_[i] < leg_swing_len_[i]) continue;
+      foot->x = target_[i].x;
+      foot->y = target_[i].y;
+      foot->z = cfg_.home[i].z;
+      contact_[i] = true;
+      *elapsed = int32_t(swing_elapsed_[i] - leg_swing_len_[i]);
+      changed = true;
+      continue;
+    }
+    // Feet on the ground stay on the ground: they move by the inverse step.
+    if (straight) {
+      foot->x = sub_inline(foot->x, step.dx_mm);
+      foot->y = sub_inline(foot->y, step.dy_mm);
+    } else {
+      // Field by field (leg_ik::copy_point): avr-gcc copies a whole Vec3 with a byte loop.
+      leg_ik::copy_point(step.move_ground_point(*foot), *foot);
+    }
+    const int32_t e = *elapsed + int32_t(delta);
+    *elapsed = e < int32_t(kPhaseOne) ? e : int32_t(kPhaseOne);
   }
   return changed;
 }

@@ -85,6 +85,14 @@ namespace swing_detail {
 
 inline float table_value(uint16_t v, float) { return float(v) * (1.0f / 16384.0f) - 0.5f; }
 inline Fixed table_value(uint16_t v, Fixed) { return Fixed::from_raw(int32_t(uint32_t(v) << 2) - 32768); }
+//! x * 0.5 with the bits of the product: Fixed's rounds the magnitude half
+//! up ((|raw| + 1) / 2, fixed.h's mul_mag_parts), here without the multiply.
+inline float half_of(float x) { return x * 0.5f; }
+inline Fixed half_of(Fixed x) {
+  const int32_t r = x.raw();
+  const uint32_t m = ((r < 0 ? 0u - uint32_t(r) : uint32_t(r)) + 1u) >> 1;
+  return Fixed::from_raw(r < 0 ? -int32_t(m) : int32_t(m));
+}
 //! floor(x) for x in [0, 64].
 inline int16_t floor_index(float x) { return int16_t(x); }
 inline int16_t floor_index(Fixed x) { return int16_t(x.raw() >> Fixed::kFracBits); }
@@ -110,7 +118,7 @@ SwingPoint<S> bezier(S s) {
 template <typename S>
 SwingPoint<S> swing_point(SwingShape shape, S s) {
   s = clamp(s, S(0), S(1));
-  constexpr S one = S(1), half = scalar<S>(0.5), inv_two_pi = scalar<S>(0.15915494309189535);
+  constexpr S one = S(1), inv_two_pi = scalar<S>(0.15915494309189535);
   constexpr S k_pi = pi<S>(), k_two_pi = two_pi<S>();
   switch (shape) {
     case SwingShape::kRectangle: {
@@ -121,7 +129,7 @@ SwingPoint<S> swing_point(SwingShape shape, S s) {
     }
     case SwingShape::kCycloid: {
       const S a = k_two_pi * s;
-      return SwingPoint<S>{s - sin(a) * inv_two_pi, (one - cos(a)) * half};
+      return SwingPoint<S>{s - sin(a) * inv_two_pi, swing_detail::half_of(one - cos(a))};
     }
     case SwingShape::kParabola: return SwingPoint<S>{s, S(4) * s * (one - s)};
     case SwingShape::kBezier: return swing_detail::bezier(s);
@@ -129,7 +137,7 @@ SwingPoint<S> swing_point(SwingShape shape, S s) {
     case SwingShape::kEllipse: break;
   }
   const S a = k_pi * s;
-  return SwingPoint<S>{(one - cos(a)) * half, sin(a)};
+  return SwingPoint<S>{swing_detail::half_of(one - cos(a)), sin(a)};
 }
 
 //! The apex height of a swing [mm] for a step of length stride_mm and the

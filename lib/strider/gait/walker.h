@@ -326,15 +326,19 @@ class Walker {
 
  private:
   void solve() {
-    const BodyPose<S> pose = engine_.body_pose();
-    using leg_ik::is_zero;  // integer tests of float bits (a float comparison is a call on the AVR)
-    if (!is_zero(pose.roll_rad) || !is_zero(pose.pitch_rad) || !is_zero(pose.yaw_rad)) {
-      const Transform<S> body = body_transform(pose);
-      solve_legs(&body, pose.translation_mm);
-    } else {
-      solve_legs(nullptr, pose.translation_mm);  // no rotation to build
+    // A level body (the usual case; integer tests of float bits, as a float
+    // comparison is a call on the AVR): its translation only, no whole pose
+    // and no rotation to build.
+    if (engine_.body_level()) {
+      const Vec3<S> shift = engine_.body_translation();
+      solve_legs(nullptr, shift);
+      return;
     }
+    const BodyPose<S> pose = engine_.body_pose();
+    const Transform<S> body = body_transform(pose);
+    solve_legs(&body, pose.translation_mm);
   }
+
 
   //! Every leg for the body posed by `body` (nullptr: not turned, only
   //! moved by `shift` [mm]). Vectors are copied field by field, as avr-gcc
@@ -345,61 +349,73 @@ class Walker {
     const bool still = leg_ik::is_zero(shift.x) && leg_ik::is_zero(shift.y) && leg_ik::is_zero(shift.z);
     const bool projects = proj_.projects();
     LegScratch<S> scratch;  // nothing when the results keep the feet
-    for (uint8_t i = 0; i < leg_count(); ++i) {
-      LegResult<S>& r = out_[i];
+    // Results and feet by pointer (no index products per leg); the legs the
+    // fast IK does not take go to solve_leg(), whose locals stay out of
+    // this loop's stack frame.
+    LegResult<S>* r = out_;
+    const Vec3<S>* p = engine_.feet();
+    const bool* contact = engine_.contacts();
+    const uint8_t n = leg_count();
+    for (uint8_t i = 0; i < n; ++i, ++r, ++p) {
       // The body-frame target and the foot reached: r's (kWalkerFeet) or the scratch.
-      const Vec3<S>& p = engine_.foot(i);
+      Vec3<S>& t = target_of(*r, scratch);
       if (body != nullptr) {
-        target_of(r, scratch) = foot_in_body(*body, p);
+        t = foot_in_body(*body, *p);
       } else if (still) {
-        copy(p, target_of(r, scratch));
+        copy(*p, t);
       } else {
-        target_of(r, scratch).x = sub_inline(p.x, shift.x);
-        target_of(r, scratch).y = sub_inline(p.y, shift.y);
-        target_of(r, scratch).z = sub_inline(p.z, shift.z);
+        t.x = sub_inline(p->x, shift.x);
+        t.y = sub_inline(p->y, shift.y);
+        t.z = sub_inline(p->z, shift.z);
       }
-      r.contact = engine_.contact(i);
+      r->contact = contact[i];
       // A 3-DOF leg with a fast path for a body-frame target (Fixed
       // coxa/femur/tibia: no turn into the leg frame) that reaches it as
       // given: the foot is the target, nothing to transform.
-      if (!projects && legs_.solver(i).ik_body_fast(legs_.mount(i), target_of(r, scratch), r.q, ik_options_)) {
-        set_clamp(r, S(0));
-        set_ik_status(r, IkStatus::kOk);
-        r.status = IkStatus::kOk;
-        if (kWalkerFeet) copy(target_of(r, scratch), foot_of(r, scratch));
+      if (!projects && legs_.solver(i).ik_body_fast(legs_.mount(i), t, r->q, ik_options_)) {
+        set_clamp(*r, S(0));
+        set_ik_status(*r, IkStatus::kOk);
+        r->status = IkStatus::kOk;
+        if (kWalkerFeet) copy(t, foot_of(*r, scratch));
         continue;
       }
-      const Vec3<S> leg_target = to_leg_unchecked(i, target_of(r, scratch));
-      if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
-        // The point reached (leg frame) goes into foot, which the IK
-        // leaves alone when it is unreachable, and is then replaced by its
-        // body-frame point: no local to clear and copy.
-        set_clamp(r, S(0));
-        const IkStatus ik = legs_.solver(i).ik(leg_target, r.q, foot_of(r, scratch), ik_options_);
-        set_ik_status(r, ik);
-        r.status = ik;
-        // A target reached as given is the body-frame target itself: no
-        // transform back (4 products).
-        if (!kWalkerFeet || ik == IkStatus::kUnreachable) continue;
-        if (same(foot_of(r, scratch), leg_target)) {
-          copy(target_of(r, scratch), foot_of(r, scratch));
-        } else {
-          foot_of(r, scratch) = to_body(i, foot_of(r, scratch));
-        }
-        continue;
-      }
-      Vec3<S> reached;
-      S moved = S(0);
-      const Vec3<S> t = proj_.apply(leg_target, moved);
-      set_clamp(r, moved);
-      const IkStatus ik = legs_.solver(i).ik(t, r.q, reached, ik_options_);
-      set_ik_status(r, ik);
-      if (kWalkerFeet && ik != IkStatus::kUnreachable)
-        foot_of(r, scratch) = moved == S(0) && same(reached, leg_target) ? target_of(r, scratch) : to_body(i, reached);
-      constexpr S tolerance = scalar<S>(kClampToleranceMm);
-      const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
-      r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
+      solve_leg(i, *r, scratch, projects);
     }
+  }
+
+  //! solve_legs()'s leg i for its body-frame target (in r or the scratch)
+  //! when the fast IK does not take it.
+  STRIDER_NOINLINE void solve_leg(uint8_t i, LegResult<S>& r, LegScratch<S>& scratch, bool projects) {
+    const Vec3<S> leg_target = to_leg_unchecked(i, target_of(r, scratch));
+    if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
+      // The point reached (leg frame) goes into foot, which the IK
+      // leaves alone when it is unreachable, and is then replaced by its
+      // body-frame point: no local to clear and copy.
+      set_clamp(r, S(0));
+      const IkStatus ik = legs_.solver(i).ik(leg_target, r.q, foot_of(r, scratch), ik_options_);
+      set_ik_status(r, ik);
+      r.status = ik;
+      // A target reached as given is the body-frame target itself: no
+      // transform back (4 products).
+      if (!kWalkerFeet || ik == IkStatus::kUnreachable) return;
+      if (same(foot_of(r, scratch), leg_target)) {
+        copy(target_of(r, scratch), foot_of(r, scratch));
+      } else {
+        foot_of(r, scratch) = to_body(i, foot_of(r, scratch));
+      }
+      return;
+    }
+    Vec3<S> reached;
+    S moved = S(0);
+    const Vec3<S> t = proj_.apply(leg_target, moved);
+    set_clamp(r, moved);
+    const IkStatus ik = legs_.solver(i).ik(t, r.q, reached, ik_options_);
+    set_ik_status(r, ik);
+    if (kWalkerFeet && ik != IkStatus::kUnreachable)
+      foot_of(r, scratch) = moved == S(0) && same(reached, leg_target) ? target_of(r, scratch) : to_body(i, reached);
+    constexpr S tolerance = scalar<S>(kClampToleranceMm);
+    const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
+    r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
   }
 
   // Where solve_legs() keeps a leg's body-frame target and reached foot:
