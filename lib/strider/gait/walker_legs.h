@@ -1,0 +1,185 @@
+//! The walker's leg storage: an AnyLeg per leg, or one IK solver per leg
+//! geometry with each leg's mount and side (STRIDER_WALKER_SOLVERS), and the
+//! same built from a model at compile time for a firmware's flash
+//! (walker_legs()).
+#ifndef STRIDER_GAIT_WALKER_LEGS_H
+#define STRIDER_GAIT_WALKER_LEGS_H
+
+#include "../kinematics/any_leg.h"
+#include "reach_projection.h"
+
+namespace strider {
+
+//! Leg solvers a walker holds. As many as legs (the default): an AnyLeg per
+//! leg. Fewer: legs of one geometry (the same joint limits and, for abduction
+//! legs, the same side: AnyLeg::from_model gives them the same IK but for the
+//! mount) share one solver, and each leg keeps its mount; configure()
+//! refuses a model that needs more. A firmware's model file sets it to its
+//! model's leg_solver_count() (a hexapod18 firmware: 1 instead of six).
+#ifndef STRIDER_WALKER_SOLVERS
+#define STRIDER_WALKER_SOLVERS STRIDER_WALKER_LEGS
+#endif
+constexpr uint8_t kWalkerSolvers = uint8_t(STRIDER_WALKER_SOLVERS);
+static_assert(kWalkerSolvers >= 1 && kWalkerSolvers <= kWalkerLegs, "STRIDER_WALKER_SOLVERS: 1 to STRIDER_WALKER_LEGS");
+
+//! Whether the walker keeps each leg's engine target, reached foot, IK status
+//! and clamp in its LegResult (target_mm, foot_mm, ik_status, clamp_mm): host
+//! tools and tests read them; a firmware (STRIDER_WALKER_FEET 0, set by
+//! firmware_main.h) drives the servos from the joints and reports the status.
+#ifndef STRIDER_WALKER_FEET
+#define STRIDER_WALKER_FEET 1
+#endif
+constexpr bool kWalkerFeet = STRIDER_WALKER_FEET != 0;
+
+//! Legs i and j of `model` solve alike (one solver for both): the same
+//! joint limits and, for abduction legs, the same side.
+constexpr bool same_leg_solver(const RobotModel& model, uint8_t i, uint8_t j) {
+  const LegModel& a = model.legs[i];
+  const LegModel& b = model.legs[j];
+  if (model.kind == LegKind::kAbduction && a.side != b.side) return false;
+  for (uint8_t k = 0; k < kMaxLegDof; ++k)
+    if (!(a.joint[k].min_deg == b.joint[k].min_deg) || !(a.joint[k].max_deg == b.joint[k].max_deg)) return false;
+  return true;
+}
+//! The first leg of `model` that solves like leg i (i itself when none before it does).
+constexpr uint8_t leg_solver_of(const RobotModel& model, uint8_t i) {
+  uint8_t j = 0;
+  while (j < i && !same_leg_solver(model, i, j)) ++j;
+  return j;
+}
+//! How many distinct leg solvers `model` needs.
+constexpr uint8_t leg_solver_count(const RobotModel& model) {
+  uint8_t n = 0;
+  for (uint8_t i = 0; i < model.leg_count && i < kMaxLegs; ++i)
+    if (leg_solver_of(model, i) == i) ++n;
+  return n;
+}
+
+//! The index of leg i's solver among `model`'s leg solvers.
+constexpr uint8_t leg_solver_index(const RobotModel& model, uint8_t i) {
+  const uint8_t first = leg_solver_of(model, i);
+  uint8_t n = 0;
+  for (uint8_t k = 0; k < first; ++k)
+    if (leg_solver_of(model, k) == k) ++n;
+  return n;
+}
+//! The first leg of `model`'s leg solver n (model.leg_count when there is none).
+constexpr uint8_t leg_of_solver(const RobotModel& model, uint8_t n) {
+  for (uint8_t i = 0; i < model.leg_count && i < kMaxLegs; ++i)
+    if (leg_solver_of(model, i) == i && n-- == 0) return i;
+  return model.leg_count;
+}
+
+namespace walker_detail {
+
+template <uint8_t... I>
+struct Indices {};
+template <uint8_t N, uint8_t... I>
+struct MakeIndices : MakeIndices<uint8_t(N - 1), uint8_t(N - 1), I...> {};
+template <uint8_t... I>
+struct MakeIndices<0, I...> {
+  using type = Indices<I...>;
+};
+
+//! The walker's legs: an AnyLeg per leg, or (kShared) one per geometry
+//! and each leg's mount and side.
+template <typename S, bool kShared = (kWalkerSolvers < kWalkerLegs)>
+struct LegSolvers {
+  bool build(const RobotModel& model) {
+    for (uint8_t i = 0; i < model.leg_count; ++i)
+      if (!AnyLeg<S>::from_model(model, i, legs[i])) return false;
+    return true;
+  }
+  //! build()'s legs as a constant, but for the mounts' cos and sin (mount_trig()).
+  static constexpr LegSolvers constant(const RobotModel& model) {
+    return constant(model, typename MakeIndices<kWalkerLegs>::type());
+  }
+  template <uint8_t... I>
+  static constexpr LegSolvers constant(const RobotModel& model, Indices<I...>) {
+    return LegSolvers{{AnyLeg<S>::constant(model, I)...}};
+  }
+  static constexpr bool fits(const RobotModel& model) { return model.leg_count <= kWalkerLegs; }
+  void mount_trig() {
+    for (uint8_t i = 0; i < kWalkerLegs; ++i) legs[i].mount_trig();
+  }
+  const AnyLeg<S>& solver(uint8_t i) const { return legs[i]; }
+  const LegMount<S>& mount(uint8_t i) const { return legs[i].mount(); }
+  AnyLeg<S> leg(uint8_t i) const { return legs[i]; }
+  const AnyLeg<S>* per_leg() const { return legs; }
+
+  AnyLeg<S> legs[kWalkerLegs];
+};
+template <typename S>
+struct LegSolvers<S, true> {
+  bool build(const RobotModel& model) {
+    uint8_t n = 0;
+    for (uint8_t i = 0; i < model.leg_count; ++i) {
+      const uint8_t first = leg_solver_of(model, i);
+      if (first < i) {
+        of[i] = of[first];
+      } else {
+        if (n == kWalkerSolvers) return false;
+        of[i] = n++;
+      }
+      // Built in its geometry's solver, no AnyLeg on the stack (the start-up
+      // configuration's is the firmware's deepest): a later leg of the
+      // geometry gives the same solver at its own mount, which is kept here.
+      AnyLeg<S>& leg = solvers[of[i]];
+      if (!AnyLeg<S>::from_model(model, i, leg)) return false;
+      mounts[i] = leg.mount();
+      sides[i] = leg.side();
+    }
+    return true;
+  }
+  //! build()'s legs as a constant, but for the mounts' cos and sin (mount_trig()).
+  static constexpr LegSolvers constant(const RobotModel& model) {
+    return constant(model, typename MakeIndices<kWalkerSolvers>::type(), typename MakeIndices<kWalkerLegs>::type());
+  }
+  template <uint8_t... N, uint8_t... I>
+  static constexpr LegSolvers constant(const RobotModel& model, Indices<N...>, Indices<I...>) {
+    return LegSolvers{{AnyLeg<S>::constant(model, leg_of_solver(model, N))...},
+                      {AnyLeg<S>::constant(model, I).mount()...},
+                      {(I < model.leg_count ? model.legs[I].side : BodySide::kLeft)...},
+                      {(I < model.leg_count ? leg_solver_index(model, I) : uint8_t(0))...}};
+  }
+  static constexpr bool fits(const RobotModel& model) {
+    return model.leg_count <= kWalkerLegs && leg_solver_count(model) <= kWalkerSolvers;
+  }
+  void mount_trig() {
+    for (uint8_t n = 0; n < kWalkerSolvers; ++n) solvers[n].mount_trig();
+    for (uint8_t i = 0; i < kWalkerLegs; ++i) mounts[i] = LegMount<S>::make(mounts[i].origin_mm, mounts[i].yaw_rad);
+  }
+  const AnyLeg<S>& solver(uint8_t i) const { return solvers[of[i]]; }
+  const LegMount<S>& mount(uint8_t i) const { return mounts[i]; }
+  AnyLeg<S> leg(uint8_t i) const { return solvers[of[i]].placed(mounts[i], sides[i]); }
+  const AnyLeg<S>* per_leg() const { return nullptr; }  // none kept
+
+  AnyLeg<S> solvers[kWalkerSolvers];  // the mount each holds is its first leg's, never read
+  LegMount<S> mounts[kWalkerLegs];
+  BodySide sides[kWalkerLegs] = {};
+  uint8_t of[kWalkerLegs] = {};  // leg -> its solver
+};
+
+}  // namespace walker_detail
+
+//! A walker's legs built from a model at compile time (walker_legs()): a
+//! firmware keeps its model's in flash and converts nothing at start-up
+//! (Walker::configure_stored()).
+template <typename S>
+struct WalkerLegs {
+  walker_detail::LegSolvers<S> legs;  // the mounts without their cos and sin
+  ReachProjection<S> proj;
+  uint8_t leg_count;
+  uint8_t dof;
+  bool ok;  // the model fits this build's walker (kWalkerLegs, kWalkerSolvers) and its leg kinds
+};
+template <typename S>
+constexpr WalkerLegs<S> walker_legs(const RobotModel& model) {
+  return WalkerLegs<S>{walker_detail::LegSolvers<S>::constant(model), ReachProjection<S>::make(model), model.leg_count,
+                       model.dof(),
+                       walker_detail::LegSolvers<S>::fits(model) && leg_kind_compiled(model.kind)};
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_WALKER_LEGS_H
