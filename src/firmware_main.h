@@ -46,7 +46,7 @@ constexpr uint8_t kBoards = strider::pca_board_count(kModel);
 static_assert(strider::kCompiledLegKinds == (1u << uint8_t(kModel.kind)), "STRIDER_LEG_KINDS: the model's leg kind alone");
 static_assert(strider::kWalkerLegs == kModel.leg_count, "STRIDER_WALKER_LEGS: the model's leg count");
 static_assert(strider::kWalkerSolvers == strider::leg_solver_count(kModel), "STRIDER_WALKER_SOLVERS: the model's leg_solver_count()");
-static_assert(strider::kServoTickSlots == 0 || (strider::kServoTickSlots == kModel.dof() && strider::leg_solver_count(kModel) == 1),
+static_assert(strider::servo_tick_slots_fit(kModel),
               "STRIDER_SERVO_TICK_SLOTS: the legs' joint count, for legs of one geometry");
 
 // Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.

@@ -43,6 +43,11 @@ constexpr uint16_t kFramePeriodMs = 20;      //!< nominal frame period for the s
 #define STRIDER_SERVO_TICK_SLOTS 0
 #endif
 constexpr uint8_t kServoTickSlots = uint8_t(STRIDER_SERVO_TICK_SLOTS);
+//! Whether model m's joints fit this build's tick-map slots: every joint its
+//! own range, or one slot per joint of a leg when all legs have one geometry.
+STRIDER_ALWAYS_INLINE constexpr bool servo_tick_slots_fit(const RobotModel& m) {
+  return kServoTickSlots == 0 || (kServoTickSlots == m.dof() && leg_solver_count(m) == 1);
+}
 
 //! A stage's channels as a constant of its model (joint_channels(): a
 //! firmware keeps its model's in flash): joint k's channel is range[k %
@@ -71,7 +76,7 @@ constexpr JointChannels<S, N> joint_channels(const RobotModel& m, walker_detail:
       {(K < m.joint_count() ? joint_channel(m, uint8_t(K / m.dof()), uint8_t(K % m.dof())) : uint8_t(0))...},
       {(K < m.joint_count() ? joint_direction(m, uint8_t(K / m.dof()), uint8_t(K % m.dof())) : int8_t(1))...},
       uint8_t(m.joint_count() <= N &&
-                      (kServoTickSlots == 0 || (kServoTickSlots == m.dof() && leg_solver_count(m) == 1))
+                      servo_tick_slots_fit(m)
                   ? channel_map_count_constant(m)
                   : 0),
       {servo_step_us(servo_parts_detail::travel_of(m.servo[0]).speed_deg_s),
@@ -101,7 +106,7 @@ class ServoStage {
     // Joint k = leg dof + j: slot j when the tick map has dof slots, for
     // legs of one geometry (the same limits: one range per slot); fit_legs()
     // configures leg 0 first.
-    const bool slots_fit = kServoTickSlots == 0 || (kServoTickSlots == model.dof() && leg_solver_count(model) == 1);
+    const bool slots_fit = servo_tick_slots_fit(model);
     count_ = kChannels != nullptr ? flash_u8(&kChannels->count)
              : model.joint_count() <= N && slots_fit ? channel_map_count(model) : uint8_t(0);
     model_ = source != nullptr ? source : &model;
