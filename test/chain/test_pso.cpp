@@ -288,6 +288,39 @@ TYPED_TEST(PsoTyped, DeterministicPerSeed) {
   EXPECT_NE(std::memcmp(&a.position, &c.position, sizeof a.position), 0);
 }
 
+// PsoParams::start: particle 0 is evaluated first at the start (clamped to
+// the box), the other particles where they would have been without it, and
+// the result is never worse than the start.
+TYPED_TEST(PsoTyped, StartParticleBeginsAtTheGuess) {
+  using S = TypeParam;
+  static ParticleSwarm<S, 2, 20> swarm;
+  PsoParams<S, 2> p;
+  p.set_bounds(S(-5), S(5));
+  p.swarm_size = 6;
+  p.max_iterations = 1;  // the first evaluation only
+  JointVector<S, 2> seen[2][6];
+  int run = 0, n = 0;
+  const auto cost = [&](const JointVector<S, 2>& x) {
+    seen[run][n++] = x;
+    const S dx = x[0] - S(4), dy = x[1] + S(5);
+    return dx * dx + dy * dy;  // lowest at (4, -5), on the box's edge
+  };
+  const PsoResult<S, 2> plain = swarm.minimize(p, cost);
+  const JointVector<S, 2> guess{{S(4), S(-9)}};  // y clamped to -5: the optimum
+  p.start = &guess;
+  run = 1;
+  n = 0;
+  const PsoResult<S, 2> started = swarm.minimize(p, cost);
+  ASSERT_EQ(n, 6);
+  EXPECT_EQ(seen[1][0][0], S(4));
+  EXPECT_EQ(seen[1][0][1], S(-5));
+  for (int i = 1; i < 6; ++i) EXPECT_EQ(std::memcmp(&seen[0][i], &seen[1][i], sizeof seen[0][i]), 0) << i;
+  EXPECT_EQ(dbl(started.cost), 0.0);
+  EXPECT_EQ(started.position[0], S(4));
+  EXPECT_EQ(started.position[1], S(-5));
+  EXPECT_GT(dbl(plain.cost), 0.0);  // six uniform draws do not hit the optimum
+}
+
 // minimize_swarm: one cost call per iteration for the whole swarm, the same
 // search as minimize() with the cost called per particle.
 template <typename S, typename Cost>

@@ -16,8 +16,9 @@
 //! stay pressed against a bound (seed 003 problem, bounds 0..20 rad, 2000
 //! seeds: 1.05 % of runs stalled on a bound with plain clamping, 0.35 % with
 //! this; bounds 0..20 deg: 0.85 % and none). Initial
-//! positions are uniform in the bounds, initial velocities zero (pyswarms
-//! draws U[0, 1) whatever the bounds). Each iteration evaluates the swarm
+//! positions are uniform in the bounds (particle 0 optionally at a given
+//! start), initial velocities zero (pyswarms draws U[0, 1) whatever the
+//! bounds). Each iteration evaluates the swarm
 //! (minimize: one cost call per particle; minimize_swarm: one call for the
 //! whole swarm, as pyswarms' costs are), updates the personal and the global
 //! bests, stops when the best cost is below cost_threshold, then
@@ -51,6 +52,10 @@ struct PsoParams {
   S cost_threshold = S(0);          //!< stop once best cost < this (0: never, for costs >= 0)
   S velocity_clamp = S(0);          //!< |v_d| <= this * (hi_d - lo_d); 0: no clamp
   uint32_t seed = 1;                //!< PRNG seed
+  //! Where particle 0 starts instead of its uniform draw (clamped to the
+  //! box; nullptr: uniform like the others), e.g. a known guess: the result
+  //! is then never worse than the guess. The draws are the same either way.
+  const JointVector<S, D>* start = nullptr;
 
   //! The same bounds for every dimension.
   void set_bounds(S lo_all, S hi_all) {
@@ -108,6 +113,8 @@ class ParticleSwarm {
         v_[i][d] = S(0);
       }
     }
+    if (p.start != nullptr)
+      for (uint8_t d = 0; d < D; ++d) x_[0][d] = clamp((*p.start)[d], p.lo[d], p.hi[d]);
     uint8_t g = 0;  // index of the global best among the personal bests
     for (uint16_t t = 0; t < p.max_iterations; ++t) {
       cost(static_cast<const Point*>(x_), n, cost_);
