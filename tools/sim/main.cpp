@@ -93,8 +93,8 @@ int main(int argc, char** argv) {
     std::printf("%s %s: %.1f s simulated in %.2f s wall, %.2f s CPU (%.1fx real time), %ld solver fallbacks\n",
                 m.robot.c_str(), m.mode.c_str(), m.sim_time_s, m.wall_time_s, m.cpu_time_s, m.real_time_factor,
                 m.solver_fallbacks);
-    std::printf("distance %.0f mm, top speed %.1f mm/s, heading %+.1f deg, drift %.1f mm, max tilt %.1f deg%s\n",
-                m.distance_mm, m.speed_mm_s, m.heading_change_deg, m.lateral_drift_mm, m.max_tilt_deg,
+    std::printf("distance %.0f mm, top speed %.1f mm/s, heading %+.1f deg, drift %.1f mm (body frame %.1f mm), max tilt %.1f deg%s\n",
+                m.distance_mm, m.speed_mm_s, m.heading_change_deg, m.lateral_drift_mm, m.body_drift_mm, m.max_tilt_deg,
                 m.fell ? ", FELL" : "");
     if (m.has_obstacles)
       std::printf("closest body-obstacle distance %.0f mm, %d collisions\n", m.min_clearance_mm, m.collisions);

@@ -12,6 +12,7 @@
 
 #include "control/walker_motion.h"
 #include "gait/gait_params.h"
+#include "body_track.h"
 #include "driver.h"
 #include "robots/all_robots.h"
 
@@ -34,6 +35,8 @@ std::vector<double> sitting_joints(const strider::RobotModel& model) {
 }
 
 double hdist(const Vec& a, const Vec& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+}  // namespace
 
 void compute_metrics(const Scenario& sc, RunResult& r) {
   Metrics& m = r.metrics;
@@ -77,6 +80,10 @@ void compute_metrics(const Scenario& sc, RunResult& r) {
   const double fwd = std::cos(yaw0) * dx + std::sin(yaw0) * dy;
   const double side = -std::sin(yaw0) * dx + std::cos(yaw0) * dy;
   m.lateral_drift_mm = std::fabs(fwd) >= std::fabs(side) ? std::fabs(side) : std::fabs(fwd);
+  // The same in the body frame, turning with the heading: a slow turn does not add to it.
+  BodyTrack track;
+  for (const TraceRow& row : tr) track.add(row.t_s, row.body);
+  m.body_drift_mm = track.drift_mm();
   m.has_obstacles = !sc.obstacles.empty();
   if (m.has_odometry) {
     // The engine's odometry frame is the body at power-up (the first row):
@@ -91,8 +98,6 @@ void compute_metrics(const Scenario& sc, RunResult& r) {
   }
   m.fell = m.fell || m.max_tilt_deg > kFallTiltDeg;
 }
-
-}  // namespace
 
 RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   RunResult r;
@@ -291,6 +296,7 @@ std::string metrics_json(const Metrics& m) {
   o << "  \"yaw_rate_deg_s\": " << num(m.yaw_rate_deg_s) << ",\n";
   o << "  \"turn_360_s\": " << (m.turn_360_s < 0 ? std::string("null") : num(m.turn_360_s)) << ",\n";
   o << "  \"lateral_drift_mm\": " << num(m.lateral_drift_mm) << ",\n";
+  o << "  \"body_drift_mm\": " << num(m.body_drift_mm) << ",\n";
   o << "  \"max_tilt_deg\": " << num(m.max_tilt_deg) << ",\n";
   o << "  \"fell\": " << (m.fell ? "true" : "false") << ",\n";
   o << "  \"min_clearance_mm\": " << (m.has_obstacles ? num(m.min_clearance_mm) : "null") << ",\n";

@@ -40,6 +40,7 @@ struct Metrics {
   double yaw_rate_deg_s = 0;      // best 2 s window of |heading change| / 2 s
   double turn_360_s = -1;         // first turn past 1 deg -> 360 deg; -1: never
   double lateral_drift_mm = 0;    // off the main axis of the motion (body frame at the start)
+  double body_drift_mm = 0;       // the same in the body frame at each instant (crabbing; body_track.h)
   double max_tilt_deg = 0;
   bool fell = false;
   bool has_obstacles = false;
@@ -74,6 +75,10 @@ struct RunResult {
 };
 
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options);
+
+// The metrics that come from r.trace (distance, speeds, heading, drifts; from
+// r.metrics.ready_s on), into r.metrics; run_scenario() ends with it.
+void compute_metrics(const Scenario& scenario, RunResult& r);
 
 // DIR/metrics.json, DIR/trace.csv, DIR/robot.log, DIR/scene.json (creates DIR).
 bool write_outputs(const RunResult& r, const std::string& dir, std::string* error);
