@@ -11,21 +11,29 @@
 // candidate's step length, height and cycle (the robot is still sitting then,
 // as at power-up).
 //
-// Score: forward speed [mm/s] over the tuning window of a `walk 500` (the
-// gait engine caps the speed at what the candidate allows). A candidate is
-// feasible when the robot does not fall, tilts at most 10 degrees, drifts
-// sideways at most 10 % of the distance and turns at most 1 deg/s, each
-// checked at every checkpoint of its rollout: half the window and the whole
-// window (a gait that turns slowly drifts more the longer it walks, so a
-// single short window passes gaits that fail on a longer walk). Drift and
-// turning are tuned with a 30 % margin; an infeasible candidate costs 1000 +
-// its violation.
+// Score: forward speed [mm/s] along the heading (the body-frame velocity
+// integrated, tools/sim/body_track.h) over the tuning window of a `walk 500`
+// (the gait engine caps the speed at what the candidate allows). A candidate
+// is feasible when the robot does not fall, tilts at most 10 degrees, crabs
+// (drifts sideways in its own frame, strider-sim's body_drift_mm) at most
+// 10 % of the distance and turns at most 1 deg/s on average, each checked at
+// half the window and at its end. The drift from the starting direction is
+// reported, not constrained: with any heading drift it grows without bound
+// on a long walk, whatever the gait. Drift and turning are tuned with a 30 %
+// margin; an infeasible candidate costs 1000 + its violation. One particle
+// starts at the model's gait, so the result is never worse than it on this
+// cost. Bounds: step length up to the longest forward stride the legs reach
+// (the gait engine's own stride limit at the lowest step height of the box),
+// height half to twice the default, cycle 0.4 to 1.5 times the default.
 //
 // usage: gait_tune [--robot R] [--gait G] [--swarm N] [--iterations N]
 //                  [--walk-s S] [--seed N] [--vx MM_S]
+// (defaults: sprawl8, its default gait, swarm 12, 12 iterations, S 30 s)
 // Output: one JSON object on stdout: "default" and "tuned" over the tuning
-// window (S, default 20 s), and "windows": both over S / 2, S and a walk
-// twice as long as the window (2 S, not seen by the tuning).
+// window (S, default 30 s), and "windows": both over S, over a validation
+// walk twice as long (2 S) and over its second half alone (S to 2 S, which
+// the tuning never saw).
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <cmath>
@@ -33,11 +41,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "control/robot_app.h"
 #include "kinematics/pso.h"
 #include "robots/all_robots.h"
+#include "body_track.h"
 #include "world.h"
 
 namespace {
@@ -77,24 +87,30 @@ struct Candidate {
   float step_length_mm, step_height_mm, cycle_s;
 };
 
-// One checkpoint of a rollout: the walk from the window's start to there.
+// A window of a rollout, [from_s, to_s] seconds of walking after the
+// settling time, and what was measured over it.
 struct Rollout {
+  double from_s = 0, to_s = 0;
   bool ok = false;
   std::string error;
-  double walk_s = 0;      // measured time
-  double speed_mm_s = 0;  // forward, body frame at the window's start
-  double lateral_pct = 0;
-  double heading_deg = 0;
+  double speed_mm_s = 0;            // forward along the heading (body frame at each instant)
+  double start_dir_speed_mm_s = 0;  // forward along the heading at the window's start
+  double body_drift_pct = 0;        // sideways in the body frame, % of the forward distance (crabbing)
+  double lateral_pct = 0;           // sideways from the starting direction, % of the distance along it
+  double heading_deg = 0;           // unwrapped change
   double max_tilt_deg = 0;
   bool fell = false;
+  double walk_s() const { return to_s - from_s; }
+  double turn_deg_s() const { return std::fabs(heading_deg) / walk_s(); }
 };
 
 struct Options {
   double walk_at_s = 3.0;  // soft start and stand-up are over by then (sprawl8: 2.3 s)
   double settle_s = 1.5;   // acceleration, not measured
-  double walk_s = 20.0;    // tuning window
+  double walk_s = 30.0;    // tuning window
+  double sample_s = 0.02;  // body samples (strider-sim's trace period)
   double max_tilt_deg = 10.0;
-  double max_lateral_pct = 10.0;
+  double max_body_drift_pct = 10.0;
   double max_heading_deg_s = 1.0;  // turning while asked to walk straight [deg/s]
   std::string walk = "walk 500\n";  // the command walked
   std::string gait;                  // gait to switch to ("" = the model's default)
@@ -109,31 +125,59 @@ std::vector<double> sitting_joints(const strider::RobotModel& model) {
   return q;
 }
 
-// Body displacement from `start` to `end` as a checkpoint over `walk_s`.
-void measure(const strider_sim::BodyState& start, const strider_sim::BodyState& end, double walk_s, Rollout& r) {
-  const double yaw = start.yaw_deg * M_PI / 180.0;
-  const double dx = end.pos_mm.x - start.pos_mm.x, dy = end.pos_mm.y - start.pos_mm.y;
-  const double fwd = dx * std::cos(yaw) + dy * std::sin(yaw);
-  const double lat = -dx * std::sin(yaw) + dy * std::cos(yaw);
-  double dyaw = end.yaw_deg - start.yaw_deg;
-  while (dyaw > 180) dyaw -= 360;
-  while (dyaw < -180) dyaw += 360;
-  r.walk_s = walk_s;
-  r.speed_mm_s = fwd / walk_s;
-  r.lateral_pct = std::fabs(fwd) > 1e-6 ? 100.0 * std::fabs(lat) / std::fabs(fwd) : 0.0;
-  r.heading_deg = dyaw;
-}
+// A window being measured: the body at its start, and what it did since.
+struct Window {
+  explicit Window(Rollout* r) : out(r) {}
+  Rollout* out;
+  bool open = false, done = false;
+  strider_sim::BodyState start{}, last{};
+  strider_sim::BodyTrack track;
+
+  // The body at every physics step, t_s seconds of walking (negative:
+  // accelerating): tilt and fall. A window from the start of the walk
+  // includes the acceleration's.
+  void observe(const strider_sim::BodyState& b, double t_s, bool fell) {
+    if (done || (t_s < out->from_s - 1e-9 && out->from_s > 0)) return;
+    out->max_tilt_deg = std::max(out->max_tilt_deg, b.tilt_deg);
+    out->fell = out->fell || fell;
+  }
+
+  // A body sample (every sample_s): the track.
+  void sample(const strider_sim::BodyState& b, double t_s) {
+    if (done || t_s < out->from_s - 1e-9) return;
+    if (!open) {
+      open = true;
+      start = b;
+    }
+    last = b;
+    track.add(t_s, b);
+    if (t_s >= out->to_s - 1e-9) finish();
+  }
+
+  void finish() {
+    done = true;
+    Rollout& r = *out;
+    const double yaw = start.yaw_deg * M_PI / 180.0;
+    const double dx = last.pos_mm.x - start.pos_mm.x, dy = last.pos_mm.y - start.pos_mm.y;
+    const double fwd = dx * std::cos(yaw) + dy * std::sin(yaw);
+    const double lat = -dx * std::sin(yaw) + dy * std::cos(yaw);
+    const double forward = track.forward_mm(), left = track.left_mm();
+    r.speed_mm_s = forward / r.walk_s();
+    r.start_dir_speed_mm_s = fwd / r.walk_s();
+    r.body_drift_pct = std::fabs(forward) > 1e-6 ? 100.0 * std::fabs(left) / std::fabs(forward) : 0.0;
+    r.lateral_pct = std::fabs(fwd) > 1e-6 ? 100.0 * std::fabs(lat) / std::fabs(fwd) : 0.0;
+    r.heading_deg = track.turned_deg();
+  }
+};
 
 double violation(const Rollout& r, const Options& o);
 
-// One rollout, measured at each of `checkpoints_s` (ascending, seconds of
-// walking after the settling time); the rollout ends at the last, or at the
-// first checkpoint that violates `stop_if_violated` (when given: the tuning
-// need not walk an infeasible candidate to the end), and returns the
-// checkpoints measured.
+// One rollout, measured over each of `windows` (from_s and to_s set; sorted
+// by to_s); the rollout ends at the last window's end, or when a window
+// ends that violates `stop_if_violated` (when given: the tuning need not walk
+// an infeasible candidate to the end), and returns the windows finished.
 std::vector<Rollout> rollout(const strider::RobotModel& model, const strider::GaitParams& params, const Options& o,
-                             const std::vector<double>& checkpoints_s, const Options* stop_if_violated = nullptr) {
-  std::vector<Rollout> out(checkpoints_s.size());
+                             std::vector<Rollout> out, const Options* stop_if_violated = nullptr) {
   auto fail = [&](const char* why) {
     for (Rollout& r : out) r.error = why;
     return out;
@@ -160,13 +204,14 @@ std::vector<Rollout> rollout(const strider::RobotModel& model, const strider::Ga
   size_t next_send = 0;
   const double dt = wc.step_s;
   const double t_start = o.walk_at_s + o.settle_s;
-  const long steps = std::lround((t_start + checkpoints_s.back()) / dt);
-  size_t next_check = 0;
+  const long sample_every = std::max(1L, std::lround(o.sample_s / dt));
+  const long steps = std::lround((t_start + out.back().to_s) / dt);
+  std::vector<Window> windows;
+  for (Rollout& r : out) windows.push_back(Window{&r});
+  size_t finished = 0;
   uint64_t next_tick_us = strider::kTickPeriodUs;
   ChannelPulse pulses[kMaxChannels];
-  strider_sim::BodyState start{};
-  bool started = false, fell = false;
-  double max_tilt = 0;
+  bool fell = false;
   for (long k = 0; k < steps; ++k) {
     const double t = double(k) * dt;
     const uint64_t t_us = uint64_t(std::llround(t * 1e6));
@@ -185,24 +230,19 @@ std::vector<Rollout> rollout(const strider::RobotModel& model, const strider::Ga
     }
     world.set_pulses(pulses);
     world.step();
-    const double t_after = double(k + 1) * dt;
-    if (t_after < o.walk_at_s) continue;
-    const strider_sim::BodyState b = world.body();
-    max_tilt = std::max(max_tilt, b.tilt_deg);
+    const double t_walk = double(k + 1) * dt - t_start;  // seconds of walking measured
+    if (t_walk < -o.settle_s - 1e-9) continue;            // before the walk command
     fell = fell || world.body_on_ground();
-    if (!started && t_after >= t_start - 1e-9) {
-      start = b;
-      started = true;
-    }
-    while (started && next_check < out.size() && t_after >= t_start + checkpoints_s[next_check] - 1e-9) {
-      Rollout& r = out[next_check++];
-      measure(start, b, checkpoints_s[next_check - 1], r);
-      r.max_tilt_deg = max_tilt;
-      r.fell = fell;
+    const strider_sim::BodyState b = world.body();
+    for (Window& w : windows) w.observe(b, t_walk, fell);
+    if ((k + 1) % sample_every != 0 && k + 1 != steps) continue;
+    for (Window& w : windows) w.sample(b, t_walk);
+    while (finished < out.size() && windows[finished].done) {
+      Rollout& r = out[finished++];
       r.ok = link.err == 0;
       if (!r.ok) r.error = "the robot answered err";
       if (stop_if_violated != nullptr && violation(r, *stop_if_violated) > 0) {
-        out.resize(next_check);
+        out.resize(finished);
         return out;
       }
     }
@@ -210,12 +250,21 @@ std::vector<Rollout> rollout(const strider::RobotModel& model, const strider::Ga
   return out;
 }
 
+std::vector<Rollout> windows_of(const std::vector<std::pair<double, double>>& spans) {
+  std::vector<Rollout> w(spans.size());
+  for (size_t i = 0; i < spans.size(); ++i) {
+    w[i].from_s = spans[i].first;
+    w[i].to_s = spans[i].second;
+  }
+  return w;
+}
+
 double violation(const Rollout& r, const Options& o) {
   if (!r.ok) return 1e3;
   double v = r.fell ? 100.0 : 0.0;
   v += std::max(0.0, r.max_tilt_deg - o.max_tilt_deg);
-  v += std::max(0.0, r.lateral_pct - o.max_lateral_pct);
-  v += std::max(0.0, std::fabs(r.heading_deg) / r.walk_s - o.max_heading_deg_s);
+  v += std::max(0.0, r.body_drift_pct - o.max_body_drift_pct);
+  v += std::max(0.0, r.turn_deg_s() - o.max_heading_deg_s);
   return v;
 }
 
@@ -233,13 +282,27 @@ strider::GaitParams with(const strider::GaitParams& base, const Candidate& c) {
   return p;
 }
 
+// The longest forward stride the gait engine lets every leg make with
+// `params` (its velocity limits: the legs' reach, kStrideShare of it) [mm];
+// 0 when the walker refuses them.
+double forward_stride_mm(const strider::RobotModel& model, const strider::GaitParams& params) {
+  static strider::WalkerMotion<float> motion;  // large: not on the stack
+  if (!motion.configure(model, params)) return 0.0;
+  const strider::GaitConfig<float>& c = motion.walker().engine().config();
+  double shortest = 1e9;
+  for (uint8_t i = 0; i < model.leg_count; ++i) shortest = std::min(shortest, double(c.limits.stride_mm(i, 0)));
+  return shortest;
+}
+
 void print_rollout(const char* name, const Candidate& c, const Rollout& r, const Options& o, bool comma) {
-  std::printf("\"%s\":{\"walk_s\":%.2f,\"step_length_mm\":%.2f,\"step_height_mm\":%.2f,\"cycle_s\":%.3f,\"speed_mm_s\":%.2f,"
-              "\"max_tilt_deg\":%.2f,\"lateral_pct\":%.2f,\"heading_deg\":%.2f,\"fell\":%s,\"feasible\":%s%s%s%s}%s",
-              name, r.walk_s, double(c.step_length_mm), double(c.step_height_mm), double(c.cycle_s), r.speed_mm_s,
-              r.max_tilt_deg, r.lateral_pct, r.heading_deg, r.fell ? "true" : "false",
-              violation(r, o) == 0.0 ? "true" : "false", r.error.empty() ? "" : ",\"error\":\"",
-              r.error.c_str(), r.error.empty() ? "" : "\"", comma ? "," : "");
+  std::printf("\"%s\":{\"from_s\":%.2f,\"to_s\":%.2f,\"walk_s\":%.2f,\"step_length_mm\":%.2f,\"step_height_mm\":%.2f,"
+              "\"cycle_s\":%.3f,\"speed_mm_s\":%.2f,\"start_dir_speed_mm_s\":%.2f,\"max_tilt_deg\":%.2f,"
+              "\"body_drift_pct\":%.2f,\"lateral_pct\":%.2f,\"heading_deg\":%.2f,\"turn_deg_s\":%.3f,"
+              "\"fell\":%s,\"feasible\":%s%s%s%s}%s",
+              name, r.from_s, r.to_s, r.walk_s(), double(c.step_length_mm), double(c.step_height_mm), double(c.cycle_s),
+              r.speed_mm_s, r.start_dir_speed_mm_s, r.max_tilt_deg, r.body_drift_pct, r.lateral_pct, r.heading_deg,
+              r.turn_deg_s(), r.fell ? "true" : "false", violation(r, o) == 0.0 ? "true" : "false",
+              r.error.empty() ? "" : ",\"error\":\"", r.error.c_str(), r.error.empty() ? "" : "\"", comma ? "," : "");
 }
 
 int usage() {
@@ -253,7 +316,7 @@ int usage() {
 
 int main(int argc, char** argv) {
   std::string robot = "sprawl8";
-  int swarm_size = 8, iterations = 8;
+  int swarm_size = 12, iterations = 12;
   uint32_t seed = 1;
   Options o;
   for (int i = 1; i < argc; ++i) {
@@ -278,31 +341,40 @@ int main(int argc, char** argv) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
-  // Bounds around the defaults: half to 2.5 times the stride, half to twice
-  // the step height, 0.4 to 1.5 times the cycle.
+  // Bounds: half the default step height to twice it, 0.4 to 1.5 times the
+  // cycle; step length from half the default to the longest forward stride
+  // the legs reach at the lowest step height (a higher swing reaches less; a
+  // longer preferred step than the reach would be walked as the reach).
   strider::PsoParams<float, 3> p;
-  p.lo[0] = 0.5f * base->step_length_mm;
-  p.hi[0] = 2.5f * base->step_length_mm;
   p.lo[1] = 0.5f * base->step_height_mm;
   p.hi[1] = 2.0f * base->step_height_mm;
   p.lo[2] = 0.4f * base->cycle_s;
   p.hi[2] = 1.5f * base->cycle_s;
+  strider::GaitParams low = *base;
+  low.step_height_mm = p.lo[1];
+  const double reach_mm = forward_stride_mm(*model, low);
+  p.lo[0] = 0.5f * base->step_length_mm;
+  p.hi[0] = std::max(float(reach_mm), base->step_length_mm);
   p.swarm_size = uint8_t(swarm_size);
   p.max_iterations = uint16_t(iterations);
   p.seed = seed;
   p.cost_threshold = -1e9f;  // costs are negative speeds: the default 0 would stop at once
+  const strider::JointVector<float, 3> start{{base->step_length_mm, base->step_height_mm, base->cycle_s}};
+  p.start = &start;  // particle 0: the model's gait
   int evaluations = 0;
   // Checked at half the window and at its end, with 30 % margin on drift and
-  // turning (drift grows with time).
+  // turning.
   Options tight = o;
-  tight.max_lateral_pct *= 0.7;
+  tight.max_body_drift_pct *= 0.7;
   tight.max_heading_deg_s *= 0.7;
-  const std::vector<double> checkpoints = {0.5 * o.walk_s, o.walk_s};
+  const std::vector<Rollout> checks = windows_of({{0.0, 0.5 * o.walk_s}, {0.0, o.walk_s}});
+  double default_cost = 0;
   const auto cost = [&](const strider::JointVector<float, 3>& x) {
-    ++evaluations;
-    const std::vector<Rollout> r = rollout(*model, with(*base, Candidate{x[0], x[1], x[2]}), o, checkpoints, &tight);
+    const std::vector<Rollout> r = rollout(*model, with(*base, Candidate{x[0], x[1], x[2]}), o, checks, &tight);
     const double v = violation(r, tight);
-    return float(v > 0 ? 1000.0 + v : -r.back().speed_mm_s);
+    const float c = float(v > 0 ? 1000.0 + v : -r.back().speed_mm_s);
+    if (evaluations++ == 0) default_cost = c;
+    return c;
   };
   static strider::ParticleSwarm<float, 3, 20> pso;
   const strider::PsoResult<float, 3> best = pso.minimize(p, cost);
@@ -310,32 +382,33 @@ int main(int argc, char** argv) {
   const double tune_cpu_s = double(std::clock() - c0) / CLOCKS_PER_SEC;
   const Candidate def{base->step_length_mm, base->step_height_mm, base->cycle_s};
   const Candidate tuned{best.position[0], best.position[1], best.position[2]};
-  // Both gaits at the tuning checkpoints and over a walk twice as long as the
-  // window, which the tuning never saw (one rollout each, the earlier
-  // windows are the start of the same walk).
-  const std::vector<double> windows = {0.5 * o.walk_s, o.walk_s, 2.0 * o.walk_s};
-  const std::vector<Rollout> rd = rollout(*model, *base, o, windows);
-  const std::vector<Rollout> rt = rollout(*model, with(*base, tuned), o, windows);
+  // Both gaits over the tuning window, a validation walk twice as long, and
+  // its second half alone, which the tuning never saw (one rollout each).
+  const std::vector<Rollout> report = windows_of({{0.0, o.walk_s}, {0.0, 2.0 * o.walk_s}, {o.walk_s, 2.0 * o.walk_s}});
+  const std::vector<Rollout> rd = rollout(*model, *base, o, report);
+  const std::vector<Rollout> rt = rollout(*model, with(*base, tuned), o, report);
   std::printf("{\"robot\":\"%s\",\"gait\":\"%s\",\"swarm\":%d,\"iterations\":%d,\"evaluations\":%d,"
-              "\"walk_s\":%.2f,\"checkpoints_s\":[%.2f,%.2f],\"check_walk_s\":%.2f,\"tune_wall_s\":%.2f,\"tune_cpu_s\":%.2f,"
-              "\"tuned_cost\":%.3f,\"bounds\":[[%.2f,%.2f],[%.2f,%.2f],[%.3f,%.3f]],"
-              "\"constraints\":{\"max_tilt_deg\":%.1f,\"max_lateral_pct\":%.1f,\"max_heading_deg_s\":%.1f},"
+              "\"walk_s\":%.2f,\"checkpoints_s\":[%.2f,%.2f],\"check_walk_s\":%.2f,\"tune_wall_s\":%.2f,"
+              "\"tune_cpu_s\":%.2f,\"tuned_cost\":%.3f,\"default_cost\":%.3f,\"start_particle\":\"default\","
+              "\"reach_stride_mm\":%.2f,\"bounds\":[[%.2f,%.2f],[%.2f,%.2f],[%.3f,%.3f]],"
+              "\"constraints\":{\"max_tilt_deg\":%.1f,\"max_body_drift_pct\":%.1f,\"max_heading_deg_s\":%.1f},"
               "\"margin_pct\":30,",
               model->name, o.gait.empty() ? base->default_gait : o.gait.c_str(), swarm_size, iterations, evaluations,
-              o.walk_s, checkpoints[0], checkpoints[1], windows.back(), tune_s, tune_cpu_s, double(best.cost),
-              double(p.lo[0]), double(p.hi[0]), double(p.lo[1]), double(p.hi[1]), double(p.lo[2]), double(p.hi[2]),
-              o.max_tilt_deg, o.max_lateral_pct, o.max_heading_deg_s);
-  print_rollout("default", def, rd[1], o, true);
-  print_rollout("tuned", tuned, rt[1], o, true);
+              o.walk_s, checks[0].to_s, checks[1].to_s, report[1].to_s, tune_s, tune_cpu_s, double(best.cost),
+              default_cost, reach_mm, double(p.lo[0]), double(p.hi[0]), double(p.lo[1]), double(p.hi[1]),
+              double(p.lo[2]), double(p.hi[2]), o.max_tilt_deg, o.max_body_drift_pct, o.max_heading_deg_s);
+  print_rollout("default", def, rd[0], o, true);
+  print_rollout("tuned", tuned, rt[0], o, true);
   std::printf("\"windows\":[");
-  for (size_t w = 0; w < windows.size(); ++w) {
+  for (size_t w = 0; w < report.size(); ++w) {
     std::printf("{");
     print_rollout("default", def, rd[w], o, true);
     print_rollout("tuned", tuned, rt[w], o, false);
-    std::printf("}%s", w + 1 < windows.size() ? "," : "");
+    std::printf("}%s", w + 1 < report.size() ? "," : "");
   }
   std::printf("]}\n");
-  bool ok = true;
-  for (size_t w = 0; w < windows.size(); ++w) ok = ok && rd[w].ok && rt[w].ok;
+  // The swarm's best is never worse than its start particle, the default.
+  bool ok = rd.size() == report.size() && rt.size() == report.size() && double(best.cost) <= default_cost;
+  for (size_t w = 0; ok && w < report.size(); ++w) ok = rd[w].ok && rt[w].ok;
   return ok ? 0 : 1;
 }

@@ -603,7 +603,9 @@ def disagree(d):
 def gait_tune_data(build, reuse):
     cached = RESULTS / "gait_tune.json"
     if reuse and cached.is_file():
-        return json.loads(cached.read_text())
+        d = json.loads(cached.read_text())
+        if "default_cost" in d:  # else made by an older gait_tune: measure again
+            return d
     exe = build / "tools" / "pso_bench" / "gait_tune"
     if not exe.is_file():
         raise NotMeasured("gait_tune is not built (tools/pso_bench, needs the simulator's core: libbullet-dev)")
@@ -619,9 +621,17 @@ def gait_tune_data(build, reuse):
 
 def gait_tuning(d):
     keys = [("step_length_mm", "step length [mm]"), ("step_height_mm", "step height [mm]"), ("cycle_s", "cycle [s]"),
-            ("speed_mm_s", "forward speed [mm/s]"), ("max_tilt_deg", "max tilt [deg]"),
-            ("lateral_pct", "sideways drift [% of distance]"), ("heading_deg", "heading change [deg]"),
+            ("speed_mm_s", "forward speed along the heading [mm/s] (score)"),
+            ("start_dir_speed_mm_s", "speed in the starting direction [mm/s]"),
+            ("max_tilt_deg", "max tilt [deg] (<= {tilt})"),
+            ("body_drift_pct", "crabbing: sideways drift in the body frame [% of distance] (<= {drift})"),
+            ("turn_deg_s", "turning [deg/s] (<= {turn})"),
+            ("heading_deg", "heading change [deg]"),
+            ("lateral_pct", "sideways drift from the starting direction [% of distance] (not a constraint)"),
             ("fell", "fell"), ("feasible", "meets the constraints")]
+    c, lo_hi = d["constraints"], d["bounds"]
+    limits = {"tilt": fmt(c["max_tilt_deg"]), "drift": fmt(c["max_body_drift_pct"]),
+              "turn": fmt(c["max_heading_deg_s"])}
     windows = d["windows"]
     rows = []
 
@@ -629,47 +639,72 @@ def gait_tuning(d):
         return ("yes" if v else "no") if isinstance(v, bool) else fmt(v)
 
     for k, label in keys:
-        row = [label]
+        row = [label.format(**limits)]
         for i, w in enumerate(windows):
             if k in ("step_length_mm", "step_height_mm", "cycle_s") and i > 0:
                 row += ["", ""]
             else:
                 row += [cell(w["default"].get(k)), cell(w["tuned"].get(k))]
         rows.append(row)
-    c, lo_hi = d["constraints"], d["bounds"]
-    on_bound = [label.split(" [")[0] for (name, label), (lo, hi) in zip(keys[:3], lo_hi)
+    on_bound = [(name, label.split(" [")[0], lo, hi) for (name, label), (lo, hi) in zip(keys[:3], lo_hi)
                 if min(abs(d["tuned"][name] - lo), abs(d["tuned"][name] - hi)) <= 1e-2 * (hi - lo)]
     cps = " and ".join(f"{fmt(t)} s" for t in d["checkpoints_s"])
     md = (f"Strider's PSO (`kinematics/pso.h`, float, swarm {d['swarm']}, {d['iterations']} iterations, "
-          f"{d['evaluations']} rollouts in {fmt(d['tune_wall_s'])} s"
-          + (f", {fmt(d['tune_cpu_s'])} s of CPU" if "tune_cpu_s" in d else "") + f") tunes {d['robot']}'s {d['gait']} gait: step "
-          "length, step height and cycle time (defaults: the model's gait parameters), for forward speed. Each "
+          f"{d['evaluations']} rollouts in {fmt(d['tune_wall_s'])} s, {fmt(d['tune_cpu_s'])} s of CPU) tunes "
+          f"{d['robot']}'s {d['gait']} gait: step length, step height and cycle time, for forward speed. Each "
           "candidate is a library-mode rollout in strider-sim's Bullet world (RobotApp, the firmware's chain, with "
           "the candidate's gait parameters; `walk 500`, the gait engine caps the speed at what the parameters "
-          f"allow), scored by its speed over {fmt(d['walk_s'])} s of walking. Constraints: no fall, tilt <= "
-          f"{fmt(c['max_tilt_deg'])} deg, sideways drift <= {fmt(c['max_lateral_pct'])} % of the distance, "
-          f"turning <= {fmt(c['max_heading_deg_s'])} deg/s, each checked at {cps} of the rollout (a gait that "
-          "turns slowly drifts more the longer it walks); tuned with "
-          f"{d.get('margin_pct', 30)} % margin on drift and turning. Bounds: step length {fmt(lo_hi[0][0])}-"
-          f"{fmt(lo_hi[0][1])} mm, height {fmt(lo_hi[1][0])}-{fmt(lo_hi[1][1])} mm, cycle {fmt(lo_hi[2][0])}-"
-          f"{fmt(lo_hi[2][1])} s. Both gaits over the checkpoints' windows and over a walk twice as long "
-          f"({fmt(d['check_walk_s'])} s, not seen by the tuning), the constraints applied to each (one rollout per "
-          "gait; the shorter windows are the start of the same walk; tools/pso_bench/gait_tune.cpp):\n\n")
+          f"allow), scored by its forward speed along the heading over {fmt(d['walk_s'])} s of walking (the "
+          "body-frame velocity integrated, as strider-sim's `body_drift_mm`, docs/simulator.md). One particle "
+          "starts at the model's gait parameters, so the tuned gait is never worse than them on the tuning's cost "
+          f"(the default's: {fmt(-d['default_cost']) + ' mm/s' if d['default_cost'] < 0 else 'infeasible, it breaks a constraint (with the margin)'}). "
+          f"Constraints: no fall, tilt <= {limits['tilt']} deg, crabbing (sideways drift in the body frame, turning "
+          f"with the heading) <= {limits['drift']} % of the distance, turning <= {limits['turn']} deg/s on average, each "
+          f"checked at {cps} of the rollout; tuned with {d.get('margin_pct', 30)} % margin on drift and turning. "
+          "The sideways drift from the starting direction is shown but not constrained: with any heading drift "
+          "it grows without bound on a long open-loop walk, whatever the gait (the turning limit covers the "
+          f"heading). Bounds: step length {fmt(lo_hi[0][0])}-{fmt(lo_hi[0][1])} mm (up to the longest forward "
+          "stride every leg reaches, the gait engine's own stride limit at the lowest step height of the box), "
+          f"height {fmt(lo_hi[1][0])}-{fmt(lo_hi[1][1])} mm, cycle {fmt(lo_hi[2][0])}-{fmt(lo_hi[2][1])} s. "
+          f"Both gaits over the tuning window ({fmt(d['walk_s'])} s), over a validation walk twice as long "
+          f"({fmt(d['check_walk_s'])} s) and over its second half alone ({fmt(d['walk_s'])}-"
+          f"{fmt(d['check_walk_s'])} s, never seen by the tuning; the simulation is deterministic, so the first "
+          f"{fmt(d['walk_s'])} s of the validation walk are the tuning's own rollout), the constraints (without the "
+          "margin) applied to each (tools/pso_bench/gait_tune.cpp):\n\n")
+
+    def span(w):
+        r = w["default"]
+        return f"{fmt(r['walk_s'])} s" if r.get("from_s", 0) == 0 else f"{fmt(r['from_s'])}-{fmt(r['to_s'])} s"
+
     head = [""]
     for w in windows:
-        head += [f"default, {fmt(w['default']['walk_s'])} s", f"tuned, {fmt(w['tuned']['walk_s'])} s"]
+        head += [f"default, {span(w)}", f"tuned, {span(w)}"]
     md += table(head, rows)
-    if on_bound:
-        md += (f"\nOn (within 1 % of) a bound of the search box: {', '.join(on_bound)}: a wider box may find a "
-               "faster gait.\n")
-    ratio = d["tuned"]["speed_mm_s"] / d["default"]["speed_mm_s"] if d["default"]["speed_mm_s"] > 0 else None
-    ok = [w["tuned"].get("feasible") for w in windows]
-    verdict = ("meets the constraints over " + ", ".join(f"{fmt(w['tuned']['walk_s'])} s" for w in windows)
-               if all(ok) else "does NOT meet the constraints over " +
-               ", ".join(f"{fmt(w['tuned']['walk_s'])} s" for w, good in zip(windows, ok) if not good))
+    for name, label, lo, hi in on_bound:
+        at_hi = abs(d["tuned"][name] - hi) <= abs(d["tuned"][name] - lo)
+        if name == "step_length_mm" and at_hi:
+            md += (f"\nThe tuned {label} is at (within 1 % of) the legs' forward reach ({fmt(hi)} mm): the gait "
+                   "engine would not walk a longer stride.\n")
+        elif name == "step_height_mm" and not at_hi:
+            md += (f"\nThe tuned {label} is on (within 1 % of) the search box's lower bound ({fmt(lo)} mm, half "
+                   "the model's): a lower swing may be faster still on the simulator's flat floor, but clears "
+                   "less (the model's height is chosen to step over a cable).\n")
+        else:
+            md += (f"\nThe tuned {label} is on (within 1 % of) the search box's {'upper' if at_hi else 'lower'} "
+                   "bound: a wider box may find a faster gait.\n")
+    tw, vw = windows[0], windows[1]
+    ratio = tw["tuned"]["speed_mm_s"] / tw["default"]["speed_mm_s"] if tw["default"]["speed_mm_s"] > 0 else None
+
+    def verdict(name):
+        bad = [span(w) for w in windows if not w[name].get("feasible")]
+        return "meets the constraints over every window" if not bad else "does NOT meet the constraints over " + \
+            ", ".join(bad)
+
     summary = [("000", f"gait tuned by PSO in the simulator ({d['robot']})", "155 mm/s (seed 000's robot)",
-                f"{fmt(d['tuned']['speed_mm_s'])} mm/s tuned vs {fmt(d['default']['speed_mm_s'])} default over "
-                f"{fmt(d['walk_s'])} s" + (f" ({ratio:.2f}x)" if ratio else "") + f"; {verdict}")]
+                f"{fmt(tw['tuned']['speed_mm_s'])} mm/s tuned vs {fmt(tw['default']['speed_mm_s'])} default over "
+                f"{fmt(d['walk_s'])} s" + (f" ({ratio:.2f}x)" if ratio else "") +
+                f", {fmt(vw['tuned']['speed_mm_s'])} vs {fmt(vw['default']['speed_mm_s'])} over the "
+                f"{fmt(d['check_walk_s'])} s validation walk; tuned {verdict('tuned')}, default {verdict('default')}")]
     return md, summary
 
 
