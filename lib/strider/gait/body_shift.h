@@ -21,6 +21,7 @@
 #ifndef STRIDER_GAIT_BODY_SHIFT_H
 #define STRIDER_GAIT_BODY_SHIFT_H
 
+#include "gait_table.h"  // STRIDER_BODY_SHIFT
 #include "stability.h"
 
 namespace strider {

@@ -66,8 +66,10 @@ void GaitEngine<S>::step_walk(S dt) {
     }
   }
   if (changed) support_dirty_ = true;
+#if STRIDER_BODY_SHIFT
   // A gait without body shift and no shift left (a trot, a tripod): nothing to move, no call.
   if (base_.shift_body || shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) step_shift(dt);
+#endif
 
   if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
   if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
@@ -195,6 +197,7 @@ void GaitEngine<S>::step_swing(S dt) {
   }
 }
 
+#if STRIDER_BODY_SHIFT
 template <typename S>
 void GaitEngine<S>::step_shift(S dt) {
   if (!base_.shift_body) {  // relabelling keeps it
@@ -256,6 +259,7 @@ void GaitEngine<S>::step_shift(S dt) {
   const S b = cfg_.shift_budget_mm;
   shift_.step_toward(clamp(tx, -b, b), clamp(ty, -b, b), max_step);
 }
+#endif  // STRIDER_BODY_SHIFT
 
 template <typename S>
 void GaitEngine<S>::update_margin() const {
