@@ -4,4 +4,5 @@
 #define STRIDER_LEG_KINDS (1u << uint8_t(strider::LegKind::kAbduction))
 #define STRIDER_WALKER_LEGS 4  // walking state for four legs, not six
 #define STRIDER_WALKER_SOLVERS 2  // two leg solvers (left and right legs)
+#define STRIDER_SWING_SHAPES (1u << uint8_t(strider::SwingShape::kRectangle))  // its swing shape alone (rectangle)
 #include "../firmware_main.h"

@@ -52,6 +52,12 @@ enum class LimitsSource : uint8_t {
 };
 
 namespace gait_config_detail {
+//! Not a constant expression: a constant configuration with a swing shape
+//! that is not built in (STRIDER_SWING_SHAPES) fails to compile.
+inline void swing_shape_not_built() {}
+constexpr SwingShape built_swing_shape(SwingShape shape) {
+  return swing_shape_built(shape) ? shape : (swing_shape_not_built(), shape);
+}
 template <typename S>
 constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
 //! The largest |x| or |y| of the standing feet [mm].
@@ -74,7 +80,7 @@ constexpr void set_speeds(GaitConfig<S>& c) {
 template <typename S>
 constexpr void set_params(GaitConfig<S>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
                           S reach) {
-  c.shape = shape;
+  c.shape = built_swing_shape(shape);
   c.step_height_mm = scalar<S>(params.step_height_mm);
   c.stance_depth_mm = scalar<S>(params.stance_depth_mm);
   c.foot_radius_mm = scalar<S>(params.foot_radius_mm);

@@ -147,7 +147,7 @@ bool GaitEngine<S>::step_lift(const bool* edge) {
     target_[i] = touchdown(i);
     settled_[i] = true;
     // Only the semicircle's apex depends on the step's length (a square root).
-    apex_[i] = cfg_.shape == SwingShape::kSemicircle
+    apex_[i] = swing_shape_built(SwingShape::kSemicircle) && cfg_.shape == SwingShape::kSemicircle
                    ? swing_apex_mm(cfg_.shape, hypot(target_[i].x - lift_[i].x, target_[i].y - lift_[i].y),
                                    cfg_.step_height_mm)
                    : cfg_.step_height_mm;
