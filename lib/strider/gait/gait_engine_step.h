@@ -58,7 +58,7 @@ void GaitEngine<S>::step_walk(S dt) {
   bool changed = step_ground(step, dt);
   if (step_lift(edge)) changed = true;
   step_swing(dt);
-  if (cfg_.stance_depth_mm != S(0)) {
+  if (STRIDER_STANCE_DEPTH && cfg_.stance_depth_mm != S(0)) {
     for (uint8_t i = 0; i < n; ++i) {
       if (!contact_[i]) continue;
       const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
@@ -189,8 +189,9 @@ void GaitEngine<S>::step_swing(S dt) {
       lift_known = true;
     }
     // A foot that lifted from the ground line (no stance depth) keeps its
-    // height but for the lift: no product for the zero difference.
-    const S dz = sub_inline(cfg_.home[i].z, lift_[i].z);
+    // height but for the lift: no product for the zero difference (without
+    // the stance depth built in, every foot lifts from there).
+    const S dz = STRIDER_STANCE_DEPTH ? sub_inline(cfg_.home[i].z, lift_[i].z) : S(0);
     foot_[i].x = add_inline(lift_[i].x, sub_inline(target_[i].x, lift_[i].x) * sp.u);
     foot_[i].y = add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u);
     foot_[i].z = add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift);
