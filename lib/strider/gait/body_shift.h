@@ -68,8 +68,10 @@ class BodyShift {
     ty = from_y_ + (to_y - from_y_) * k;
   }
 
-  //! Moves toward (tx, ty) by at most max_step_mm per axis.
-  void step_toward(S tx, S ty, S max_step_mm) {
+  //! Moves toward (tx, ty) by at most max_step_mm per axis. Not inlined: in
+  //! step_shift() it changed the registers step_walk() keeps across its call
+  //! (hexapod18 Fixed control tick +3 cycles).
+  STRIDER_NOINLINE void step_toward(S tx, S ty, S max_step_mm) {
     move_toward(x_, tx, max_step_mm);
     move_toward(y_, ty, max_step_mm);
   }
