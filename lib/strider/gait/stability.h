@@ -215,13 +215,11 @@ class SupportPolygon {
       return 4;
     }
     const S shrink = max_of(want - r, S(0));
-    // The vertices in working units once (each is in two edges).
-    Vec3<S> a[kWalkerLegs];
-    for (uint8_t k = 0; k < count_; ++k) a[k] = at(feet, idx_[k]);
     for (uint8_t k = 0; k < count_; ++k) {
-      u[k] = scaled(diff(a[next(k)], a[k]), inv_len_[k]);
+      const Vec3<S> a = at(feet, idx_[k]);
+      u[k] = scaled(diff(at(feet, idx_[next(k)]), a), inv_len_[k]);
       const Vec3<S> nk(-u[k].y, u[k].x, S(0));
-      v[k] = along(a[k], along(nk, u[k], corner_[k]), shrink);
+      v[k] = along(a, along(nk, u[k], corner_[k]), shrink);
     }
     for (uint8_t k = 0; k < count_; ++k) len[k] = dot(diff(v[next(k)], v[k]), u[k]);
     return count_;
