@@ -208,15 +208,18 @@ void GaitEngine<S>::step_shift(S dt) {
   }
   const S max_step = cfg_.shift_speed_mm_s * dt;
   const uint8_t n = cfg_.leg_count;
-  const S ref_x = cfg_.com_x_mm + pose_.translation_mm.x, ref_y = cfg_.com_y_mm + pose_.translation_mm.y;
+  S ref_x = cfg_.com_x_mm + pose_.translation_mm.x, ref_y = cfg_.com_y_mm + pose_.translation_mm.y;
   bool any_swing = false;
   for (uint8_t i = 0; i < n; ++i)
     if (!contact_[i]) any_swing = true;
   if (support_dirty_) build_support();
-  S tx = S(0), ty = S(0);
+  // One correction call: the support now while feet swing; in a window, the
+  // support of the next swing (if a foot is still to step) for the CoM
+  // where it will be at lift-off, blended in below.
+  const SupportPolygon<S>* poly = &support_;
+  S t = S(0);
   if (any_swing) {
     in_window_ = false;
-    BodyShift<S>::correction(support_, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, tx, ty);
   } else {
     const Phase16 now = clock_.now();
     if (!in_window_) {
@@ -246,15 +249,19 @@ void GaitEngine<S>::step_shift(S dt) {
         window_inv_ = len == 0 ? S(0) : S(1) / phase_to<S>(len);
       }
     }
-    S to_x = S(0), to_y = S(0);
+    poly = nullptr;
     if (lead != kNoGroup) {
+      poly = &next_support_;
       const S cycles = phase_to<S>(ahead);  // until it lifts
-      BodyShift<S>::correction(next_support_, foot_, ref_x + now_s_.x * cycles, ref_y + now_s_.y * cycles, cfg_.margin_mm,
-                               cfg_.shift_x_only, to_x, to_y);
+      ref_x = ref_x + now_s_.x * cycles;
+      ref_y = ref_y + now_s_.y * cycles;
     }
-    const S t = window_inv_ == S(0) ? S(1) : phase_to<S>(Phase16(now - window_start_)) * window_inv_;
-    shift_.window_target(t, to_x, to_y, tx, ty);
+    t = window_inv_ == S(0) ? S(1) : phase_to<S>(Phase16(now - window_start_)) * window_inv_;
   }
+  S cx = S(0), cy = S(0);
+  if (poly != nullptr) BodyShift<S>::correction(*poly, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, cx, cy);
+  S tx = cx, ty = cy;
+  if (!any_swing) shift_.window_target(t, cx, cy, tx, ty);
   // Never beyond the reach kept for it (the walk and crawl stay within it,
   // test/gait; a switch from another gait mid-stride may ask for more).
   const S b = cfg_.shift_budget_mm;
