@@ -68,10 +68,9 @@ class SupportPolygon {
       current = next;
     } while (current != start && count_ < m);
     if (count_ == 2 && dist2(pu[idx_[0]], pu[idx_[1]]) == S(0)) count_ = 1;
-    Vec3<S> e[kWalkerLegs];
     for (uint8_t k = 0; k < count_; ++k) {
-      e[k] = diff(pu[idx_[next(k)]], pu[idx_[k]]);
-      const S len = sqrt(dot(e[k], e[k]));
+      const Vec3<S> e = diff(pu[idx_[next(k)]], pu[idx_[k]]);
+      const S len = sqrt(dot(e, e));
       inv_len_[k] = len > S(0) ? S(1) / len : S(0);
     }
     // Shrinking by d moves vertex k (edges k-1 in, k out) to a_k + d n_k + s u_k
@@ -79,7 +78,9 @@ class SupportPolygon {
     // s = d (1 - n_{k-1} . n_k) / (n_{k-1} . u_k), a constant of the shape.
     for (uint8_t k = 0; count_ >= 3 && k < count_; ++k) {
       const uint8_t j = k == 0 ? uint8_t(count_ - 1) : uint8_t(k - 1);
-      const Vec3<S> uk = scaled(e[k], inv_len_[k]), uj = scaled(e[j], inv_len_[j]);
+      // The edges again (a difference each) rather than an array of them.
+      const Vec3<S> uk = scaled(diff(pu[idx_[next(k)]], pu[idx_[k]]), inv_len_[k]);
+      const Vec3<S> uj = scaled(diff(pu[idx_[k]], pu[idx_[j]]), inv_len_[j]);
       const S nn = dot(uj, uk);    // n_j . n_k = u_j . u_k
       const S nu = cross(uj, uk);  // n_j . u_k = cross(u_j, u_k) > 0
       corner_[k] = nu > S(0) ? (S(1) - nn) / nu : S(0);
