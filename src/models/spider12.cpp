@@ -5,4 +5,6 @@
 #define STRIDER_WALKER_LEGS 4  // walking state for four legs, not six
 #define STRIDER_WALKER_SOLVERS 1  // one leg solver for its legs of one geometry
 #define STRIDER_SERVO_TICK_SLOTS 3  // the servo tick map's ranges shared by the legs' joints
+#define STRIDER_SWING_SHAPES (1u << uint8_t(strider::SwingShape::kEllipse))  // its swing shape alone (ellipse)
+#define STRIDER_STANCE_DEPTH 0  // no stance depth (its gait defaults)
 #include "../firmware_main.h"

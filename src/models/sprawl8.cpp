@@ -3,4 +3,6 @@
 #define STRIDER_FIRMWARE_MODEL strider::kSprawl8
 #define STRIDER_LEG_KINDS (1u << uint8_t(strider::LegKind::kSprawl))
 #define STRIDER_WALKER_LEGS 4  // walking state for four legs, not six
+#define STRIDER_SWING_SHAPES (1u << uint8_t(strider::SwingShape::kEllipse))  // its swing shape alone (ellipse)
+#define STRIDER_STANCE_DEPTH 0  // no stance depth (its gait defaults)
 #include "../firmware_main.h"

@@ -21,9 +21,21 @@
 #ifndef STRIDER_GAIT_BODY_SHIFT_H
 #define STRIDER_GAIT_BODY_SHIFT_H
 
+#include "../math/flash_table.h"
+#include "gait_table.h"  // STRIDER_BODY_SHIFT
 #include "stability.h"
 
 namespace strider {
+
+//! Moves v toward goal by at most max_step either way (a rate limit); true
+//! when v was at the goal already. One call for each value limited so (the
+//! body shift's axes, the body offsets): not inlined, it is written once.
+template <typename S>
+STRIDER_NOINLINE bool move_toward(S& v, S goal, S max_step) {
+  const bool there = v == goal;
+  v += clamp(goal - v, -max_step, max_step);
+  return there;
+}
 
 template <typename S>
 class BodyShift {
@@ -56,10 +68,12 @@ class BodyShift {
     ty = from_y_ + (to_y - from_y_) * k;
   }
 
-  //! Moves toward (tx, ty) by at most max_step_mm per axis.
-  void step_toward(S tx, S ty, S max_step_mm) {
-    x_ += clamp(tx - x_, -max_step_mm, max_step_mm);
-    y_ += clamp(ty - y_, -max_step_mm, max_step_mm);
+  //! Moves toward (tx, ty) by at most max_step_mm per axis. Not inlined: in
+  //! step_shift() it changed the registers step_walk() keeps across its call
+  //! (hexapod18 Fixed control tick +3 cycles).
+  STRIDER_NOINLINE void step_toward(S tx, S ty, S max_step_mm) {
+    move_toward(x_, tx, max_step_mm);
+    move_toward(y_, ty, max_step_mm);
   }
 
   //! 3 t^2 - 2 t^3 on [0, 1]: zero slope at both ends.

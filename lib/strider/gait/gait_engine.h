@@ -315,7 +315,9 @@ class GaitEngine {
   //! step_walk()'s lift-offs (edge: the feet at the edge of their reach
   //! before the step), apart for the same reason; true when a foot lifted.
   STRIDER_NOINLINE bool step_lift(const bool* edge);
+#if STRIDER_BODY_SHIFT
   void step_shift(S dt);
+#endif
   void update_margin() const;
   //! The support polygon of the feet down now (stability.h), built when
   //! first needed after a lift-off or touch-down: gaits that do not shift
@@ -367,7 +369,9 @@ class GaitEngine {
 
   mutable SupportPolygon<S> support_;
   mutable bool support_dirty_ = true;
+#if STRIDER_BODY_SHIFT
   SupportPolygon<S> next_support_;
+#endif
   S edge_r2_[kWalkerLegs] = {};  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
   bool settled_[kWalkerLegs] = {};  // swinging foot's touch-down point already at touchdown(i)
   bool vel_fresh_ = false;       // vx_, vy_, wz_ are now_s_ x hz_

@@ -68,19 +68,15 @@ template <typename S>
 void GaitEngine<S>::step_pose(S dt) {
   // At its goal (the usual case): nothing to move, no products.
   if (pose_at_goal_) return;
-  if (pose_.translation_mm.x == goal_pose_.translation_mm.x && pose_.translation_mm.y == goal_pose_.translation_mm.y &&
-      pose_.translation_mm.z == goal_pose_.translation_mm.z && pose_.roll_rad == goal_pose_.roll_rad &&
-      pose_.pitch_rad == goal_pose_.pitch_rad && pose_.yaw_rad == goal_pose_.yaw_rad) {
-    pose_at_goal_ = true;
-    return;
-  }
+  // Every offset moves by at most its rate; when all were at the goal
+  // already (none moved), the pose is there.
   const S dp = cfg_.pose_speed_mm_s * dt, da = cfg_.pose_rate_rad_s * dt;
-  pose_.translation_mm.x += clamp(goal_pose_.translation_mm.x - pose_.translation_mm.x, -dp, dp);
-  pose_.translation_mm.y += clamp(goal_pose_.translation_mm.y - pose_.translation_mm.y, -dp, dp);
-  pose_.translation_mm.z += clamp(goal_pose_.translation_mm.z - pose_.translation_mm.z, -dp, dp);
-  pose_.roll_rad += clamp(goal_pose_.roll_rad - pose_.roll_rad, -da, da);
-  pose_.pitch_rad += clamp(goal_pose_.pitch_rad - pose_.pitch_rad, -da, da);
-  pose_.yaw_rad += clamp(goal_pose_.yaw_rad - pose_.yaw_rad, -da, da);
+  pose_at_goal_ = move_toward(pose_.translation_mm.x, goal_pose_.translation_mm.x, dp) &
+                  move_toward(pose_.translation_mm.y, goal_pose_.translation_mm.y, dp) &
+                  move_toward(pose_.translation_mm.z, goal_pose_.translation_mm.z, dp) &
+                  move_toward(pose_.roll_rad, goal_pose_.roll_rad, da) &
+                  move_toward(pose_.pitch_rad, goal_pose_.pitch_rad, da) &
+                  move_toward(pose_.yaw_rad, goal_pose_.yaw_rad, da);
 }
 
 template <typename S>

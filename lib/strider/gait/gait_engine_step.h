@@ -58,7 +58,7 @@ void GaitEngine<S>::step_walk(S dt) {
   bool changed = step_ground(step, dt);
   if (step_lift(edge)) changed = true;
   step_swing(dt);
-  if (cfg_.stance_depth_mm != S(0)) {
+  if (STRIDER_STANCE_DEPTH && cfg_.stance_depth_mm != S(0)) {
     for (uint8_t i = 0; i < n; ++i) {
       if (!contact_[i]) continue;
       const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
@@ -66,8 +66,10 @@ void GaitEngine<S>::step_walk(S dt) {
     }
   }
   if (changed) support_dirty_ = true;
+#if STRIDER_BODY_SHIFT
   // A gait without body shift and no shift left (a trot, a tripod): nothing to move, no call.
   if (base_.shift_body || shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) step_shift(dt);
+#endif
 
   if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
   if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
@@ -145,7 +147,7 @@ bool GaitEngine<S>::step_lift(const bool* edge) {
     target_[i] = touchdown(i);
     settled_[i] = true;
     // Only the semicircle's apex depends on the step's length (a square root).
-    apex_[i] = cfg_.shape == SwingShape::kSemicircle
+    apex_[i] = swing_shape_built(SwingShape::kSemicircle) && cfg_.shape == SwingShape::kSemicircle
                    ? swing_apex_mm(cfg_.shape, hypot(target_[i].x - lift_[i].x, target_[i].y - lift_[i].y),
                                    cfg_.step_height_mm)
                    : cfg_.step_height_mm;
@@ -187,14 +189,16 @@ void GaitEngine<S>::step_swing(S dt) {
       lift_known = true;
     }
     // A foot that lifted from the ground line (no stance depth) keeps its
-    // height but for the lift: no product for the zero difference.
-    const S dz = sub_inline(cfg_.home[i].z, lift_[i].z);
+    // height but for the lift: no product for the zero difference (without
+    // the stance depth built in, every foot lifts from there).
+    const S dz = STRIDER_STANCE_DEPTH ? sub_inline(cfg_.home[i].z, lift_[i].z) : S(0);
     foot_[i].x = add_inline(lift_[i].x, sub_inline(target_[i].x, lift_[i].x) * sp.u);
     foot_[i].y = add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u);
     foot_[i].z = add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift);
   }
 }
 
+#if STRIDER_BODY_SHIFT
 template <typename S>
 void GaitEngine<S>::step_shift(S dt) {
   if (!base_.shift_body) {  // relabelling keeps it
@@ -204,15 +208,18 @@ void GaitEngine<S>::step_shift(S dt) {
   }
   const S max_step = cfg_.shift_speed_mm_s * dt;
   const uint8_t n = cfg_.leg_count;
-  const S ref_x = cfg_.com_x_mm + pose_.translation_mm.x, ref_y = cfg_.com_y_mm + pose_.translation_mm.y;
+  S ref_x = cfg_.com_x_mm + pose_.translation_mm.x, ref_y = cfg_.com_y_mm + pose_.translation_mm.y;
   bool any_swing = false;
   for (uint8_t i = 0; i < n; ++i)
     if (!contact_[i]) any_swing = true;
   if (support_dirty_) build_support();
-  S tx = S(0), ty = S(0);
+  // One correction call: the support now while feet swing; in a window, the
+  // support of the next swing (if a foot is still to step) for the CoM
+  // where it will be at lift-off, blended in below.
+  const SupportPolygon<S>* poly = &support_;
+  S t = S(0);
   if (any_swing) {
     in_window_ = false;
-    BodyShift<S>::correction(support_, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, tx, ty);
   } else {
     const Phase16 now = clock_.now();
     if (!in_window_) {
@@ -242,20 +249,25 @@ void GaitEngine<S>::step_shift(S dt) {
         window_inv_ = len == 0 ? S(0) : S(1) / phase_to<S>(len);
       }
     }
-    S to_x = S(0), to_y = S(0);
+    poly = nullptr;
     if (lead != kNoGroup) {
+      poly = &next_support_;
       const S cycles = phase_to<S>(ahead);  // until it lifts
-      BodyShift<S>::correction(next_support_, foot_, ref_x + now_s_.x * cycles, ref_y + now_s_.y * cycles, cfg_.margin_mm,
-                               cfg_.shift_x_only, to_x, to_y);
+      ref_x = ref_x + now_s_.x * cycles;
+      ref_y = ref_y + now_s_.y * cycles;
     }
-    const S t = window_inv_ == S(0) ? S(1) : phase_to<S>(Phase16(now - window_start_)) * window_inv_;
-    shift_.window_target(t, to_x, to_y, tx, ty);
+    t = window_inv_ == S(0) ? S(1) : phase_to<S>(Phase16(now - window_start_)) * window_inv_;
   }
+  S cx = S(0), cy = S(0);
+  if (poly != nullptr) BodyShift<S>::correction(*poly, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, cx, cy);
+  S tx = cx, ty = cy;
+  if (!any_swing) shift_.window_target(t, cx, cy, tx, ty);
   // Never beyond the reach kept for it (the walk and crawl stay within it,
   // test/gait; a switch from another gait mid-stride may ask for more).
   const S b = cfg_.shift_budget_mm;
   shift_.step_toward(clamp(tx, -b, b), clamp(ty, -b, b), max_step);
 }
+#endif  // STRIDER_BODY_SHIFT
 
 template <typename S>
 void GaitEngine<S>::update_margin() const {

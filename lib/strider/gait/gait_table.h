@@ -19,6 +19,15 @@
 
 #include "../robots/robot_model.h"
 
+//! STRIDER_BODY_SHIFT 0: the gait engine is built without its body shift
+//! (GaitEngine::step_shift() and the support polygon of the next swing), for
+//! a firmware whose robot has no gait that shifts the body: a hexapod's gaits
+//! (gait_library.h) never do, and gait_library.h checks that the walker's
+//! leg count gets none. Default 1. The margin (margin_mm()) stays.
+#ifndef STRIDER_BODY_SHIFT
+#define STRIDER_BODY_SHIFT 1
+#endif
+
 namespace strider {
 
 //! Longest gait name, its terminating zero included.

@@ -61,17 +61,16 @@ class SupportPolygon {
         const uint8_t i = pts[k];
         if (i == current) continue;
         if (next == current) { next = i; continue; }
-        const S c = cross(pu, current, next, i);
+        const S c = cross(diff(pu[next], pu[current]), diff(pu[i], pu[current]));
         // i is right of current->next: wrap tighter; collinear: take the farther.
-        if (c < S(0) || (c == S(0) && dist2(pu, current, i) > dist2(pu, current, next))) next = i;
+        if (c < S(0) || (c == S(0) && dist2(pu[current], pu[i]) > dist2(pu[current], pu[next]))) next = i;
       }
       current = next;
     } while (current != start && count_ < m);
-    if (count_ == 2 && dist2(pu, idx_[0], idx_[1]) == S(0)) count_ = 1;
-    Vec3<S> e[kWalkerLegs];
+    if (count_ == 2 && dist2(pu[idx_[0]], pu[idx_[1]]) == S(0)) count_ = 1;
     for (uint8_t k = 0; k < count_; ++k) {
-      e[k] = pu[idx_[next(k)]] - pu[idx_[k]];
-      const S len = sqrt(e[k].x * e[k].x + e[k].y * e[k].y);
+      const Vec3<S> e = diff(pu[idx_[next(k)]], pu[idx_[k]]);
+      const S len = sqrt(dot(e, e));
       inv_len_[k] = len > S(0) ? S(1) / len : S(0);
     }
     // Shrinking by d moves vertex k (edges k-1 in, k out) to a_k + d n_k + s u_k
@@ -79,9 +78,11 @@ class SupportPolygon {
     // s = d (1 - n_{k-1} . n_k) / (n_{k-1} . u_k), a constant of the shape.
     for (uint8_t k = 0; count_ >= 3 && k < count_; ++k) {
       const uint8_t j = k == 0 ? uint8_t(count_ - 1) : uint8_t(k - 1);
-      const Vec3<S> uk = e[k] * inv_len_[k], uj = e[j] * inv_len_[j];
-      const S nn = uj.x * uk.x + uj.y * uk.y;  // n_j . n_k = u_j . u_k
-      const S nu = uj.x * uk.y - uj.y * uk.x;  // n_j . u_k = cross(u_j, u_k) > 0
+      // The edges again (a difference each) rather than an array of them.
+      const Vec3<S> uk = scaled(diff(pu[idx_[next(k)]], pu[idx_[k]]), inv_len_[k]);
+      const Vec3<S> uj = scaled(diff(pu[idx_[k]], pu[idx_[j]]), inv_len_[j]);
+      const S nn = dot(uj, uk);    // n_j . n_k = u_j . u_k
+      const S nu = cross(uj, uk);  // n_j . u_k = cross(u_j, u_k) > 0
       corner_[k] = nu > S(0) ? (S(1) - nn) / nu : S(0);
     }
   }
@@ -134,10 +135,9 @@ class SupportPolygon {
     } else if (!inside(v, u, n, p)) {
       S best = S(0);
       for (uint8_t k = 0; k < n; ++k) {
-        const Vec3<S> r = p - v[k];
-        const S t = clamp(r.x * u[k].x + r.y * u[k].y, S(0), max_of(len[k], S(0)));
-        const Vec3<S> c(v[k].x + u[k].x * t, v[k].y + u[k].y * t, S(0));
-        const S d2 = (p.x - c.x) * (p.x - c.x) + (p.y - c.y) * (p.y - c.y);
+        const S t = clamp(dot(diff(p, v[k]), u[k]), S(0), max_of(len[k], S(0)));
+        const Vec3<S> c = along(v[k], u[k], t);
+        const S d2 = dist2(c, p);
         if (k == 0 || d2 < best) {
           best = d2;
           q = c;
@@ -153,30 +153,39 @@ class SupportPolygon {
   //! The vertex after k (no modulo: a 16-bit division on the AVR).
   uint8_t next(uint8_t k) const { return uint8_t(k + 1) == count_ ? uint8_t(0) : uint8_t(k + 1); }
   Vec3<S> at(const Vec3<S>* feet, uint8_t i) const { return Vec3<S>(unit(feet[i].x), unit(feet[i].y), S(0)); }
-  Vec3<S> edge(const Vec3<S>* feet, uint8_t k) const {
-    return at(feet, idx_[next(k)]) - at(feet, idx_[k]);
+  Vec3<S> edge(const Vec3<S>* feet, uint8_t k) const { return diff(at(feet, idx_[next(k)]), at(feet, idx_[k])); }
+  // Vectors in the ground plane (x, y; z is 0): the hull, its region and
+  // the moves into it are made of these few operations, each written once
+  // and called (build() and the region are cold; the rest a few calls per
+  // edge). The same operations in the same order as written out in place.
+  static STRIDER_NOINLINE Vec3<S> diff(const Vec3<S>& a, const Vec3<S>& b) {
+    return Vec3<S>(a.x - b.x, a.y - b.y, S(0));
   }
-  //! Cross product and squared distance of feet already in working units.
-  static S cross(const Vec3<S>* pu, uint8_t o, uint8_t a, uint8_t b) {
-    const Vec3<S> u = pu[a] - pu[o], v = pu[b] - pu[o];
-    return u.x * v.y - u.y * v.x;
+  static STRIDER_NOINLINE Vec3<S> sum(const Vec3<S>& a, const Vec3<S>& b) {
+    return Vec3<S>(a.x + b.x, a.y + b.y, S(0));
   }
-  static S dist2(const Vec3<S>* pu, uint8_t a, uint8_t b) {
-    const Vec3<S> d = pu[b] - pu[a];
-    return d.x * d.x + d.y * d.y;
+  static STRIDER_NOINLINE Vec3<S> scaled(const Vec3<S>& a, S k) { return Vec3<S>(a.x * k, a.y * k, S(0)); }
+  //! a + u t.
+  static STRIDER_NOINLINE Vec3<S> along(const Vec3<S>& a, const Vec3<S>& u, S t) {
+    return Vec3<S>(a.x + u.x * t, a.y + u.y * t, S(0));
+  }
+  static STRIDER_NOINLINE S dot(const Vec3<S>& a, const Vec3<S>& b) { return a.x * b.x + a.y * b.y; }
+  static STRIDER_NOINLINE S cross(const Vec3<S>& a, const Vec3<S>& b) { return a.x * b.y - a.y * b.x; }
+  //! |b - a|^2.
+  static S dist2(const Vec3<S>& a, const Vec3<S>& b) {
+    const Vec3<S> d = diff(b, a);
+    return dot(d, d);
   }
   //! Signed distance of p [unit] from edge k's line, positive inside (left).
   S line_distance(const Vec3<S>* feet, uint8_t k, const Vec3<S>& p) const {
-    const Vec3<S> e = edge(feet, k), r = p - at(feet, idx_[k]);
-    return (e.x * r.y - e.y * r.x) * inv_len_[k];
+    return cross(edge(feet, k), diff(p, at(feet, idx_[k]))) * inv_len_[k];
   }
   //! Distance of p [unit] from edge k as a segment (a point for one foot).
   S segment_distance(const Vec3<S>* feet, uint8_t k, const Vec3<S>& p) const {
-    const Vec3<S> a = at(feet, idx_[k]);
-    const Vec3<S> r = p - a;
+    const Vec3<S> r = diff(p, at(feet, idx_[k]));
     if (count_ == 1) return hypot(r.x, r.y);
     const Vec3<S> e = edge(feet, k);
-    const S t = clamp((r.x * e.x + r.y * e.y) * inv_len_[k] * inv_len_[k], S(0), S(1));
+    const S t = clamp(dot(r, e) * inv_len_[k] * inv_len_[k], S(0), S(1));
     return hypot(r.x - e.x * t, r.y - e.y * t);
   }
   //! The region with margin >= want [unit] as a convex polygon, counter-
@@ -190,43 +199,36 @@ class SupportPolygon {
     }
     if (count_ == 2) {  // the rectangle between the two feet
       const Vec3<S> a = at(feet, idx_[0]), b = at(feet, idx_[1]);
-      const Vec3<S> e = (b - a) * inv_len_[0];
+      const Vec3<S> e = scaled(diff(b, a), inv_len_[0]);
       const S w = max_of(r - want, S(0));
       const Vec3<S> nw(-e.y * w, e.x * w, S(0));  // left normal, half-width long
       const Vec3<S> n(-e.y, e.x, S(0));
-      v[0] = a - nw;
-      v[1] = b - nw;
-      v[2] = b + nw;
-      v[3] = a + nw;
+      v[0] = diff(a, nw);
+      v[1] = diff(b, nw);
+      v[2] = sum(b, nw);
+      v[3] = sum(a, nw);
       u[0] = e;
       u[1] = n;
-      u[2] = -e;
-      u[3] = -n;
+      u[2] = Vec3<S>(-e.x, -e.y, S(0));
+      u[3] = Vec3<S>(e.y, -e.x, S(0));
       len[0] = len[2] = S(1) / inv_len_[0];
       len[1] = len[3] = w + w;
       return 4;
     }
     const S shrink = max_of(want - r, S(0));
-    // The vertices in working units once (each is in two edges).
-    Vec3<S> a[kWalkerLegs];
-    for (uint8_t k = 0; k < count_; ++k) a[k] = at(feet, idx_[k]);
     for (uint8_t k = 0; k < count_; ++k) {
-      u[k] = (a[next(k)] - a[k]) * inv_len_[k];
+      const Vec3<S> a = at(feet, idx_[k]);
+      u[k] = scaled(diff(at(feet, idx_[next(k)]), a), inv_len_[k]);
       const Vec3<S> nk(-u[k].y, u[k].x, S(0));
-      v[k] = a[k] + (nk + u[k] * corner_[k]) * shrink;
+      v[k] = along(a, along(nk, u[k], corner_[k]), shrink);
     }
-    for (uint8_t k = 0; k < count_; ++k) {
-      const Vec3<S> d = v[next(k)] - v[k];
-      len[k] = d.x * u[k].x + d.y * u[k].y;
-    }
+    for (uint8_t k = 0; k < count_; ++k) len[k] = dot(diff(v[next(k)], v[k]), u[k]);
     return count_;
   }
 
   static bool inside(const Vec3<S>* v, const Vec3<S>* u, uint8_t n, const Vec3<S>& p) {
-    for (uint8_t k = 0; k < n; ++k) {
-      const Vec3<S> r = p - v[k];
-      if (u[k].x * r.y - u[k].y * r.x < S(0)) return false;
-    }
+    for (uint8_t k = 0; k < n; ++k)
+      if (cross(u[k], diff(p, v[k])) < S(0)) return false;
     return true;
   }
 
@@ -237,7 +239,7 @@ class SupportPolygon {
     bool has_lo = false, has_hi = false;
     for (uint8_t k = 0; k < n; ++k) {
       // Inside edge k: u.x (y - v.y) - u.y (x + t - v.x) = c - u.y t >= 0.
-      const S c = u[k].x * (p.y - v[k].y) - u[k].y * (p.x - v[k].x);
+      const S c = cross(u[k], diff(p, v[k]));
       constexpr S flat = scalar<S>(0.05);
       if (abs(u[k].y) < flat) continue;  // an edge along x: no x move helps
       const S t = c / u[k].y;
