@@ -180,11 +180,11 @@ struct VelocityLimits {
       const S r = hypot(rx, ry) * duty;
       if (r == S(0)) continue;
       S room = leg_stride(i, rx, ry, budget_mm);
-      if (keep_stride) room = min_of(room, preferred_stride_mm);
-      lo = room > S(0) ? max_of(lo, r / room) : scalar<S>(1000.0);
-      fastest = max_of(fastest, r);
+      if (keep_stride) room = smaller(room, preferred_stride_mm);
+      lo = room > S(0) ? larger(lo, r / room) : scalar<S>(1000.0);
+      fastest = larger(fastest, r);
     }
-    *rate_lo = max_of(lo, abs(p.wz_rad_s) * duty * scalar<S>(1.0 / kMaxStanceTurnRad));
+    *rate_lo = larger(lo, abs(p.wz_rad_s) * duty * scalar<S>(1.0 / kMaxStanceTurnRad));
     return fastest;
   }
 
@@ -199,11 +199,11 @@ struct VelocityLimits {
     if (swing_need > swing_room) k = swing_room / swing_need;
     const S stance_need = stance_ms_per_mm * fastest;
     const S stance_room = scalar<S>(1000.0) * duty;
-    if (stance_need > stance_room) k = min_of(k, stance_room / stance_need);
+    if (stance_need > stance_room) k = smaller(k, stance_room / stance_need);
     S hi = scalar<S>(100.0);
     if (lift_ms > S(0)) hi = (swing_room - swing_ms_per_mm * k * fastest) / lift_ms;
-    const S f = max_of(min_hz, preferred_stride_mm > S(0) ? k * fastest / preferred_stride_mm : S(0));
-    p.step_hz = max_of(min_of(f, hi), k * rate_lo);
+    const S f = larger(min_hz, preferred_stride_mm > S(0) ? k * fastest / preferred_stride_mm : S(0));
+    p.step_hz = larger(smaller(f, hi), k * rate_lo);
     if (k < S(1)) {
       p.vx_mm_s = p.vx_mm_s * k;
       p.vy_mm_s = p.vy_mm_s * k;
@@ -211,6 +211,12 @@ struct VelocityLimits {
       p.limited = true;
     }
   }
+
+  // max_of() and min_of() as calls in the two above: they run on a command
+  // change, not per tick, and an inline comparison of two Fixed costs more
+  // flash than a call on the AVR.
+  static STRIDER_NOINLINE S larger(S a, S b) { return max_of(a, b); }
+  static STRIDER_NOINLINE S smaller(S a, S b) { return min_of(a, b); }
 };
 
 namespace velocity_limits_detail {
