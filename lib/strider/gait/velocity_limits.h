@@ -131,8 +131,8 @@ struct VelocityLimits {
     const S swing = lift_ms + swing_ms_per_mm * length_mm;
     S f = swing > S(0) ? scalar<S>(1000.0) * (S(1) - duty) / swing : scalar<S>(100.0);
     const S stance = stance_ms_per_mm * length_mm;
-    if (stance > S(0)) f = min_of(f, scalar<S>(1000.0) * duty / stance);
-    return min_of(f, scalar<S>(100.0));
+    if (stance > S(0)) f = smaller(f, scalar<S>(1000.0) * duty / stance);
+    return smaller(f, scalar<S>(100.0));
   }
 
   //! The command (vx, vy [mm/s], wz [rad/s]) as the robot can walk it with
@@ -143,7 +143,7 @@ struct VelocityLimits {
   //! only by stepping faster.
   VelocityPlan<S> plan(const Vec3<S>* home, S vx, S vy, S wz, S duty, S budget_mm = S(0),
                        bool keep_stride = false) const {
-    VelocityPlan<S> p{vx, vy, wz, min_of(min_hz, servo_hz(S(0), duty)), false};
+    VelocityPlan<S> p{vx, vy, wz, smaller(min_hz, servo_hz(S(0), duty)), false};
     if (!sideways && vy != S(0)) {
       p.vy_mm_s = S(0);
       p.limited = true;
@@ -212,9 +212,9 @@ struct VelocityLimits {
     }
   }
 
-  // max_of() and min_of() as calls in the two above: they run on a command
-  // change, not per tick, and an inline comparison of two Fixed costs more
-  // flash than a call on the AVR.
+  // max_of() and min_of() as calls in plan() and servo_hz(): they run on a
+  // command change, not per tick, and an inline comparison of two Fixed
+  // costs more flash than a call on the AVR.
   static STRIDER_NOINLINE S larger(S a, S b) { return max_of(a, b); }
   static STRIDER_NOINLINE S smaller(S a, S b) { return min_of(a, b); }
 };
