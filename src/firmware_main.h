@@ -77,12 +77,16 @@ constexpr strider::JointChannels<Scalar, kModel.joint_count()> kJointChannels PR
     strider::joint_channels<Scalar, kModel.joint_count()>(kModel);
 static_assert(kJointChannels.count == kModel.joint_count(), "the model's channels fit the servo stage");
 
+// The default gait's name, likewise: no table of every model's gait
+// parameters in flash, no search by the model's name at start-up.
+constexpr strider::GaitName kDefaultGait PROGMEM = strider::default_gait_name(kModelIndex);
+
 // Avoidance's clearing distance, likewise.
 constexpr uint16_t kAvoidClearMm = strider::avoid_clear_mm(kModel);
 static_assert(kAvoidClearMm != 0, "avoid_clear_mm: a distance");
 
 using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count(), &kGaitConfig, &kWalkerLegs,
-                              &kJointChannels, kAvoidClearMm>;
+                              &kJointChannels, kAvoidClearMm, &kDefaultGait>;
 
 uint16_t g_servo_shadow[kBoards * strider::kPcaChannelsPerBoard];  // the boards this model uses
 Pca9685Output g_servos(g_servo_shadow, uint8_t(sizeof g_servo_shadow / sizeof g_servo_shadow[0]));

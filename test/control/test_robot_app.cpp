@@ -31,10 +31,11 @@ struct Lines {
 };
 
 template <typename S, const strider::GaitConfig<S>* kStored = nullptr, const strider::WalkerLegs<S>* kLegs = nullptr,
-          const strider::JointChannels<S, strider::kMaxServoJoints>* kChannels = nullptr, uint16_t kAvoidClearMm = 0>
+          const strider::JointChannels<S, strider::kMaxServoJoints>* kChannels = nullptr, uint16_t kAvoidClearMm = 0,
+          const strider::GaitName* kGait = nullptr>
 struct Rig {
   using App = strider::RobotApp<S, strider_test::RecordingServo, strider_test::FakeStore, strider::kMaxServoJoints,
-                                kStored, kLegs, kChannels, kAvoidClearMm>;
+                                kStored, kLegs, kChannels, kAvoidClearMm, kGait>;
   const strider::RobotModel& model;
   strider_test::RecordingServo out;
   strider_test::FakeStore store;
@@ -391,7 +392,11 @@ template <uint8_t r>
 constexpr strider::WalkerLegs<Fixed> kLegsOf = strider::walker_legs<Fixed>(*strider::kAllRobots[r]);
 template <uint8_t r>
 constexpr strider::JointChannels<Fixed, kJ> kChannelsOf = strider::joint_channels<Fixed, kJ>(*strider::kAllRobots[r]);
+template <uint8_t r>
+constexpr strider::GaitName kGaitOf = strider::default_gait_name(r);
 static_assert(strider::kRobotCount == 5, "RunLikeTheModelConvertedAtRunTime lists every built-in model");
+static_assert(kGaitOf<1>.text[0] == 'w' && kGaitOf<1>.text[3] == 'k' && kGaitOf<1>.text[4] == 0,
+              "default_gait_name: mammal8 walks");
 static_assert(kLegsOf<3>.ok && kLegsOf<3>.leg_count == 6 && kChannelsOf<3>.count == 18, "walker_legs, joint_channels: constants");
 
 template <uint8_t r>
@@ -399,7 +404,8 @@ void expect_constants_run_like_the_model() {
   const strider::RobotModel& m = *strider::kAllRobots[r];
   SCOPED_TRACE(m.name);
   Rig<Fixed> converted(m);
-  Rig<Fixed, &kConfigOf<r>, &kLegsOf<r>, &kChannelsOf<r>, strider::avoid_clear_mm(*strider::kAllRobots[r])> constant(m);
+  Rig<Fixed, &kConfigOf<r>, &kLegsOf<r>, &kChannelsOf<r>, strider::avoid_clear_mm(*strider::kAllRobots[r]), &kGaitOf<r>>
+      constant(m);
   EXPECT_EQ(converted.lines.sent, constant.lines.sent);
   const auto& a = converted.app->motion().walker();
   const auto& b = constant.app->motion().walker();

@@ -265,12 +265,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   void status(ReplyWriter& w) {
     w.text(FlashText{text::kOkStatus}).field_text(FlashText{text::kMode}, to_flash(mode_));
     w.format(FlashText{text::kStatusSpeedFmt}, speed_pct_, out_.vx, out_.vy).field_tenths(FlashText{text::kWz}, out_.wz);
-    if (settings_.avoid_enabled) w.field_text(FlashText{text::kAvoid}, to_flash(avoid_.state()));
-    else w.field_text(FlashText{text::kAvoid}, FlashText{text::kOff});
-    const FlashText sonar = sonar_.status == SonarStatus::kOk ? FlashText{text::kOk}
-                        : sonar_.status == SonarStatus::kFailed ? FlashText{text::kFailed}
-                        : sonar_.status == SonarStatus::kStale ? FlashText{text::kStale} : FlashText{text::kNone};
-    w.field_text(FlashText{text::kSonar}, sonar);
+    w.field_text(FlashText{text::kAvoid}, settings_.avoid_enabled ? to_flash(avoid_.state()) : FlashText{text::kOff});
+    w.field_text(FlashText{text::kSonar}, flash_name(text::kSonarStatusNames, 4, uint8_t(sonar_.status)));
     if (sonar_.status == SonarStatus::kOk && sonar_.distance_mm != kSonarFarMm) w.field(FlashText{text::kDistMm}, sonar_.distance_mm);
     w.field(FlashText{text::kDeadmanMs}, settings_.deadman_ms).field_text(FlashText{text::kEeprom}, to_flash(load_status_));
     sink_.write_status(w);

@@ -74,6 +74,18 @@ constexpr uint16_t avoid_clear_mm(const RobotModel& m) {
   return w < 60000.0f ? uint16_t(w + 0.5f) : uint16_t(60000);
 }
 
+//! A gait's name as a value (kGaitNameBytes with its zero): RobotApp's
+//! kStoredGait, a firmware's constant in flash.
+struct GaitName {
+  char text[kGaitNameBytes];
+};
+//! The default gait of built-in model r (kGaitParams order).
+constexpr GaitName default_gait_name(uint8_t r) {
+  GaitName n{};
+  for (uint8_t i = 0; i < kGaitNameBytes; ++i) n.text[i] = kGaitParams[r].default_gait[i];
+  return n;
+}
+
 //! Microseconds (<= 1e6) -> seconds, without a division.
 inline void to_seconds(uint32_t us, float* s) { *s = float(us) * 1e-6f; }
 inline void to_seconds(uint32_t us, Fixed* s) { *s = Fixed::from_raw(int32_t((us * 4295ul) >> 16)); }  // 2^16 / 1e6 = 4295 / 2^16 (+1e-5)
@@ -99,10 +111,13 @@ inline int32_t to_tenths(Fixed v) {
 //! servo stage's channels in flash (joint_channels(), a firmware's constant
 //! of its model; nullptr: made from the model, make_joint_channel()).
 //! kAvoidClearMm: avoid_clear_mm() of the model as a constant (0: computed
-//! from the model at start-up).
+//! from the model at start-up). kStoredGait (with kStoredConfig only): the
+//! model's default gait in flash (default_gait_name(), a firmware's
+//! constant; nullptr: looked up in kGaitParams by the model's name).
 template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints,
           const GaitConfig<S>* kStoredConfig = nullptr, const WalkerLegs<S>* kStoredLegs = nullptr,
-          const JointChannels<S, kJoints>* kStoredChannels = nullptr, uint16_t kAvoidClearMm = 0>
+          const JointChannels<S, kJoints>* kStoredChannels = nullptr, uint16_t kAvoidClearMm = 0,
+          const GaitName* kStoredGait = nullptr>
 class RobotApp {
   class Sink;
 
@@ -242,25 +257,37 @@ class RobotApp {
     name_ = model.name;
     boards_ = pca_board_count(model);
     controller_.set_avoid_clear_mm(kAvoidClearMm != 0 ? kAvoidClearMm : avoid_clear_mm(model));  // the copy: model_ may be in flash
-    GaitParams params;
-    return gait_params_of(model, &params) && configure_walker(model, params, Stored<given(kStoredConfig)>()) &&
-           configure_stage(model);
+    return configure_walker(model, Stored<given(kStoredConfig)>()) && configure_stage(model);
   }
   // The walker from the model (only the one called is built).
   template <bool kOn>
   struct Stored {};
   static constexpr bool given(const void* p) { return p != nullptr; }
-  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<false>) {
-    return motion_.configure(model, params, false);
+  bool configure_walker(const RobotModel& model, Stored<false>) {
+    GaitParams params;
+    return gait_params_of(model, &params) && motion_.configure(model, params, false);
   }
-  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>) {
-    return configure_walker(model, params, Stored<true>(), Stored<given(kStoredLegs)>());
+  // A stored configuration needs only the default gait's name.
+  bool configure_walker(const RobotModel& model, Stored<true>) {
+    GaitName gait;
+    return default_gait(model, &gait, Stored<given(kStoredGait)>()) &&
+           configure_walker(model, gait.text, Stored<given(kStoredLegs)>());
   }
-  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>, Stored<false>) {
-    return motion_.configure_stored(model, params, kStoredConfig, false);
+  static bool default_gait(const RobotModel&, GaitName* gait, Stored<true>) {
+    flash_copy(gait, kStoredGait, sizeof *gait);
+    return true;
   }
-  bool configure_walker(const RobotModel& model, const GaitParams& params, Stored<true>, Stored<true>) {
-    return motion_.configure_stored(model, params, kStoredConfig, kStoredLegs, false);
+  static bool default_gait(const RobotModel& model, GaitName* gait, Stored<false>) {
+    GaitParams params;
+    if (!gait_params_of(model, &params)) return false;
+    for (uint8_t i = 0; i < kGaitNameBytes; ++i) gait->text[i] = params.default_gait[i];
+    return true;
+  }
+  bool configure_walker(const RobotModel& model, const char* gait, Stored<false>) {
+    return motion_.configure_stored(model, gait, kStoredConfig, false);
+  }
+  bool configure_walker(const RobotModel& model, const char* gait, Stored<true>) {
+    return motion_.configure_stored(model, gait, kStoredConfig, kStoredLegs, false);
   }
   // Not inlined: the stage's temporaries are not on the stack with the
   // walker's configuration. The stage reads the model again (model_, not

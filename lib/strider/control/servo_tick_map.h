@@ -146,7 +146,8 @@ class ServoTickMap {
     ServoTickOwn<S>& own = joints_.own(i);
     own.channel = ch.channel;
     own.direction = ch.direction < 0 ? int8_t(-1) : int8_t(1);
-    const S lo = min_of(ch.min_rad, ch.max_rad), hi = max_of(ch.min_rad, ch.max_rad);
+    const bool flipped = ch.max_rad < ch.min_rad;  // one comparison for both bounds
+    const S lo = flipped ? ch.max_rad : ch.min_rad, hi = flipped ? ch.min_rad : ch.max_rad;
     const S zero = ch.direction < 0 ? -ch.zero_rad : ch.zero_rad;
     own.base_rad = ch.centre_rad - zero + trim - lo;
     ServoTickRange<S> j;

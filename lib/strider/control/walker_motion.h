@@ -43,12 +43,13 @@ class WalkerMotion {
     return true;
   }
 
-  //! The same at the model's gait defaults `params` with their configuration
-  //! from flash (Walker::configure_stored(): a firmware's constant).
-  bool configure_stored(const RobotModel& model, const GaitParams& params, const GaitConfig<S>* flash_config,
+  //! The same at the model's gait defaults with their configuration from
+  //! flash (Walker::configure_stored(): a firmware's constant), starting in
+  //! `default_gait` (the defaults' default_gait).
+  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S>* flash_config,
                         bool solve_now = true) {
     GaitTable gait;
-    if (!load_gait(model, params.default_gait, &gait) ||
+    if (!load_gait(model, default_gait, &gait) ||
         !walker_.configure_stored(model, gait, flash_config, true, solve_now))
       return false;
     configured();
@@ -57,10 +58,10 @@ class WalkerMotion {
 
   //! The same with the walker's legs from flash too (walker_legs() of the
   //! model: a firmware's constant).
-  bool configure_stored(const RobotModel& model, const GaitParams& params, const GaitConfig<S>* flash_config,
+  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S>* flash_config,
                         const WalkerLegs<S>* flash_legs, bool solve_now = true) {
     GaitTable gait;
-    if (!load_gait(model, params.default_gait, &gait) ||
+    if (!load_gait(model, default_gait, &gait) ||
         !walker_.configure_stored(flash_legs, gait, flash_config, true, solve_now))
       return false;
     configured();

@@ -131,8 +131,8 @@ struct VelocityLimits {
     const S swing = lift_ms + swing_ms_per_mm * length_mm;
     S f = swing > S(0) ? scalar<S>(1000.0) * (S(1) - duty) / swing : scalar<S>(100.0);
     const S stance = stance_ms_per_mm * length_mm;
-    if (stance > S(0)) f = min_of(f, scalar<S>(1000.0) * duty / stance);
-    return min_of(f, scalar<S>(100.0));
+    if (stance > S(0)) f = smaller(f, scalar<S>(1000.0) * duty / stance);
+    return smaller(f, scalar<S>(100.0));
   }
 
   //! The command (vx, vy [mm/s], wz [rad/s]) as the robot can walk it with
@@ -143,42 +143,14 @@ struct VelocityLimits {
   //! only by stepping faster.
   VelocityPlan<S> plan(const Vec3<S>* home, S vx, S vy, S wz, S duty, S budget_mm = S(0),
                        bool keep_stride = false) const {
-    VelocityPlan<S> p{vx, vy, wz, min_of(min_hz, servo_hz(S(0), duty)), false};
+    VelocityPlan<S> p{vx, vy, wz, smaller(min_hz, servo_hz(S(0), duty)), false};
     if (!sideways && vy != S(0)) {
-      p.vy_mm_s = vy = S(0);
+      p.vy_mm_s = S(0);
       p.limited = true;
     }
-    S rate_lo = S(0);   // step rate the stride limits need [Hz]
-    S fastest = S(0);   // largest R_i [mm/s]
-    for (uint8_t i = 0; i < leg_count; ++i) {
-      const S rx = vx - wz * home[i].y, ry = vy + wz * home[i].x;
-      const S r = hypot(rx, ry) * duty;
-      if (r == S(0)) continue;
-      S room = leg_stride(i, rx, ry, budget_mm);
-      if (keep_stride) room = min_of(room, preferred_stride_mm);
-      rate_lo = room > S(0) ? max_of(rate_lo, r / room) : scalar<S>(1000.0);
-      fastest = max_of(fastest, r);
-    }
-    if (fastest == S(0)) return p;
-    rate_lo = max_of(rate_lo, abs(wz) * duty * scalar<S>(1.0 / kMaxStanceTurnRad));
-    // Scale k so that some rate f >= k rate_lo meets the servo limits:
-    // f lift + swing_per_mm k R <= 1000 (1 - d) at f = k rate_lo, and the stance.
-    S k = S(1);
-    const S swing_need = lift_ms * rate_lo + swing_ms_per_mm * fastest;
-    if (swing_need > scalar<S>(1000.0) * (S(1) - duty)) k = scalar<S>(1000.0) * (S(1) - duty) / swing_need;
-    const S stance_need = stance_ms_per_mm * fastest;
-    if (stance_need > scalar<S>(1000.0) * duty) k = min_of(k, scalar<S>(1000.0) * duty / stance_need);
-    const S lo = k * rate_lo;
-    S hi = scalar<S>(100.0);
-    if (lift_ms > S(0)) hi = (scalar<S>(1000.0) * (S(1) - duty) - swing_ms_per_mm * k * fastest) / lift_ms;
-    S f = max_of(min_hz, preferred_stride_mm > S(0) ? k * fastest / preferred_stride_mm : S(0));
-    p.step_hz = max_of(min_of(f, hi), lo);
-    if (k < S(1)) {
-      p.vx_mm_s = vx * k;
-      p.vy_mm_s = vy * k;
-      p.wz_rad_s = wz * k;
-      p.limited = true;
-    }
+    S rate_lo;  // step rate the stride limits need [Hz]
+    const S fastest = stride_need(home, p, duty, budget_mm, keep_stride, &rate_lo);  // largest R_i [mm/s]
+    if (fastest != S(0)) fit(p, rate_lo, fastest, duty);
     return p;
   }
 
@@ -195,6 +167,56 @@ struct VelocityLimits {
   S max_yaw_rate(const Vec3<S>* home, S duty, S budget_mm = S(0), bool keep_stride = false) const {
     return plan(home, S(0), S(0), scalar<S>(20.0), duty, budget_mm, keep_stride).wz_rad_s;
   }
+
+  // plan()'s two halves, each with few values live at a time (a short stack
+  // frame on the AVR, addressed without pointer adjustments).
+  //! The largest R_i over the legs (0: no leg moves); *rate_lo the step rate
+  //! the legs' stride limits need for p's command.
+  STRIDER_NOINLINE S stride_need(const Vec3<S>* home, const VelocityPlan<S>& p, S duty, S budget_mm,
+                                 bool keep_stride, S* rate_lo) const {
+    S lo = S(0), fastest = S(0);
+    for (uint8_t i = 0; i < leg_count; ++i) {
+      const S rx = p.vx_mm_s - p.wz_rad_s * home[i].y, ry = p.vy_mm_s + p.wz_rad_s * home[i].x;
+      const S r = hypot(rx, ry) * duty;
+      if (r == S(0)) continue;
+      S room = leg_stride(i, rx, ry, budget_mm);
+      if (keep_stride) room = smaller(room, preferred_stride_mm);
+      lo = room > S(0) ? larger(lo, r / room) : scalar<S>(1000.0);
+      fastest = larger(fastest, r);
+    }
+    *rate_lo = larger(lo, abs(p.wz_rad_s) * duty * scalar<S>(1.0 / kMaxStanceTurnRad));
+    return fastest;
+  }
+
+  //! The step rate for p's command and, when the servos cannot keep up at
+  //! any rate, the command scaled down.
+  STRIDER_NOINLINE void fit(VelocityPlan<S>& p, S rate_lo, S fastest, S duty) const {
+    // Scale k so that some rate f >= k rate_lo meets the servo limits:
+    // f lift + swing_per_mm k R <= 1000 (1 - d) at f = k rate_lo, and the stance.
+    const S swing_room = scalar<S>(1000.0) * (S(1) - duty);
+    S k = S(1);
+    const S swing_need = lift_ms * rate_lo + swing_ms_per_mm * fastest;
+    if (swing_need > swing_room) k = swing_room / swing_need;
+    const S stance_need = stance_ms_per_mm * fastest;
+    const S stance_room = scalar<S>(1000.0) * duty;
+    if (stance_need > stance_room) k = smaller(k, stance_room / stance_need);
+    S hi = scalar<S>(100.0);
+    if (lift_ms > S(0)) hi = (swing_room - swing_ms_per_mm * k * fastest) / lift_ms;
+    const S f = larger(min_hz, preferred_stride_mm > S(0) ? k * fastest / preferred_stride_mm : S(0));
+    p.step_hz = larger(smaller(f, hi), k * rate_lo);
+    if (k < S(1)) {
+      p.vx_mm_s = p.vx_mm_s * k;
+      p.vy_mm_s = p.vy_mm_s * k;
+      p.wz_rad_s = p.wz_rad_s * k;
+      p.limited = true;
+    }
+  }
+
+  // max_of() and min_of() as calls in plan() and servo_hz(): they run on a
+  // command change, not per tick, and an inline comparison of two Fixed
+  // costs more flash than a call on the AVR.
+  static STRIDER_NOINLINE S larger(S a, S b) { return max_of(a, b); }
+  static STRIDER_NOINLINE S smaller(S a, S b) { return min_of(a, b); }
 };
 
 namespace velocity_limits_detail {
