@@ -442,6 +442,9 @@ STRIDER_ALWAYS_INLINE uint32_t sqrt_product(uint32_t p, uint32_t q) {
 //! Returns false, leaving ta and tb alone, when the point is not strictly
 //! inside or the links are 8 units or longer: then use solve().
 //! Always inlined: solve_wide() below is the shared out-of-line copy.
+//! kSharedAtan2 calls the one out-of-line lean atan2 instead of inlining
+//! its three copies (~0.4 KB each, for ~45 cycles a call).
+template <bool kSharedAtan2 = false>
 STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch,
                                              Fixed& ta, Fixed& tb) {
   if (link.outer2.raw() >= (int32_t(64) << 16)) return false;  // a1 + a2 >= 8 units
@@ -457,8 +460,9 @@ STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t
   // angle-difference identity; their errors (< 1.2e-4 rad together) stay far
   // inside the bounds. The bodies are inlined: a call costs ~100 cycles of
   // register saves each, for ~0.7 KB of flash per copy.
-  tb = Fixed::from_raw(detail::atan2_lean_raw(s, c));
-  int32_t a = detail::atan2_lean_raw(v, h) - detail::atan2_lean_raw(s, k1);
+  tb = Fixed::from_raw(kSharedAtan2 ? detail::atan2_lean_call(s, c) : detail::atan2_lean_raw(s, c));
+  int32_t a = kSharedAtan2 ? detail::atan2_lean_call(v, h) - detail::atan2_lean_call(s, k1)
+                           : detail::atan2_lean_raw(v, h) - detail::atan2_lean_raw(s, k1);
   const int32_t pi_raw = int32_t((detail::kPiQ24 + 128) >> 8);
   if (a > pi_raw) {
     a -= 2 * pi_raw;
@@ -469,9 +473,10 @@ STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t
   return true;
 }
 
-//! solve_wide_inline() as one out-of-line copy for the leg types that share it.
+//! solve_wide_inline() as one out-of-line copy for the leg types that share
+//! it (planar, abduction), with the shared lean atan2.
 inline bool solve_wide(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch, Fixed& ta, Fixed& tb) {
-  return solve_wide_inline(link, h, v, branch, ta, tb);
+  return solve_wide_inline<true>(link, h, v, branch, ta, tb);
 }
 
 }  // namespace leg_ik
