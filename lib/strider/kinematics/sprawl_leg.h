@@ -97,9 +97,8 @@ struct SprawlLeg {
 
   //! Seed 000 eqs 4-6.
   Vec3<S> fk(const Joints& q) const {
-    using leg_ik::mul_unit;  // a * s, cheaper for Fixed
-    const S reach = a1_mm + mul_unit(a2_mm, cos(q[1]));
-    return Vec3<S>(mul_unit(reach, cos(q[0])), mul_unit(reach, sin(q[0])), mul_unit(a2_mm, sin(q[1])));
+    const S reach = a1_mm + a2_mm * cos(q[1]);
+    return Vec3<S>(reach * cos(q[0]), reach * sin(q[0]), a2_mm * sin(q[1]));
   }
 
   //! Seed 000 eqs 7-8, then reachability and joint limits. Writes q and
