@@ -155,6 +155,10 @@ STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
 #endif
 }
 
+//! isqrt_q22() as one shared out-of-line copy, for sqrt(), hypot() and
+//! acos(); the leg solvers' hot paths inline their own.
+STRIDER_NOINLINE inline uint32_t isqrt_q22_call(uint32_t m) { return isqrt_q22(m); }
+
 //! floor(sqrt(m 2^24)) for m in [2^30, 2^32) from root = isqrt_q22(m),
 //! exact: the Newton estimate fixed by the residual, plus the next bit
 //! (~85 cycles on the AVR). The root's parts are q = floor(sqrt(m)) and
@@ -179,7 +183,7 @@ inline uint32_t isqrt_q24_floor_from(uint32_t m, uint32_t root) {
 }
 
 //! floor(sqrt(m 2^24)) for m in [2^30, 2^32), exact.
-inline uint32_t isqrt_q24_floor(uint32_t m) { return isqrt_q24_floor_from(m, isqrt_q22(m)); }
+inline uint32_t isqrt_q24_floor(uint32_t m) { return isqrt_q24_floor_from(m, isqrt_q22_call(m)); }
 
 }  // namespace detail
 
@@ -191,7 +195,7 @@ inline Fixed sqrt(Fixed v) {
   const uint8_t s = detail::normalize_even(m);
   // root ~ sqrt(u 2^(22 + s)); sqrt(u 2^16) = root / 2^(3 + s/2), rounded.
   // The root's +-1 moves the result by at most 1/8 LSB.
-  const uint32_t root = detail::isqrt_q22(m);
+  const uint32_t root = detail::isqrt_q22_call(m);
   return Fixed::from_raw(int32_t(detail::shr_round(root, uint8_t(3 + s / 2))));
 }
 
@@ -228,7 +232,7 @@ inline Fixed hypot(Fixed a, Fixed b) {
   const uint8_t e = detail::normalize_even(t);
   const uint8_t k = uint8_t(s + e / 2);
   // One root for both cases: ~ sqrt(t) 2^(11 + e/2).
-  const uint32_t root22 = detail::isqrt_q22(t);
+  const uint32_t root22 = detail::isqrt_q22_call(t);
   uint32_t h;
   if (k >= 7) {
     // result = root22 / 2^(k - 5): the root's +-1 costs at most 1/4 LSB.
