@@ -255,6 +255,9 @@ STRIDER_ALWAYS_INLINE uint32_t shift_signed(uint32_t root, int8_t e) {
 
 //! sqrt(x) for x in Q6.24 (0 < x < 2^30): wide units. Inline: one call
 //! site per solver, where a call costs more in register saves.
+//! kSharedRoot calls the shared root kernel (isqrt_q22_call) instead of
+//! inlining it.
+template <bool kSharedRoot = false>
 STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
   // normalize_even() and shift_signed() around the root in AVR assembly
@@ -285,7 +288,7 @@ STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
       : [h] "=&d"(h), [x] "+r"(x)
       :
       : "r30");
-  uint32_t root = detail::isqrt_q22(x);
+  uint32_t root = kSharedRoot ? detail::isqrt_q22_call(x) : detail::isqrt_q22(x);
   // root << (5 - h) for h <= 5 (root < 2^27), else shr_round(root, h - 5)
   // (h <= 15 for x >= 1).
   __asm__(
@@ -318,8 +321,8 @@ STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
 }
 
 //! sqrt_sq() as one shared out-of-line copy, for the solvers whose every
-//! cycle counts less than flash.
-STRIDER_NOINLINE inline int32_t sqrt_sq_call(uint32_t x) { return sqrt_sq(x); }
+//! cycle counts less than flash, with the shared root kernel.
+STRIDER_NOINLINE inline int32_t sqrt_sq_call(uint32_t x) { return sqrt_sq<true>(x); }
 
 //! sqrt(p q) for p, q > 0 in Q6.24 (a product of up to 60 bits), relative
 //! error < 2^-14: both are normalised to 16 significant bits, multiplied,
