@@ -324,6 +324,10 @@ STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
 //! cycle counts less than flash, with the shared root kernel.
 STRIDER_NOINLINE inline int32_t sqrt_sq_call(uint32_t x) { return sqrt_sq<true>(x); }
 
+//! from_mm() as one shared out-of-line copy (the sprawl leg converts five
+//! values per solve).
+STRIDER_NOINLINE inline bool from_mm_call(Fixed v_mm, int8_t shift, int32_t& out) { return from_mm(v_mm, shift, out); }
+
 //! sqrt(p q) for p, q > 0 in Q6.24 (a product of up to 60 bits), relative
 //! error < 2^-14: both are normalised to 16 significant bits, multiplied,
 //! and the root comes from the interpolated table alone. Q6.24.
