@@ -117,21 +117,4 @@ TYPED_TEST(LegRobustnessTest, Abduction) {
   }
 }
 
-// The fk helpers' shortcut products must equal Fixed's general product bit
-// for bit (fk results are compared across scalars and with the AVR).
-TEST(LegIkHelpers, MulUnitIsTheFixedProduct) {
-  std::mt19937 rng(77);
-  std::uniform_int_distribution<int32_t> any(Fixed::kMinRaw, Fixed::kMaxRaw);
-  std::uniform_int_distribution<int32_t> unit(-65536, 65536);
-  const int32_t edges[] = {0, 1, -1, 65535, -65535, 65536, -65536, 65537, 32768, Fixed::kMaxRaw, Fixed::kMinRaw};
-  auto check = [](int32_t a, int32_t s) {
-    const Fixed fa = Fixed::from_raw(a), fs = Fixed::from_raw(s);
-    ASSERT_EQ(strider::leg_ik::mul_unit(fa, fs).raw(), (fa * fs).raw()) << a << " " << s;
-  };
-  for (int32_t a : edges)
-    for (int32_t s : edges) check(a, s);
-  for (int i = 0; i < 200000; ++i) check(any(rng), unit(rng));
-  for (int i = 0; i < 20000; ++i) check(unit(rng) * 3, any(rng));
-}
-
 }  // namespace

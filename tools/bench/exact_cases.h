@@ -121,6 +121,22 @@ void exact_unary(Sink& out, uint32_t seed, int32_t span, Fn fn) {
   }
 }
 
+// sin and cos next to the edges of their reduction and folds: k pi/2 for
+// k = -4..4 [raw, rounded], and 8 rad (the large-angle reduction's
+// threshold), each -2..+2 raw.
+template <class Sink, class Fn>
+void exact_angle_edges(Sink& out, Fn fn) {
+  for (int8_t k = -4; k <= 4; ++k) {
+    const int32_t base = k == 4 ? int32_t(0x80000L) : k == -4 ? -int32_t(0x80000L) : int32_t(k) * 102944L;
+    for (int8_t d = -2; d <= 2; ++d) emit(out, base + d, fn(Fixed::from_raw(base + d)).raw());
+  }
+  for (int8_t d = -2; d <= 2; ++d) {
+    emit(out, 205887L + d, fn(Fixed::from_raw(205887L + d)).raw());  // pi
+    emit(out, -205887L + d, fn(Fixed::from_raw(-205887L + d)).raw());
+    emit(out, 411775L + d, fn(Fixed::from_raw(411775L + d)).raw());  // 2 pi
+  }
+}
+
 struct SqrtFn { Fixed operator()(Fixed a) const { return strider::sqrt(a); } };
 struct SinFn { Fixed operator()(Fixed a) const { return strider::sin(a); } };
 struct CosFn { Fixed operator()(Fixed a) const { return strider::cos(a); } };
@@ -133,8 +149,10 @@ void exact_functions(Sink& out) {
   exact_unary(out, 2u, 200 * 65536, SqrtFn());
   out.section(STRIDER_BENCH_STR("fixed_sin"));
   exact_unary(out, 3u, 8 * 65536, SinFn());
+  exact_angle_edges(out, SinFn());
   out.section(STRIDER_BENCH_STR("fixed_cos"));
   exact_unary(out, 4u, 8 * 65536, CosFn());
+  exact_angle_edges(out, CosFn());
   out.section(STRIDER_BENCH_STR("fixed_asin"));
   exact_unary(out, 5u, 81920, AsinFn());
   out.section(STRIDER_BENCH_STR("fixed_acos"));

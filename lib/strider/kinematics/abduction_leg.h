@@ -142,11 +142,10 @@ struct AbductionLeg {
   Vec3<S> fk(const Joints& q) const {
     const S c1 = cos(q[0]), s1 = sin(q[0]);
     const S t23 = q[1] + q[2];
-    using leg_ik::mul_unit;  // a * s, cheaper for Fixed
-    const S xp = -(mul_unit(lb_mm, cos(q[1])) + mul_unit(lc_mm, cos(t23)));
-    S d = mul_unit(lb_mm, sin(q[1])) + mul_unit(lc_mm, sin(t23));
+    const S xp = -(lb_mm * cos(q[1]) + lc_mm * cos(t23));
+    S d = lb_mm * sin(q[1]) + lc_mm * sin(t23);
     if (side == LegSide::kRight) d = -d;  // w_right = -w_left
-    return Vec3<S>(xp, mul_unit(la_mm, c1) + mul_unit(d, s1), mul_unit(la_mm, s1) - mul_unit(d, c1));
+    return Vec3<S>(xp, la_mm * c1 + d * s1, la_mm * s1 - d * c1);
   }
 
   //! Seed 001 eqs 4.1-4.21 and algorithm 1 (see the header comment), then

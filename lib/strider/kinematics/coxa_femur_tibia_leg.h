@@ -128,10 +128,9 @@ struct CoxaFemurTibiaLeg {
   //! Seed 002 eqs 5-7.
   Vec3<S> fk(const Joints& q) const {
     const S t23 = q[1] + q[2];
-    using leg_ik::mul_unit;  // a * s, cheaper for Fixed
-    const S reach = mul_unit(tibia_mm, cos(t23)) + mul_unit(femur_mm, cos(q[1])) + coxa_mm;
-    return Vec3<S>(mul_unit(reach, cos(q[0])), mul_unit(reach, sin(q[0])),
-                   mul_unit(tibia_mm, sin(t23)) + mul_unit(femur_mm, sin(q[1])) + d1_mm);
+    const S reach = tibia_mm * cos(t23) + femur_mm * cos(q[1]) + coxa_mm;
+    return Vec3<S>(reach * cos(q[0]), reach * sin(q[0]),
+                   tibia_mm * sin(t23) + femur_mm * sin(q[1]) + d1_mm);
   }
 
   //! Seed 002 eqs 11-12 and the two-link solution, then reachability and

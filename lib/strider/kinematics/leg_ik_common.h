@@ -76,25 +76,6 @@ STRIDER_ALWAYS_INLINE bool is_zero(Fixed v) { return v.raw() == 0; }
 STRIDER_ALWAYS_INLINE bool same_bits(float a, float b) { return detail::float_bits(a) == detail::float_bits(b); }
 STRIDER_ALWAYS_INLINE bool same_bits(Fixed a, Fixed b) { return a == b; }
 
-//! a s for a sine or cosine s (|s| <= 1), as the legs' fk multiplies
-//! lengths by them: for Fixed the same result as a * s, bit for bit, from
-//! two 16x16 products (s has no integer part but for +-1) instead of the
-//! general product's sixteen 8x8 ones and a call; any other s takes a * s.
-STRIDER_ALWAYS_INLINE float mul_unit(float a, float s) { return a * s; }
-inline Fixed mul_unit(Fixed a, Fixed s) {
-  const uint32_t ua = Fixed::abs_raw(a.raw()), us = Fixed::abs_raw(s.raw());
-  if (us > uint32_t(Fixed::kOneRaw)) return a * s;
-  // Fixed::mul_raw with bh = 0: ah bl + round(al bl / 2^16) (< 2^32); with
-  // s = +-1 the magnitude of a itself.
-  const uint32_t m = us == uint32_t(Fixed::kOneRaw)
-                         ? ua
-                         : detail::mul_u16(detail::hi16(ua), uint16_t(us)) +
-                               detail::hi16(detail::mul_u16(uint16_t(ua), uint16_t(us)) + 0x8000UL);
-  const bool negative = (a.raw() < 0) != (s.raw() < 0);
-  if (m >= 0x80000000UL) return Fixed::from_raw(negative ? Fixed::kMinRaw : Fixed::kMaxRaw);
-  return Fixed::from_raw(negative ? -int32_t(m) : int32_t(m));
-}
-
 //! Whether a sum of squares [unit^2] is too small for its square root to keep
 //! Fixed's precision (a length under 1/4 unit); then use hypot(). Never for float.
 constexpr bool tiny_square(float) { return false; }

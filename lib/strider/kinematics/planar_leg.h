@@ -54,9 +54,8 @@ struct PlanarLeg {
   //! Seed 003 eq 3 (the position column of eq 2's A1 A2).
   Vec3<S> fk(const Joints& q) const {
     const S t12 = q[0] + q[1];
-    using leg_ik::mul_unit;  // a * s, cheaper for Fixed
-    return Vec3<S>(mul_unit(a1_mm, cos(q[0])) + mul_unit(a2_mm, cos(t12)), S(0),
-                   mul_unit(a1_mm, sin(q[0])) + mul_unit(a2_mm, sin(t12)));
+    return Vec3<S>(a1_mm * cos(q[0]) + a2_mm * cos(t12), S(0),
+                   a1_mm * sin(q[0]) + a2_mm * sin(t12));
   }
 
   //! Seed 003 eqs 4-5 (as one atan2 each, see two_link.h), then

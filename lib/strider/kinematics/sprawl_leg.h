@@ -61,8 +61,9 @@ STRIDER_ALWAYS_INLINE bool sprawl_solve_fast(const Leg& leg, const Vec3<Fixed>& 
   if (ra1 >= 0x40000000UL || ra2 >= 0x40000000UL) return false;
   const int8_t n = unit_shift(Fixed::from_raw(int32_t(ra1 + ra2)));
   int32_t x, y, z, a1, a2;
-  if (!wide::from_mm(target.x, n, x) || !wide::from_mm(target.y, n, y) || !wide::from_mm(target.z, n, z) ||
-      !wide::from_mm(leg.a1_mm, n, a1) || !wide::from_mm(leg.a2_mm, n, a2))
+  if (!wide::from_mm_call(target.x, n, x) || !wide::from_mm_call(target.y, n, y) ||
+      !wide::from_mm_call(target.z, n, z) || !wide::from_mm_call(leg.a1_mm, n, a1) ||
+      !wide::from_mm_call(leg.a2_mm, n, a2))
     return false;
   const uint32_t rho2 = wide::sq(x) + wide::sq(y);  // [Q6.24]
   if (rho2 < 0x10000UL || rho2 >= 0x40000000UL) return false;
@@ -97,9 +98,8 @@ struct SprawlLeg {
 
   //! Seed 000 eqs 4-6.
   Vec3<S> fk(const Joints& q) const {
-    using leg_ik::mul_unit;  // a * s, cheaper for Fixed
-    const S reach = a1_mm + mul_unit(a2_mm, cos(q[1]));
-    return Vec3<S>(mul_unit(reach, cos(q[0])), mul_unit(reach, sin(q[0])), mul_unit(a2_mm, sin(q[1])));
+    const S reach = a1_mm + a2_mm * cos(q[1]);
+    return Vec3<S>(reach * cos(q[0]), reach * sin(q[0]), a2_mm * sin(q[1]));
   }
 
   //! Seed 000 eqs 7-8, then reachability and joint limits. Writes q and

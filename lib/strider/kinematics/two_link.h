@@ -255,6 +255,9 @@ STRIDER_ALWAYS_INLINE uint32_t shift_signed(uint32_t root, int8_t e) {
 
 //! sqrt(x) for x in Q6.24 (0 < x < 2^30): wide units. Inline: one call
 //! site per solver, where a call costs more in register saves.
+//! kSharedRoot calls the shared root kernel (isqrt_q22_call) instead of
+//! inlining it.
+template <bool kSharedRoot = false>
 STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
   // normalize_even() and shift_signed() around the root in AVR assembly
@@ -285,7 +288,7 @@ STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
       : [h] "=&d"(h), [x] "+r"(x)
       :
       : "r30");
-  uint32_t root = detail::isqrt_q22(x);
+  uint32_t root = kSharedRoot ? detail::isqrt_q22_call(x) : detail::isqrt_q22(x);
   // root << (5 - h) for h <= 5 (root < 2^27), else shr_round(root, h - 5)
   // (h <= 15 for x >= 1).
   __asm__(
@@ -318,8 +321,12 @@ STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
 }
 
 //! sqrt_sq() as one shared out-of-line copy, for the solvers whose every
-//! cycle counts less than flash.
-STRIDER_NOINLINE inline int32_t sqrt_sq_call(uint32_t x) { return sqrt_sq(x); }
+//! cycle counts less than flash, with the shared root kernel.
+STRIDER_NOINLINE inline int32_t sqrt_sq_call(uint32_t x) { return sqrt_sq<true>(x); }
+
+//! from_mm() as one shared out-of-line copy (the sprawl leg converts five
+//! values per solve).
+STRIDER_NOINLINE inline bool from_mm_call(Fixed v_mm, int8_t shift, int32_t& out) { return from_mm(v_mm, shift, out); }
 
 //! sqrt(p q) for p, q > 0 in Q6.24 (a product of up to 60 bits), relative
 //! error < 2^-14: both are normalised to 16 significant bits, multiplied,
@@ -442,6 +449,9 @@ STRIDER_ALWAYS_INLINE uint32_t sqrt_product(uint32_t p, uint32_t q) {
 //! Returns false, leaving ta and tb alone, when the point is not strictly
 //! inside or the links are 8 units or longer: then use solve().
 //! Always inlined: solve_wide() below is the shared out-of-line copy.
+//! kSharedAtan2 calls the one out-of-line lean atan2 instead of inlining
+//! its three copies (~0.4 KB each, for ~45 cycles a call).
+template <bool kSharedAtan2 = false>
 STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch,
                                              Fixed& ta, Fixed& tb) {
   if (link.outer2.raw() >= (int32_t(64) << 16)) return false;  // a1 + a2 >= 8 units
@@ -457,8 +467,9 @@ STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t
   // angle-difference identity; their errors (< 1.2e-4 rad together) stay far
   // inside the bounds. The bodies are inlined: a call costs ~100 cycles of
   // register saves each, for ~0.7 KB of flash per copy.
-  tb = Fixed::from_raw(detail::atan2_lean_raw(s, c));
-  int32_t a = detail::atan2_lean_raw(v, h) - detail::atan2_lean_raw(s, k1);
+  tb = Fixed::from_raw(kSharedAtan2 ? detail::atan2_lean_call(s, c) : detail::atan2_lean_raw(s, c));
+  int32_t a = kSharedAtan2 ? detail::atan2_lean_call(v, h) - detail::atan2_lean_call(s, k1)
+                           : detail::atan2_lean_raw(v, h) - detail::atan2_lean_raw(s, k1);
   const int32_t pi_raw = int32_t((detail::kPiQ24 + 128) >> 8);
   if (a > pi_raw) {
     a -= 2 * pi_raw;
@@ -469,9 +480,10 @@ STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t
   return true;
 }
 
-//! solve_wide_inline() as one out-of-line copy for the leg types that share it.
+//! solve_wide_inline() as one out-of-line copy for the leg types that share
+//! it (planar, abduction), with the shared lean atan2.
 inline bool solve_wide(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch, Fixed& ta, Fixed& tb) {
-  return solve_wide_inline(link, h, v, branch, ta, tb);
+  return solve_wide_inline<true>(link, h, v, branch, ta, tb);
 }
 
 }  // namespace leg_ik

@@ -65,7 +65,7 @@ inline uint32_t acos_unit_q24(uint32_t ax) {
   uint32_t p = mul_u16(a, uint16_t(ax)) + (uint32_t(a) << 16);
   const uint8_t h = uint8_t(normalize_even(p) / 2);  // p >= 2^17 - 1, so h <= 7
   // root ~ sqrt((1 - x^2) 2^32) 2^(11 + h); its +-1 is far below what atan needs.
-  const uint32_t root = isqrt_q22(p);
+  const uint32_t root = isqrt_q22_call(p);
   // Both legs scaled by 2^32: x 2^32 and sqrt(1 - x^2) 2^32 = root 2^(5 - h).
   const uint32_t y = h > 5 ? shr_round(root, uint8_t(h - 5)) : root << (5 - h);
   return atan2_first_quadrant_q24(y, ax << 16);

@@ -29,16 +29,9 @@ STRIDER_ALWAYS_INLINE uint32_t isqrt_table_estimate(uint32_t m) {
 }
 
 //! One Newton step from the exact integer root: root ~ sqrt(m 2^22) within
-//! +-1 of its floor, for m in [2^30, 2^32); also what the exact residual
-//! needs: q = floor(sqrt(m)), rem = m - q^2, frac = root - q 2^11.
-struct NewtonRoot {
-  uint32_t root;
-  uint32_t rem;
-  uint16_t q;
-  uint16_t frac;
-};
-
-STRIDER_ALWAYS_INLINE NewtonRoot isqrt_newton(uint32_t m) {
+//! +-1 of its floor, for m in [2^30, 2^32), as q 2^11 + frac with
+//! q = floor(sqrt(m)) and frac in [0, 2047].
+STRIDER_ALWAYS_INLINE uint32_t isqrt_newton(uint32_t m) {
   // q = 2^16 squares to 0 modulo 2^32, as uint16_t(q) does: rem stays right.
   uint32_t q = isqrt_table_estimate(m);
   int32_t rem = to_signed(m - mul_u16(uint16_t(q), uint16_t(q)));
@@ -56,14 +49,14 @@ STRIDER_ALWAYS_INLINE NewtonRoot isqrt_newton(uint32_t m) {
   const uint16_t rq = recip_q30(q16, 0);  // 2^30 / q
   uint16_t frac = uint16_t(hi16(mul_u16(uint16_t(uint32_t(rem) >> 1), rq)) >> 3);
   if (frac > 2047) frac = 2047;
-  return NewtonRoot{mul_u16(q16, 2048) + frac, uint32_t(rem), q16, frac};
+  return mul_u16(q16, 2048) + frac;
 }
 
 //! sqrt(m 2^22) for m in [2^30, 2^32): a 27-bit result within +-1 of the
 //! floor (the Newton estimate).
 STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
-  // isqrt_newton(m).root in AVR assembly, step for step: gcc spills the C's
+  // isqrt_newton(m) in AVR assembly, step for step: gcc spills the C's
   // 32-bit temporaries to the stack (~260 -> ~130 cycles). test_avr_exact
   // checks it against the host's C bit for bit (fixed_isqrt and every
   // function built on it).
@@ -158,19 +151,25 @@ STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
       : "r30", "r31");
   return root;
 #else
-  return isqrt_newton(m).root;
+  return isqrt_newton(m);
 #endif
 }
 
-//! floor(sqrt(m 2^24)) for m in [2^30, 2^32), exact: the Newton estimate
-//! fixed by the residual, plus the next bit (~85 cycles more on the AVR).
-inline uint32_t isqrt_q24_floor(uint32_t m) {
-  const NewtonRoot n = isqrt_newton(m);
+//! isqrt_q22() as one shared out-of-line copy, for sqrt(), hypot() and
+//! acos(); the leg solvers' hot paths inline their own.
+STRIDER_NOINLINE inline uint32_t isqrt_q22_call(uint32_t m) { return isqrt_q22(m); }
+
+//! floor(sqrt(m 2^24)) for m in [2^30, 2^32) from root = isqrt_q22(m),
+//! exact: the Newton estimate fixed by the residual, plus the next bit
+//! (~85 cycles on the AVR). The root's parts are q = floor(sqrt(m)) and
+//! frac (isqrt_newton()), so only q's residual m - q^2 is computed again.
+inline uint32_t isqrt_q24_floor_from(uint32_t m, uint32_t root) {
+  const uint16_t q = uint16_t(root >> 11), frac = uint16_t(uint16_t(root) & 0x7FFU);
+  const uint32_t rem = m - mul_u16(q, q);
   // Residual m 2^22 - root^2 = rem 2^22 - q frac 2^12 - frac^2, computed
   // modulo 2^32 (its true value is below 2^28 in magnitude).
-  const uint32_t rem22 = uint32_t(uint16_t(uint16_t(n.rem) << 6)) << 16;
-  int32_t res = to_signed(rem22 - (mul_u16(n.q, uint16_t(n.frac << 4)) << 8) - mul_u16(n.frac, n.frac));
-  uint32_t root = n.root;
+  const uint32_t rem22 = uint32_t(uint16_t(uint16_t(rem) << 6)) << 16;
+  int32_t res = to_signed(rem22 - (mul_u16(q, uint16_t(frac << 4)) << 8) - mul_u16(frac, frac));
   if (res < 0) {
     --root;
     res += int32_t(2 * root + 1);
@@ -183,6 +182,9 @@ inline uint32_t isqrt_q24_floor(uint32_t m) {
   return 2 * root + (res > int32_t(root) ? 1 : 0);
 }
 
+//! floor(sqrt(m 2^24)) for m in [2^30, 2^32), exact.
+inline uint32_t isqrt_q24_floor(uint32_t m) { return isqrt_q24_floor_from(m, isqrt_q22_call(m)); }
+
 }  // namespace detail
 
 //! Square root, within 0.625 LSB (measured 0.52; 99.7 % of inputs correctly
@@ -193,7 +195,7 @@ inline Fixed sqrt(Fixed v) {
   const uint8_t s = detail::normalize_even(m);
   // root ~ sqrt(u 2^(22 + s)); sqrt(u 2^16) = root / 2^(3 + s/2), rounded.
   // The root's +-1 moves the result by at most 1/8 LSB.
-  const uint32_t root = detail::isqrt_q22(m);
+  const uint32_t root = detail::isqrt_q22_call(m);
   return Fixed::from_raw(int32_t(detail::shr_round(root, uint8_t(3 + s / 2))));
 }
 
@@ -229,14 +231,15 @@ inline Fixed hypot(Fixed a, Fixed b) {
   // t in [2^28, 2^31]: the result is sqrt(t) 2^16 / 2^s.
   const uint8_t e = detail::normalize_even(t);
   const uint8_t k = uint8_t(s + e / 2);
+  // One root for both cases: ~ sqrt(t) 2^(11 + e/2).
+  const uint32_t root22 = detail::isqrt_q22_call(t);
   uint32_t h;
   if (k >= 7) {
-    // root ~ sqrt(t) 2^(11 + e/2), result = root / 2^(k - 5): the root's
-    // +-1 costs at most 1/4 LSB.
-    h = detail::shr_round(detail::isqrt_q22(t), uint8_t(k - 5));
+    // result = root22 / 2^(k - 5): the root's +-1 costs at most 1/4 LSB.
+    h = detail::shr_round(root22, uint8_t(k - 5));
   } else {
     // Large results: the exact floor of sqrt(t) 2^(12 + e/2) = result 2^(k - 4).
-    const uint32_t root = detail::isqrt_q24_floor(t);
+    const uint32_t root = detail::isqrt_q24_floor_from(t, root22);
     h = k >= 5 ? detail::shr_round(root, uint8_t(k - 4))
         : k == 4 ? root
                  : ((2 * root + 1) << (3 - k));  // fewer fraction bits than the result: centre it

@@ -61,15 +61,19 @@ Mat3<S> rotation_rpy(S roll, S pitch, S yaw, RotationOrder order = RotationOrder
   const Mat3<S> x = rot_x(roll);
   const Mat3<S> y = rot_y(pitch);
   const Mat3<S> z = rot_z(yaw);
+  // The factors left to right; one product for all orders.
+  const Mat3<S>* a = &z;
+  const Mat3<S>* b = &y;
+  const Mat3<S>* c = &x;
   switch (order) {
-    case RotationOrder::kXYZ: return x * y * z;
-    case RotationOrder::kXZY: return x * z * y;
-    case RotationOrder::kYXZ: return y * x * z;
-    case RotationOrder::kYZX: return y * z * x;
-    case RotationOrder::kZXY: return z * x * y;
+    case RotationOrder::kXYZ: a = &x, b = &y, c = &z; break;
+    case RotationOrder::kXZY: a = &x, b = &z, c = &y; break;
+    case RotationOrder::kYXZ: a = &y, b = &x, c = &z; break;
+    case RotationOrder::kYZX: a = &y, b = &z, c = &x; break;
+    case RotationOrder::kZXY: a = &z, b = &x, c = &y; break;
     case RotationOrder::kZYX: break;
   }
-  return z * y * x;
+  return *a * *b * *c;
 }
 
 //! Strider's name of an order ("xyz" .. "zyx"), left to right as multiplied.
