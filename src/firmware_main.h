@@ -10,7 +10,8 @@
 // legs share a geometry, STRIDER_WALKER_SOLVERS (gait/walker.h): the model is
 // a compile-time constant here, only its leg type is compiled in, the
 // walking state has as many legs as the model and the walker as many leg
-// solvers as the model has leg geometries.
+// solvers as the model has leg geometries. STRIDER_FIRMWARE_FIXED 1 picks
+// fixed point as the scalar (below).
 #ifndef STRIDER_FIRMWARE_MAIN_H
 #define STRIDER_FIRMWARE_MAIN_H
 
@@ -49,8 +50,21 @@ static_assert(strider::kWalkerSolvers == strider::leg_solver_count(kModel), "STR
 static_assert(strider::servo_tick_slots_fit(kModel),
               "STRIDER_SERVO_TICK_SLOTS: the legs' joint count, for legs of one geometry");
 
-// Fixed point: a hexapod18 tick in float does not fit 20 ms with room to spare.
+// The scalar: fixed point where the model defines STRIDER_FIRMWARE_FIXED 1,
+// float otherwise. Fixed point is the faster tick (hexapod18: 1.75 ms
+// against 6.5 ms in float, docs/benchmarks.md) and the larger firmware: its
+// integer trig, square roots, tables and the IK's integer fast path take
+// 9-11 KB more flash than the soft-float routines, so that a quadruped's
+// firmware fits 64 KB only in float (docs/firmware.md, "The scalar"), and
+// its 8-12 joints leave the float tick far inside the 20 ms period.
+#ifndef STRIDER_FIRMWARE_FIXED
+#define STRIDER_FIRMWARE_FIXED 0
+#endif
+#if STRIDER_FIRMWARE_FIXED
 using Scalar = strider::Fixed;
+#else
+using Scalar = float;
+#endif
 
 // The walker's gait configuration at the model's defaults, built at compile
 // time and kept in flash with the model's strides alone (not the whole
