@@ -21,8 +21,14 @@ import tempfile
 
 MODELS = ["sprawl8", "mammal8", "dog12", "hexapod18", "spider12"]
 F_CPU = 16_000_000
-BUDGET = {"flash_bytes": 64 * 1024, "ram_static_bytes": 3 * 1024, "stack_peak_bytes": 1024}
-HEXAPOD_TICK_CYCLES = 28_000
+# Issue 5's budgets for every firmware, and the tick period: the longest
+# tick a firmware takes (command changes, step starts and the simulated I2C
+# frame included) must fit the 20 ms period with no overrun. The 28,000-cycle
+# target of hexapod18's control tick is a cycles-per-call figure of the
+# benchmark (avr_cycles' control_tick_hexapod18_fixed entry, its
+# target_cycles), not a bound on this longest tick.
+BUDGET = {"flash_bytes": 64 * 1024, "ram_static_bytes": 3 * 1024, "stack_peak_bytes": 1024,
+          "tick_cycles_max": 20_000 * F_CPU // 1_000_000, "overruns": 0}
 
 # Boot (the velocity-limit search takes up to ~3 s), stand up, then walk,
 # turn and strafe at full speed, asking for status at the end.
@@ -122,9 +128,6 @@ def main():
                 missed.append("%s %s %d > %d" % (model, key, g[key], limit))
         if g["unexpected_resets"]:
             missed.append("%s reset %d times" % (model, g["unexpected_resets"]))
-    hexa = figures.get("hexapod18")
-    if hexa and hexa["tick_cycles_max"] > HEXAPOD_TICK_CYCLES:
-        missed.append("hexapod18 tick %d > %d cycles" % (hexa["tick_cycles_max"], HEXAPOD_TICK_CYCLES))
     print("budgets: " + ("all met" if not missed else "MISSED: " + "; ".join(missed)))
     return 0
 
