@@ -110,10 +110,18 @@ SerialLink g_link;
 // constructor then stores through a pointer (2 bytes of code per byte it
 // sets) instead of to each member's address as a global constructor does
 // (4 bytes). Every access below is still to a fixed address.
-alignas(App) uint8_t g_app_bytes[sizeof(App)];
-App& g_app = reinterpret_cast<App&>(g_app_bytes);
+// A union, so that the bytes and the object alias by the language's rules;
+// its constructor only zeroes the bytes at compile time (.bss, no global
+// constructor).
+union AppStorage {
+  constexpr AppStorage() : bytes() {}
+  uint8_t bytes[sizeof(App)];
+  App app;
+};
+AppStorage g_app_storage;
+App& g_app = g_app_storage.app;
 __attribute__((noinline)) void make_app() {
-  new (g_app_bytes) App(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
+  new (&g_app_storage.app) App(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
 }
 uint32_t g_next_tick_us = 0;
 uint32_t g_led_ms = 0;

@@ -84,6 +84,12 @@ constexpr JointChannels<S, N> joint_channels(const RobotModel& m, walker_detail:
        servo_step_us(servo_parts_detail::travel_of(m.servo[2]).speed_deg_s)}};
 }
 static_assert(kMaxLegDof == 3, "joint_channels: a step per joint of a leg");
+// Whether a stage's kChannels is given: through a function, as a template
+// argument's own comparison with nullptr draws avr-gcc's -Waddress.
+template <typename T>
+constexpr bool given(const T* p) {
+  return p != nullptr;
+}
 }  // namespace servo_stage_detail
 //! Model m's channels for a stage of N joints (ServoStage's kChannels).
 template <typename S, uint8_t N>
@@ -97,6 +103,8 @@ constexpr JointChannels<S, N> joint_channels(const RobotModel& m) {
 //! model when needed (make_joint_channel()).
 template <typename S, uint8_t N = kMaxServoJoints, const JointChannels<S, N>* kChannels = nullptr>
 class ServoStage {
+  static constexpr bool kHasChannels = servo_stage_detail::given(kChannels);
+
  public:
   //! Channel map of `model` (readable: a copy of `source` if that is in
   //! flash); every output off. The stage reads `source` again later
@@ -107,7 +115,7 @@ class ServoStage {
     // legs of one geometry (the same limits: one range per slot); fit_legs()
     // configures leg 0 first.
     const bool slots_fit = servo_tick_slots_fit(model);
-    count_ = kChannels != nullptr ? flash_u8(&kChannels->count)
+    count_ = kHasChannels ? flash_u8(&kChannels->count)
              : model.joint_count() <= N && slots_fit ? channel_map_count(model) : uint8_t(0);
     model_ = source != nullptr ? source : &model;
     where_ = where;
@@ -231,7 +239,7 @@ class ServoStage {
   }
   template <typename Output>
   STRIDER_NOINLINE ServoStatus write_legs_slowly(const Walker<S>& walker, Output& out) {
-    return write_legs_slowly(walker, out, Given<kChannels != nullptr>());
+    return write_legs_slowly(walker, out, Given<kHasChannels>());
   }
   template <bool kOn>
   struct Given {};
@@ -252,7 +260,7 @@ class ServoStage {
 
   //! Joint k = leg dof + j's channel: from kChannels, or made from m.
   ServoChannel<S> channel_of(const RobotModel& m, uint8_t leg, uint8_t j, uint8_t k) const {
-    return channel_of(m, leg, j, k, Given<kChannels != nullptr>());
+    return channel_of(m, leg, j, k, Given<kHasChannels>());
   }
   ServoChannel<S> channel_of(const RobotModel& m, uint8_t leg, uint8_t j, uint8_t, Given<false>) const {
     return make_joint_channel<S>(m, leg, j);
@@ -270,7 +278,7 @@ class ServoStage {
   //! fast_ says whether the map holds every joint.
   STRIDER_NOINLINE void fit_legs(uint8_t n) {
     if (count_ == 0 || fitted_legs_ >= legs_) return;  // a model that does not fit; nothing to do
-    fit_legs(n, Given<kChannels != nullptr>());
+    fit_legs(n, Given<kHasChannels>());
   }
   void fit_legs(uint8_t n, Given<false>) {
     RobotModel m;
@@ -309,7 +317,7 @@ class ServoStage {
     }
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
-      const uint16_t t = timing_.pulse_ticks(step_us(j, Given<kChannels != nullptr>()));
+      const uint16_t t = timing_.pulse_ticks(step_us(j, Given<kHasChannels>()));
       step_[j] = t == 0 ? uint16_t(1) : t;
     }
   }
