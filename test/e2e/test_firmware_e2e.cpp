@@ -490,8 +490,9 @@ std::string param_name(const ::testing::TestParamInfo<std::string>& p) { return 
 
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareWalk,
                          ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
-// The link and EEPROM code is the same for every model: the smallest and the
-// largest firmware.
-INSTANTIATE_TEST_SUITE_P(Models, FirmwarePersistence, ::testing::Values("sprawl8", "hexapod18"), param_name);
+// Every model's firmware: the link and EEPROM code is shared, but each build
+// has its own scalar (float or fixed point), layout and trims.
+INSTANTIATE_TEST_SUITE_P(Models, FirmwarePersistence,
+                         ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
 
 }  // namespace
