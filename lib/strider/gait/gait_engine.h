@@ -208,7 +208,7 @@ class GaitEngine {
   static constexpr double edge_share() { return kEdgeShare; }
   //! The gait as walked: gait() relabelled for the direction of travel
   //! (rebuilt on each call: the engine keeps the offsets only as phases).
-  GaitTable table() const { return relabel_ ? gait_table::relabeled(base_, quarter_) : base_; }
+  GaitTable table() const { return STRIDER_GAIT_RELABEL && relabel_ ? gait_table::relabeled(base_, quarter_) : base_; }
   //! The gait as given to configure() or set_gait() (table() may be relabelled).
   const GaitTable& gait() const { return base_; }
   const GaitConfig<S>& config() const { return cfg_; }

@@ -83,7 +83,7 @@ template <typename S>
 void GaitEngine<S>::set_gait(const GaitTable& gait) {
   const S old_duty = duty_;
   base_ = gait;
-  load_table(relabel_ ? gait_table::relabeled(gait, quarter_) : gait);
+  load_table(STRIDER_GAIT_RELABEL && relabel_ ? gait_table::relabeled(gait, quarter_) : gait);
   // Keep each stance's travel (stride per cycle x duty): with a longer
   // duty the body slows at once, with a shorter one the step rate drops;
   // either way nothing moves faster, then the ramp goes to the new plan.
@@ -160,7 +160,7 @@ void GaitEngine<S>::replan() {
 
 template <typename S>
 void GaitEngine<S>::start_walking() {
-  relabel_ = base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
+  relabel_ = STRIDER_GAIT_RELABEL && base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
   quarter_ = 0;
   if (relabel_) {
     // The quadrant of the direction of travel (seed 000 section 3.3).
