@@ -228,7 +228,7 @@ class GaitEngine {
   static Phase16 table_phase(float offset, float);
   static Phase16 table_phase(float offset, Fixed);
 
-  S budget() const { return base_.shift_body ? cfg_.shift_budget_mm : S(0); }
+  S budget() const { return STRIDER_BODY_SHIFT && base_.shift_body ? cfg_.shift_budget_mm : S(0); }
 
   //! A command as a stride per cycle (so that a foot's travel over a stance
   //! depends on the phase only, not on how the step rate changes meanwhile)

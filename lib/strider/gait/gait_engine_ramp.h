@@ -111,7 +111,7 @@ void GaitEngine<S>::load_table(const GaitTable& t) {
   // Start just before the first lift-off, or at the four-foot window
   // before it when the body must shift first.
   start_phase_ =
-      t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
+      STRIDER_BODY_SHIFT && t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
 }
 
 //! The table's duty in the engine's units: float through double (the host),
@@ -144,7 +144,7 @@ Phase16 GaitEngine<S>::table_phase(float offset, Fixed) {
 //! no faster than the acceleration limits at the faster of the two rates.
 template <typename S>
 void GaitEngine<S>::replan() {
-  to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), base_.shift_body);
+  to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), STRIDER_BODY_SHIFT && base_.shift_body);
   const S inv = S(1) / to_.step_hz;
   to_s_ = Stride{to_.vx_mm_s * inv, to_.vy_mm_s * inv, to_.wz_rad_s * inv, to_.step_hz};
   from_s_ = now_s_;
