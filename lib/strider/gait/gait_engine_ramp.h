@@ -71,12 +71,15 @@ void GaitEngine<S>::step_pose(S dt) {
   // Every offset moves by at most its rate; when all were at the goal
   // already (none moved), the pose is there.
   const S dp = cfg_.pose_speed_mm_s * dt, da = cfg_.pose_rate_rad_s * dt;
-  pose_at_goal_ = move_toward(pose_.translation_mm.x, goal_pose_.translation_mm.x, dp) &
-                  move_toward(pose_.translation_mm.y, goal_pose_.translation_mm.y, dp) &
-                  move_toward(pose_.translation_mm.z, goal_pose_.translation_mm.z, dp) &
-                  move_toward(pose_.roll_rad, goal_pose_.roll_rad, da) &
-                  move_toward(pose_.pitch_rad, goal_pose_.pitch_rad, da) &
-                  move_toward(pose_.yaw_rad, goal_pose_.yaw_rad, da);
+  // The six offsets in their order (x, y, z, roll, pitch, yaw) at their
+  // byte offsets in BodyOffsets (six scalars, no padding), one call site:
+  // the lengths at dp, the angles at da.
+  unsigned char* v = reinterpret_cast<unsigned char*>(&pose_);
+  const unsigned char* goal = reinterpret_cast<const unsigned char*>(&goal_pose_);
+  bool there = true;
+  for (uint8_t k = 0; k < 6; ++k, v += sizeof(S), goal += sizeof(S))
+    there &= move_toward(*reinterpret_cast<S*>(v), *reinterpret_cast<const S*>(goal), k < 3 ? dp : da);
+  pose_at_goal_ = there;
 }
 
 template <typename S>
