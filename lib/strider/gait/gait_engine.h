@@ -305,6 +305,9 @@ class GaitEngine {
   bool at_edge(uint8_t i) const { return beyond_edge(i, foot_[i]); }
   //! Where foot i lands (stance.h's touchdown_point with cached terms).
   Vec3<S> touchdown(uint8_t i);
+  //! touchdown()'s offset and rotation of a turning landing stride (out of
+  //! line: the straight path's registers and member addresses stay few).
+  STRIDER_NOINLINE void touchdown_turning();
   //! The mean stride per cycle over the next stance along the ramp.
   void update_landing();
 

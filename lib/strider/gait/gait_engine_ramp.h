@@ -224,21 +224,18 @@ Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
     td_sin_ = S(0);
     td_fresh_ = true;
   }
-  if (!td_fresh_) {
-    // touchdown_point() of a home at the origin and of (1, 0) give the
-    // offset and the rotation's cosine and sine.
-    const Vec3<S> o = touchdown_point(Vec3<S>(), land_s_.x, land_s_.y, land_s_.yaw, duty_);
-    const Vec3<S> e = touchdown_point(Vec3<S>(S(1), S(0), S(0)), land_s_.x, land_s_.y, land_s_.yaw, duty_);
-    td_dx_ = o.x;
-    td_dy_ = o.y;
-    td_cos_ = e.x - o.x;
-    td_sin_ = e.y - o.y;
-    td_fresh_ = true;
-  }
+  if (!td_fresh_) touchdown_turning();
   const Vec3<S>& h = cfg_.home[i];
   // Sums in place (scalar.h's add_inline: the same bits as operator+).
   if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
   return Vec3<S>(td_cos_ * h.x - td_sin_ * h.y + td_dx_, td_sin_ * h.x + td_cos_ * h.y + td_dy_, h.z);
+}
+
+template <typename S>
+void GaitEngine<S>::touchdown_turning() {
+  // touchdown_point()'s offset and rotation for every home (stance.h).
+  touchdown_frame(land_s_.x, land_s_.y, land_s_.yaw, duty_, td_dx_, td_dy_, td_cos_, td_sin_);
+  td_fresh_ = true;
 }
 
 //! The mean stride per cycle over the next stance (duty cycles) along the
