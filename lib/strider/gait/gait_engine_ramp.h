@@ -214,18 +214,21 @@ void GaitEngine<S>::step_command(S dt) {
 //! leg-independent terms computed once per change of the landing stride.
 template <typename S>
 Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
-  if (!td_fresh_ && land_s_.yaw == S(0)) {
-    // Not turning: touchdown_point() is home + the stride x duty / 2.
-    constexpr S half = scalar<S>(0.5);
-    const S k = duty_ * half;
-    td_dx_ = land_s_.x * k;
-    td_dy_ = land_s_.y * k;
-    td_cos_ = S(1);
-    td_sin_ = S(0);
-    td_fresh_ = true;
-  }
-  if (!td_fresh_) touchdown_turning();
   const Vec3<S>& h = cfg_.home[i];
+  if (!td_fresh_) {
+    if (land_s_.yaw == S(0)) {
+      // Not turning: touchdown_point() is home + the stride x duty / 2.
+      constexpr S half = scalar<S>(0.5);
+      const S k = duty_ * half;
+      td_dx_ = land_s_.x * k;
+      td_dy_ = land_s_.y * k;
+      td_cos_ = S(1);
+      td_sin_ = S(0);
+      td_fresh_ = true;
+      return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
+    }
+    touchdown_turning();
+  }
   // Sums in place (scalar.h's add_inline: the same bits as operator+).
   if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
   return Vec3<S>(td_cos_ * h.x - td_sin_ * h.y + td_dx_, td_sin_ * h.x + td_cos_ * h.y + td_dy_, h.z);
