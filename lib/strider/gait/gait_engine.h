@@ -315,6 +315,9 @@ class GaitEngine {
   //! step_walk()'s feet in the air, apart so that its locals do not widen
   //! step_walk()'s stack frame (on the AVR, offsets past 63 bytes cost extra).
   STRIDER_NOINLINE void step_swing(S dt);
+  //! step_swing()'s move of foot i's touch-down point toward touchdown(i) by at
+  //! most max_step (out of line: its point stays out of the loop's frame).
+  STRIDER_NOINLINE void settle_target(uint8_t i, S max_step);
   //! step_walk()'s clock, touch-downs and feet on the ground (moved by
   //! `step`), apart for the same reason; true when a foot landed.
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
