@@ -318,6 +318,9 @@ class GaitEngine {
   //! step_swing()'s move of foot i's touch-down point toward touchdown(i) by at
   //! most max_step (out of line: its point stays out of the loop's frame).
   STRIDER_NOINLINE void settle_target(uint8_t i, S max_step);
+  //! step_walk()'s test of a foot at its edge: would `step` take it farther
+  //! from home? (Out of line: its point stays out of step_walk()'s frame.)
+  STRIDER_NOINLINE bool step_takes_out(uint8_t i, const BodyStep<S>& step) const;
   //! step_walk()'s clock, touch-downs and feet on the ground (moved by
   //! `step`), apart for the same reason; true when a foot landed.
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);

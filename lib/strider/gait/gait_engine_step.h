@@ -25,10 +25,7 @@ void GaitEngine<S>::step_walk(S dt) {
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
   for (uint8_t i = 0; i < cfg_.leg_count && !held_; ++i) {
     if (!edge[i]) continue;
-    const Vec3<S> next = step.move_ground_point(foot_[i]);
-    const S before = abs(foot_[i].x - cfg_.home[i].x) + abs(foot_[i].y - cfg_.home[i].y);
-    const S after = abs(next.x - cfg_.home[i].x) + abs(next.y - cfg_.home[i].y);
-    held_ = after > before;
+    held_ = step_takes_out(i, step);
   }
   if (held_) step = BodyStep<S>::none();
   // Odometry: the step in the world frame; heading kept as cos/sin,
@@ -191,6 +188,14 @@ void GaitEngine<S>::step_swing(S dt) {
     foot_[i].y = add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u);
     foot_[i].z = add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift);
   }
+}
+
+template <typename S>
+bool GaitEngine<S>::step_takes_out(uint8_t i, const BodyStep<S>& step) const {
+  const Vec3<S> next = step.move_ground_point(foot_[i]);
+  const S before = abs(foot_[i].x - cfg_.home[i].x) + abs(foot_[i].y - cfg_.home[i].y);
+  const S after = abs(next.x - cfg_.home[i].x) + abs(next.y - cfg_.home[i].y);
+  return after > before;
 }
 
 template <typename S>
