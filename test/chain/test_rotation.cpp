@@ -85,6 +85,42 @@ TYPED_TEST(RotationTyped, ZeroAnglesGiveIdentityInEveryOrder) {
   }
 }
 
+// Fixed composes the rotation column by column without the zero and unit
+// terms: the bits must be those of the three elementary matrices multiplied
+// with Mat3's product, left to right as the order names them.
+TEST(RotationRpy, FixedIsTheMatrixProduct) {
+  using strider::Fixed;
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> ang(-3.3, 3.3);
+  const double edges[] = {0.0, 1e-5, -1e-5, 1.5707963, -1.5707963, 3.1415926, -3.1415926, 0.7853982, 2.5};
+  for (int i = 0; i < 4 * STRIDER_RANDOM_CASES + 729; ++i) {
+    Fixed a[3];
+    for (int k = 0; k < 3; ++k) {
+      int e = i;
+      for (int n = 0; n < k; ++n) e /= 9;
+      a[k] = i < 729 ? Fixed(edges[e % 9]) : Fixed(ang(rng));
+    }
+    const Mat3<Fixed> x = strider::rot_x(a[0]), y = strider::rot_y(a[1]), z = strider::rot_z(a[2]);
+    for (RotationOrder o : kAllOrders) {
+      const Mat3<Fixed>* f[3] = {&z, &y, &x};
+      switch (o) {
+        case RotationOrder::kXYZ: f[0] = &x, f[1] = &y, f[2] = &z; break;
+        case RotationOrder::kXZY: f[0] = &x, f[1] = &z, f[2] = &y; break;
+        case RotationOrder::kYXZ: f[0] = &y, f[1] = &x, f[2] = &z; break;
+        case RotationOrder::kYZX: f[0] = &y, f[1] = &z, f[2] = &x; break;
+        case RotationOrder::kZXY: f[0] = &z, f[1] = &x, f[2] = &y; break;
+        case RotationOrder::kZYX: break;
+      }
+      const Mat3<Fixed> want = *f[0] * *f[1] * *f[2];
+      const Mat3<Fixed> got = strider::rotation_rpy(a[0], a[1], a[2], o);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          ASSERT_EQ(got.m[r][c].raw(), want.m[r][c].raw())
+              << strider::to_string(o) << " case " << i << " entry " << r << c;
+    }
+  }
+}
+
 TEST(Rotation, DefaultOrderIsZyx) {
   const Mat3<float> a = strider::rotation_rpy(0.1f, -0.4f, 0.7f);
   const Mat3<float> b = strider::rotation_rpy(0.1f, -0.4f, 0.7f, RotationOrder::kZYX);

@@ -283,6 +283,45 @@ TYPED_TEST(GaitEngineTest, TransitionsAreBounded) {
   }
 }
 
+// Each body offset moves toward its goal by at most its rate per tick (the
+// three lengths at pose_speed_mm_s, the three angles at pose_rate_rad_s),
+// each exactly as move_toward() moves it, and the pose is at its goal only
+// after a tick that found every offset there.
+TYPED_TEST(GaitEngineTest, BodyOffsetsMoveAtTheirRates) {
+  using S = TypeParam;
+  Rig<S> rig(strider::kHexapod18, strider::kGaitTripod);
+  strider::BodyOffsets<S> goal = strider::BodyOffsets<S>::zero();
+  goal.translation_mm = strider::Vec3<S>(sc<S>(6), sc<S>(-4), sc<S>(-12));
+  goal.roll_rad = sc<S>(0.08);
+  goal.pitch_rad = sc<S>(-0.05);
+  goal.yaw_rad = sc<S>(0.11);
+  rig.engine().set_body_offsets(goal);
+  const S dt = sc<S>(kDt);
+  const S dp = rig.config.pose_speed_mm_s * dt, da = rig.config.pose_rate_rad_s * dt;
+  strider::BodyOffsets<S> want = strider::BodyOffsets<S>::zero();
+  S* w[6] = {&want.translation_mm.x, &want.translation_mm.y, &want.translation_mm.z,
+             &want.roll_rad, &want.pitch_rad, &want.yaw_rad};
+  const S g[6] = {goal.translation_mm.x, goal.translation_mm.y, goal.translation_mm.z,
+                  goal.roll_rad, goal.pitch_rad, goal.yaw_rad};
+  bool reached = false;
+  for (int k = 0; k < 500 && !reached; ++k) {
+    bool there = true;
+    for (int j = 0; j < 6; ++j) there &= strider::move_toward(*w[j], g[j], j < 3 ? dp : da);
+    rig.tick();
+    const strider::BodyPose<S> bp = rig.engine().body_pose();
+    ASSERT_EQ(bp.translation_mm.x, want.translation_mm.x) << k;
+    ASSERT_EQ(bp.translation_mm.y, want.translation_mm.y) << k;
+    ASSERT_EQ(bp.translation_mm.z, want.translation_mm.z) << k;
+    ASSERT_EQ(bp.roll_rad, want.roll_rad) << k;
+    ASSERT_EQ(bp.pitch_rad, want.pitch_rad) << k;
+    ASSERT_EQ(bp.yaw_rad, want.yaw_rad) << k;
+    reached = there;
+  }
+  EXPECT_TRUE(reached);
+  EXPECT_EQ(rig.engine().body_pose().yaw_rad, goal.yaw_rad);
+  EXPECT_EQ(rig.engine().body_pose().translation_mm.z, goal.translation_mm.z);
+}
+
 TYPED_TEST(GaitEngineTest, StandUpAndSitDown) {
   using S = TypeParam;
   Rig<S> rig(strider::kHexapod18, strider::kGaitTripod);

@@ -419,6 +419,26 @@ TYPED_TEST(StanceTest, SmallAngleSeriesBound) {
   EXPECT_LT(worst, bound);
 }
 
+// Fixed's touchdown_frame() computes the offset and the rotation directly:
+// the bits must be those of the generic version's two touchdown_point()s.
+TEST(Stance, FixedTouchdownFrameIsTheTwoPoints) {
+  using strider::Fixed;
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> stride(-400.0, 400.0), turn(-1.6, 1.6), duty(0.05, 0.95);
+  for (int k = 0; k < 4 * STRIDER_RANDOM_CASES; ++k) {
+    const Fixed vx(k % 7 == 0 ? 0.0 : stride(rng)), vy(k % 5 == 0 ? 0.0 : stride(rng));
+    const Fixed wz(k % 11 == 0 ? 1e-4 : turn(rng)), ts(duty(rng));
+    const Vec3<Fixed> o = strider::touchdown_point(Vec3<Fixed>(), vx, vy, wz, ts);
+    const Vec3<Fixed> e = strider::touchdown_point(Vec3<Fixed>(Fixed(1), Fixed(0), Fixed(0)), vx, vy, wz, ts);
+    Fixed dx, dy, c, s;
+    strider::touchdown_frame(vx, vy, wz, ts, dx, dy, c, s);
+    ASSERT_EQ(dx.raw(), o.x.raw()) << k;
+    ASSERT_EQ(dy.raw(), o.y.raw()) << k;
+    ASSERT_EQ(c.raw(), (e.x - o.x).raw()) << k;
+    ASSERT_EQ(s.raw(), (e.y - o.y).raw()) << k;
+  }
+}
+
 TYPED_TEST(StanceTest, TouchdownCentresTheStance) {
   using S = TypeParam;
   const double tol = strider::ScalarTraits<S>::kIsFixed ? 0.02 : 1e-3;  // [mm]

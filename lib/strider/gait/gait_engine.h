@@ -62,6 +62,9 @@ struct BodyOffsets {
   S roll_rad, pitch_rad, yaw_rad;
   static BodyOffsets zero() { return BodyOffsets{Vec3<S>(), S(0), S(0), S(0)}; }
 };
+// GaitEngine::step_pose() walks the six offsets as an array.
+static_assert(sizeof(BodyOffsets<float>) == 6 * sizeof(float) && sizeof(BodyOffsets<Fixed>) == 6 * sizeof(Fixed),
+              "BodyOffsets: six scalars, no padding");
 
 template <typename S>
 class GaitEngine {
@@ -208,7 +211,7 @@ class GaitEngine {
   static constexpr double edge_share() { return kEdgeShare; }
   //! The gait as walked: gait() relabelled for the direction of travel
   //! (rebuilt on each call: the engine keeps the offsets only as phases).
-  GaitTable table() const { return relabel_ ? gait_table::relabeled(base_, quarter_) : base_; }
+  GaitTable table() const { return STRIDER_GAIT_RELABEL && relabel_ ? gait_table::relabeled(base_, quarter_) : base_; }
   //! The gait as given to configure() or set_gait() (table() may be relabelled).
   const GaitTable& gait() const { return base_; }
   const GaitConfig<S>& config() const { return cfg_; }
@@ -228,7 +231,7 @@ class GaitEngine {
   static Phase16 table_phase(float offset, float);
   static Phase16 table_phase(float offset, Fixed);
 
-  S budget() const { return base_.shift_body ? cfg_.shift_budget_mm : S(0); }
+  S budget() const { return STRIDER_BODY_SHIFT && base_.shift_body ? cfg_.shift_budget_mm : S(0); }
 
   //! A command as a stride per cycle (so that a foot's travel over a stance
   //! depends on the phase only, not on how the step rate changes meanwhile)
@@ -302,6 +305,9 @@ class GaitEngine {
   bool at_edge(uint8_t i) const { return beyond_edge(i, foot_[i]); }
   //! Where foot i lands (stance.h's touchdown_point with cached terms).
   Vec3<S> touchdown(uint8_t i);
+  //! touchdown()'s offset and rotation of a turning landing stride (out of
+  //! line: the straight path's registers and member addresses stay few).
+  STRIDER_NOINLINE void touchdown_turning();
   //! The mean stride per cycle over the next stance along the ramp.
   void update_landing();
 
@@ -309,6 +315,12 @@ class GaitEngine {
   //! step_walk()'s feet in the air, apart so that its locals do not widen
   //! step_walk()'s stack frame (on the AVR, offsets past 63 bytes cost extra).
   STRIDER_NOINLINE void step_swing(S dt);
+  //! step_swing()'s move of foot i's touch-down point toward touchdown(i) by at
+  //! most max_step (out of line: its point stays out of the loop's frame).
+  STRIDER_NOINLINE void settle_target(uint8_t i, S max_step);
+  //! step_walk()'s test of a foot at its edge: would `step` take it farther
+  //! from home? (Out of line: its point stays out of step_walk()'s frame.)
+  STRIDER_NOINLINE bool step_takes_out(uint8_t i, const BodyStep<S>& step) const;
   //! step_walk()'s clock, touch-downs and feet on the ground (moved by
   //! `step`), apart for the same reason; true when a foot landed.
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);

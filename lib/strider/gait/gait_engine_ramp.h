@@ -71,19 +71,22 @@ void GaitEngine<S>::step_pose(S dt) {
   // Every offset moves by at most its rate; when all were at the goal
   // already (none moved), the pose is there.
   const S dp = cfg_.pose_speed_mm_s * dt, da = cfg_.pose_rate_rad_s * dt;
-  pose_at_goal_ = move_toward(pose_.translation_mm.x, goal_pose_.translation_mm.x, dp) &
-                  move_toward(pose_.translation_mm.y, goal_pose_.translation_mm.y, dp) &
-                  move_toward(pose_.translation_mm.z, goal_pose_.translation_mm.z, dp) &
-                  move_toward(pose_.roll_rad, goal_pose_.roll_rad, da) &
-                  move_toward(pose_.pitch_rad, goal_pose_.pitch_rad, da) &
-                  move_toward(pose_.yaw_rad, goal_pose_.yaw_rad, da);
+  // The six offsets in their order (x, y, z, roll, pitch, yaw) at their
+  // byte offsets in BodyOffsets (six scalars, no padding), one call site:
+  // the lengths at dp, the angles at da.
+  unsigned char* v = reinterpret_cast<unsigned char*>(&pose_);
+  const unsigned char* goal = reinterpret_cast<const unsigned char*>(&goal_pose_);
+  bool there = true;
+  for (uint8_t k = 0; k < 6; ++k, v += sizeof(S), goal += sizeof(S))
+    there &= move_toward(*reinterpret_cast<S*>(v), *reinterpret_cast<const S*>(goal), k < 3 ? dp : da);
+  pose_at_goal_ = there;
 }
 
 template <typename S>
 void GaitEngine<S>::set_gait(const GaitTable& gait) {
   const S old_duty = duty_;
   base_ = gait;
-  load_table(relabel_ ? gait_table::relabeled(gait, quarter_) : gait);
+  load_table(STRIDER_GAIT_RELABEL && relabel_ ? gait_table::relabeled(gait, quarter_) : gait);
   // Keep each stance's travel (stride per cycle x duty): with a longer
   // duty the body slows at once, with a shorter one the step rate drops;
   // either way nothing moves faster, then the ramp goes to the new plan.
@@ -111,7 +114,7 @@ void GaitEngine<S>::load_table(const GaitTable& t) {
   // Start just before the first lift-off, or at the four-foot window
   // before it when the body must shift first.
   start_phase_ =
-      t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
+      STRIDER_BODY_SHIFT && t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
 }
 
 //! The table's duty in the engine's units: float through double (the host),
@@ -144,7 +147,7 @@ Phase16 GaitEngine<S>::table_phase(float offset, Fixed) {
 //! no faster than the acceleration limits at the faster of the two rates.
 template <typename S>
 void GaitEngine<S>::replan() {
-  to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), base_.shift_body);
+  to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), STRIDER_BODY_SHIFT && base_.shift_body);
   const S inv = S(1) / to_.step_hz;
   to_s_ = Stride{to_.vx_mm_s * inv, to_.vy_mm_s * inv, to_.wz_rad_s * inv, to_.step_hz};
   from_s_ = now_s_;
@@ -160,7 +163,7 @@ void GaitEngine<S>::replan() {
 
 template <typename S>
 void GaitEngine<S>::start_walking() {
-  relabel_ = base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
+  relabel_ = STRIDER_GAIT_RELABEL && base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
   quarter_ = 0;
   if (relabel_) {
     // The quadrant of the direction of travel (seed 000 section 3.3).
@@ -211,31 +214,31 @@ void GaitEngine<S>::step_command(S dt) {
 //! leg-independent terms computed once per change of the landing stride.
 template <typename S>
 Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
-  if (!td_fresh_ && land_s_.yaw == S(0)) {
-    // Not turning: touchdown_point() is home + the stride x duty / 2.
-    constexpr S half = scalar<S>(0.5);
-    const S k = duty_ * half;
-    td_dx_ = land_s_.x * k;
-    td_dy_ = land_s_.y * k;
-    td_cos_ = S(1);
-    td_sin_ = S(0);
-    td_fresh_ = true;
-  }
-  if (!td_fresh_) {
-    // touchdown_point() of a home at the origin and of (1, 0) give the
-    // offset and the rotation's cosine and sine.
-    const Vec3<S> o = touchdown_point(Vec3<S>(), land_s_.x, land_s_.y, land_s_.yaw, duty_);
-    const Vec3<S> e = touchdown_point(Vec3<S>(S(1), S(0), S(0)), land_s_.x, land_s_.y, land_s_.yaw, duty_);
-    td_dx_ = o.x;
-    td_dy_ = o.y;
-    td_cos_ = e.x - o.x;
-    td_sin_ = e.y - o.y;
-    td_fresh_ = true;
-  }
   const Vec3<S>& h = cfg_.home[i];
+  if (!td_fresh_) {
+    if (land_s_.yaw == S(0)) {
+      // Not turning: touchdown_point() is home + the stride x duty / 2.
+      constexpr S half = scalar<S>(0.5);
+      const S k = duty_ * half;
+      td_dx_ = land_s_.x * k;
+      td_dy_ = land_s_.y * k;
+      td_cos_ = S(1);
+      td_sin_ = S(0);
+      td_fresh_ = true;
+      return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
+    }
+    touchdown_turning();
+  }
   // Sums in place (scalar.h's add_inline: the same bits as operator+).
   if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
   return Vec3<S>(td_cos_ * h.x - td_sin_ * h.y + td_dx_, td_sin_ * h.x + td_cos_ * h.y + td_dy_, h.z);
+}
+
+template <typename S>
+void GaitEngine<S>::touchdown_turning() {
+  // touchdown_point()'s offset and rotation for every home (stance.h).
+  touchdown_frame(land_s_.x, land_s_.y, land_s_.yaw, duty_, td_dx_, td_dy_, td_cos_, td_sin_);
+  td_fresh_ = true;
 }
 
 //! The mean stride per cycle over the next stance (duty cycles) along the

@@ -25,10 +25,7 @@ void GaitEngine<S>::step_walk(S dt) {
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
   for (uint8_t i = 0; i < cfg_.leg_count && !held_; ++i) {
     if (!edge[i]) continue;
-    const Vec3<S> next = step.move_ground_point(foot_[i]);
-    const S before = abs(foot_[i].x - cfg_.home[i].x) + abs(foot_[i].y - cfg_.home[i].y);
-    const S after = abs(next.x - cfg_.home[i].x) + abs(next.y - cfg_.home[i].y);
-    held_ = after > before;
+    held_ = step_takes_out(i, step);
   }
   if (held_) step = BodyStep<S>::none();
   // Odometry: the step in the world frame; heading kept as cos/sin,
@@ -170,12 +167,7 @@ void GaitEngine<S>::step_swing(S dt) {
   bool sp_known = false, lift_known = false;  // lift_known: sp_lift = sp_apex * sp.w
   for (uint8_t i = 0; i < n; ++i) {
     if (contact_[i]) continue;
-    if (!settled_[i]) {
-      const Vec3<S> want = touchdown(i);
-      target_[i].x += clamp(want.x - target_[i].x, -max_step, max_step);
-      target_[i].y += clamp(want.y - target_[i].y, -max_step, max_step);
-      settled_[i] = target_[i].x == want.x && target_[i].y == want.y;
-    }
+    if (!settled_[i]) settle_target(i, max_step);
     if (!sp_known || swing_elapsed_[i] != sp_elapsed || leg_inv_swing_[i] != sp_inv) {
       sp_elapsed = swing_elapsed_[i];
       sp_inv = leg_inv_swing_[i];
@@ -196,6 +188,22 @@ void GaitEngine<S>::step_swing(S dt) {
     foot_[i].y = add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u);
     foot_[i].z = add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift);
   }
+}
+
+template <typename S>
+bool GaitEngine<S>::step_takes_out(uint8_t i, const BodyStep<S>& step) const {
+  const Vec3<S> next = step.move_ground_point(foot_[i]);
+  const S before = abs(foot_[i].x - cfg_.home[i].x) + abs(foot_[i].y - cfg_.home[i].y);
+  const S after = abs(next.x - cfg_.home[i].x) + abs(next.y - cfg_.home[i].y);
+  return after > before;
+}
+
+template <typename S>
+void GaitEngine<S>::settle_target(uint8_t i, S max_step) {
+  const Vec3<S> want = touchdown(i);
+  target_[i].x += clamp(want.x - target_[i].x, -max_step, max_step);
+  target_[i].y += clamp(want.y - target_[i].y, -max_step, max_step);
+  settled_[i] = target_[i].x == want.x && target_[i].y == want.y;
 }
 
 #if STRIDER_BODY_SHIFT

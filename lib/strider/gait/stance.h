@@ -110,6 +110,35 @@ Vec3<S> touchdown_point(const Vec3<S>& home, S vx, S vy, S wz, S stance_s) {
                  s * home.x + c * home.y + (a * vy + b * vx) * half, home.z);
 }
 
+//! touchdown_point() for every home at once: the offset (dx, dy) and the
+//! rotation (c, s) with touchdown_point(h) = (c h.x - s h.y + dx,
+//! s h.x + c h.y + dy, h.z), from the points of a home at the origin and at
+//! (1, 0) [mm].
+template <typename S>
+void touchdown_frame(S vx, S vy, S wz, S stance_s, S& dx, S& dy, S& c, S& s) {
+  const Vec3<S> o = touchdown_point(Vec3<S>(), vx, vy, wz, stance_s);
+  const Vec3<S> e = touchdown_point(Vec3<S>(S(1), S(0), S(0)), vx, vy, wz, stance_s);
+  dx = o.x;
+  dy = o.y;
+  c = e.x - o.x;
+  s = e.y - o.y;
+}
+//! Fixed: the same bits without the two points. Its products by 0 and 1
+//! and its sums with 0 are exact, and (c + dx) - dx is c while c + dx does
+//! not saturate (offsets below 32,000 mm), so the series' c and s are the
+//! rotation and the origin's point the offset.
+//! test/gait's Stance.FixedTouchdownFrameIsTheTwoPoints checks it bit for bit.
+inline void touchdown_frame(Fixed vx, Fixed vy, Fixed wz, Fixed stance_s, Fixed& dx, Fixed& dy, Fixed& c, Fixed& s) {
+  constexpr Fixed kHalf = scalar<Fixed>(0.5);
+  const Fixed half = stance_s * kHalf;
+  const Fixed alpha = wz * half;
+  Fixed a, b;
+  small_angle_cos_sin(alpha, c, s);
+  small_angle_arc(alpha, a, b);
+  dx = (a * vx - b * vy) * half;
+  dy = (a * vy + b * vx) * half;
+}
+
 }  // namespace strider
 
 #endif  // STRIDER_GAIT_STANCE_H

@@ -53,11 +53,23 @@ Mat3<S> rot_y(S pitch) { return rot_y_cs(cos(pitch), sin(pitch)); }
 template <typename S>
 Mat3<S> rot_z(S yaw) { return rot_z_cs(cos(yaw), sin(yaw)); }
 
-//! The rotation for roll, pitch, yaw [rad] composed in `order` (seed 001
-//! algorithm 2 with the six distinct orders). Entries stay within [-1, 1],
-//! so the product is safe in Fixed.
+namespace rotation_detail {
+
+//! The factors of an order, left to right, as axes (0 x, 1 y, 2 z) in two
+//! bits each, the leftmost lowest.
+constexpr uint8_t factors(RotationOrder order) {
+  return order == RotationOrder::kXYZ   ? uint8_t(0 | 1 << 2 | 2 << 4)
+         : order == RotationOrder::kXZY ? uint8_t(0 | 2 << 2 | 1 << 4)
+         : order == RotationOrder::kYXZ ? uint8_t(1 | 0 << 2 | 2 << 4)
+         : order == RotationOrder::kYZX ? uint8_t(1 | 2 << 2 | 0 << 4)
+         : order == RotationOrder::kZXY ? uint8_t(2 | 0 << 2 | 1 << 4)
+                                        : uint8_t(2 | 1 << 2 | 0 << 4);
+}
+
+//! The three elementary matrices and their product (float, double: the
+//! operators' own zero terms and their signs kept).
 template <typename S>
-Mat3<S> rotation_rpy(S roll, S pitch, S yaw, RotationOrder order = RotationOrder::kZYX) {
+Mat3<S> product(S roll, S pitch, S yaw, RotationOrder order) {
   const Mat3<S> x = rot_x(roll);
   const Mat3<S> y = rot_y(pitch);
   const Mat3<S> z = rot_z(yaw);
@@ -74,6 +86,46 @@ Mat3<S> rotation_rpy(S roll, S pitch, S yaw, RotationOrder order = RotationOrder
     case RotationOrder::kZYX: break;
   }
   return *a * *b * *c;
+}
+
+//! Fixed: the same product without the zero and unit terms, which are
+//! exact in Fixed (a product by 0 or 1 is exact, a sum with 0 too, and a
+//! sum of two terms does not depend on their order), so the bits are those
+//! of product(): from the identity, each factor turns two columns of the
+//! product so far in place (12 products a factor, not 27, and one matrix
+//! on the stack instead of five). test/chain's
+//! RotationRpy.FixedIsTheMatrixProduct checks it bit for bit.
+inline Mat3<Fixed> product(Fixed roll, Fixed pitch, Fixed yaw, RotationOrder order) {
+  const Fixed angle[3] = {roll, pitch, yaw};
+  uint8_t axes = factors(order);
+  Mat3<Fixed> m;
+  Fixed* e = &m.m[0][0];
+  for (uint8_t k = 0; k < 9; ++k) e[k] = Fixed::from_raw(k % 4 == 0 ? int32_t(1) << 16 : 0);
+  for (uint8_t f = 0; f < 3; ++f, axes = uint8_t(axes >> 2)) {
+    const uint8_t axis = axes & 3;
+    // The columns this factor turns: the axes after its own, cyclically.
+    const uint8_t p = axis == 2 ? 0 : uint8_t(axis + 1);
+    const uint8_t q = p == 2 ? 0 : uint8_t(p + 1);
+    const Fixed c = cos(angle[axis]), s = sin(angle[axis]), ns = -s;
+    Fixed* a = e + p;
+    Fixed* b = e + q;
+    for (uint8_t i = 0; i < 3; ++i, a += 3, b += 3) {
+      const Fixed mp = *a, mq = *b;
+      *a = mp * c + mq * s;
+      *b = mp * ns + mq * c;
+    }
+  }
+  return m;
+}
+
+}  // namespace rotation_detail
+
+//! The rotation for roll, pitch, yaw [rad] composed in `order` (seed 001
+//! algorithm 2 with the six distinct orders). Entries stay within [-1, 1],
+//! so the product is safe in Fixed.
+template <typename S>
+Mat3<S> rotation_rpy(S roll, S pitch, S yaw, RotationOrder order = RotationOrder::kZYX) {
+  return rotation_detail::product(roll, pitch, yaw, order);
 }
 
 //! Strider's name of an order ("xyz" .. "zyx"), left to right as multiplied.
