@@ -40,6 +40,8 @@ STRIDER_NOINLINE bool move_toward(S& v, S goal, S max_step) {
 template <typename S>
 class BodyShift {
  public:
+  BodyShift() = default;
+  explicit BodyShift(ZeroedStorage z) : x_(z), y_(z), from_x_(z), from_y_(z) {}  //!< zeroed_storage.h
   S x_mm() const { return x_; }
   S y_mm() const { return y_; }
 

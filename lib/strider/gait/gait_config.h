@@ -20,7 +20,16 @@ inline bool velocity_limits_known(const RobotModel& model, const GaitParams& par
 
 template <typename S>
 struct GaitConfig {
-  uint8_t leg_count = 0;
+  constexpr GaitConfig() : leg_count(0), shift_x_only(false), unit_shift(0) {}
+  //! In zeroed storage (zeroed_storage.h): only the non-zero defaults written.
+  explicit GaitConfig(ZeroedStorage z)
+      : home{STRIDER_PER_WALKER_LEG(z)}, step_height_mm(z), stance_depth_mm(z), foot_radius_mm(z), com_x_mm(z),
+        com_y_mm(z), margin_mm(z), shift_budget_mm(z), sit_drop_mm(z), accel_mm_s2(z), yaw_accel_rad_s2(z),
+        shift_speed_mm_s(z), target_speed_mm_s(z), pose_speed_mm_s(z), pose_rate_rad_s(z), home_tolerance_mm(z),
+        edge_mm{STRIDER_PER_WALKER_LEG(z)}, limits(z) {}
+
+  // leg_count, shift_x_only and unit_shift are zero, by the constructors.
+  uint8_t leg_count;
   Vec3<S> home[kWalkerLegs];       //!< standing feet, body frame [mm]
   SwingShape shape = SwingShape::kEllipse;
   S step_height_mm = S(0);      //!< swing apex [mm]
@@ -39,9 +48,9 @@ struct GaitConfig {
   S pose_speed_mm_s = S(0);     //!< fastest change of the body pose offset [mm/s]
   S pose_rate_rad_s = S(0);     //!< fastest change of the body rotation [rad/s]
   S home_tolerance_mm = S(0);   //!< a foot this close to home needs no final step [mm]
-  bool shift_x_only = false;    //!< planar legs: the body can only shift along x
+  bool shift_x_only;            //!< planar legs: the body can only shift along x
   uint8_t min_support = 2;      //!< never lift a foot if fewer would stay down
-  int8_t unit_shift = 0;        //!< working units of the support polygon (stability.h)
+  int8_t unit_shift;            //!< working units of the support polygon (stability.h)
   S edge_mm[kWalkerLegs] = {};     //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
   VelocityLimits<S> limits;
 };

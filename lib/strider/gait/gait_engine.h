@@ -66,6 +66,26 @@ struct BodyOffsets {
 template <typename S>
 class GaitEngine {
  public:
+  //! The robot stands with no configuration (configure() before use).
+  GaitEngine()
+      : base_(), offset_(), swing_len_(0), start_phase_(0), relabel_(false), quarter_(0), sit_requested_(false),
+        step_in_place_(false), contact_(), pending_(), leg_swing_len_(), swing_elapsed_(), stance_elapsed_(),
+        edge_r2_(), settled_(), vel_fresh_(false), land_fresh_(false), held_(false), in_window_(false),
+        window_start_(0), margin_fresh_(false), td_fresh_(false) {}
+  //! The same state in zeroed storage (zeroed_storage.h): only the members
+  //! whose default is not zero are written.
+  explicit GaitEngine(ZeroedStorage z)
+      : cfg_(z), cmd_vx_(z), cmd_vy_(z), cmd_wz_(z), to_{z, z, z, z, false}, from_s_{z, z, z, z},
+        to_s_{z, z, z, z}, now_s_{z, z, z, z}, land_s_{z, z, z, z}, vx_(z), vy_(z), wz_(z), clock_(z),
+        foot_{STRIDER_PER_WALKER_LEG(z)}, lift_{STRIDER_PER_WALKER_LEG(z)}, target_{STRIDER_PER_WALKER_LEG(z)},
+        apex_{STRIDER_PER_WALKER_LEG(z)}, leg_inv_swing_{STRIDER_PER_WALKER_LEG(z)}, support_(z),
+#if STRIDER_BODY_SHIFT
+        next_support_(z),
+#endif
+        edge_r2_{STRIDER_PER_WALKER_LEG(z)}, odo_dx_(z), odo_dy_(z), odo_wx_(z), odo_wy_(z), shift_(z), window_inv_(z), pose_{z, z, z, z},
+        goal_pose_{z, z, z, z}, margin_(z), step_cache_{z, {z, z, z, z, z}}, td_sin_(z), td_dx_(z), td_dy_(z),
+        odo_x_(z), odo_y_(z), odo_yaw_(z), odo_s_(z) {}
+
   //! Takes the configuration and a gait; the robot stands (or sits).
   void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false);
   //! The same with the configuration built in place (fill_gait_config()).
@@ -335,19 +355,21 @@ class GaitEngine {
   static constexpr uint8_t kNoGroup = 0xFF;
   static constexpr double kEdgeShare = 0.53;
 
+  // Members without a default here are set by the constructors (zero),
+  // which the zeroed-storage constructor leaves alone.
   GaitConfig<S> cfg_;
-  GaitTable base_{};   // as given; as walked: table()
-  Phase16 offset_[kWalkerLegs] = {};
-  uint32_t swing_len_ = 0;
+  GaitTable base_;   // as given; as walked: table()
+  Phase16 offset_[kWalkerLegs];
+  uint32_t swing_len_;
   S duty_ = scalar<S>(0.5), inv_swing_ = S(2), inv_stance_ = S(2);
-  Phase16 start_phase_ = 0;
-  bool relabel_ = false;
-  int8_t quarter_ = 0;
+  Phase16 start_phase_;
+  bool relabel_;
+  int8_t quarter_;
 
   GaitState state_ = GaitState::kStanding;
   S progress_ = S(1);  // 0 sitting .. 1 standing
-  bool sit_requested_ = false;
-  bool step_in_place_ = false;
+  bool sit_requested_;
+  bool step_in_place_;
 
   S cmd_vx_ = S(0), cmd_vy_ = S(0), cmd_wz_ = S(0);
   VelocityPlan<S> to_{};
@@ -357,45 +379,45 @@ class GaitEngine {
 
   PhaseClock clock_;
   Vec3<S> foot_[kWalkerLegs];
-  bool contact_[kWalkerLegs] = {};
-  bool pending_[kWalkerLegs] = {};
+  bool contact_[kWalkerLegs];
+  bool pending_[kWalkerLegs];
   Vec3<S> lift_[kWalkerLegs];
   Vec3<S> target_[kWalkerLegs];
   S apex_[kWalkerLegs];
   S leg_inv_swing_[kWalkerLegs];
-  uint32_t leg_swing_len_[kWalkerLegs] = {};
-  uint32_t swing_elapsed_[kWalkerLegs] = {};
-  int32_t stance_elapsed_[kWalkerLegs] = {};  // phase since touch-down (may start negative)
+  uint32_t leg_swing_len_[kWalkerLegs];
+  uint32_t swing_elapsed_[kWalkerLegs];
+  int32_t stance_elapsed_[kWalkerLegs];  // phase since touch-down (may start negative)
 
   mutable SupportPolygon<S> support_;
   mutable bool support_dirty_ = true;
 #if STRIDER_BODY_SHIFT
   SupportPolygon<S> next_support_;
 #endif
-  S edge_r2_[kWalkerLegs] = {};  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
-  bool settled_[kWalkerLegs] = {};  // swinging foot's touch-down point already at touchdown(i)
-  bool vel_fresh_ = false;       // vx_, vy_, wz_ are now_s_ x hz_
-  bool land_fresh_ = false;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)
+  S edge_r2_[kWalkerLegs];  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
+  bool settled_[kWalkerLegs];  // swinging foot's touch-down point already at touchdown(i)
+  bool vel_fresh_;       // vx_, vy_, wz_ are now_s_ x hz_
+  bool land_fresh_;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)
   // Odometry step in the world frame, kept while the body does not turn.
   S odo_dx_ = S(0), odo_dy_ = S(0), odo_wx_ = S(0), odo_wy_ = S(0);
   BodyShift<S> shift_;
-  bool held_ = false;
-  bool in_window_ = false;           // every foot down, shifting for the next swing
+  bool held_;
+  bool in_window_;                   // every foot down, shifting for the next swing
   uint8_t window_group_ = kNoGroup;  // leg that leads the next swing group
-  Phase16 window_start_ = 0;
+  Phase16 window_start_;
   S window_inv_ = S(0);
 
   BodyOffsets<S> pose_{}, goal_pose_{};
   bool pose_at_goal_ = true;  // pose_ == goal_pose_ known: step_pose() has nothing to do
   mutable S margin_ = S(0);
-  mutable bool margin_fresh_ = false;
+  mutable bool margin_fresh_;
   // Per-tick work that only changes with the command: the body step and the
   // rotation and offset of every touch-down point.
   struct StepCache {
     S dt;  // the tick the step is for; 0 (no tick has it): vx_, vy_ or wz_ changed since
     BodyStep<S> step;
   } step_cache_{};
-  bool td_fresh_ = false;
+  bool td_fresh_;
   S td_cos_ = S(1), td_sin_ = S(0), td_dx_ = S(0), td_dy_ = S(0);
   S odo_x_ = S(0), odo_y_ = S(0), odo_yaw_ = S(0), odo_c_ = S(1), odo_s_ = S(0);
 };

@@ -80,7 +80,18 @@ template <typename S>
 struct VelocityLimits {
   static constexpr uint8_t kDirections = 16;  //!< direction k at k * 22.5 deg from forward
 
-  uint8_t leg_count = 0;
+  constexpr VelocityLimits()
+      : leg_count(0)
+#if !STRIDER_VELOCITY_SEARCH
+        , flash_codes(nullptr)
+#endif
+  {
+  }
+  //! In zeroed storage (zeroed_storage.h): only the non-zero defaults written.
+  explicit VelocityLimits(ZeroedStorage z)
+      : preferred_stride_mm(z), lift_ms(z), swing_ms_per_mm(z), stance_ms_per_mm(z) {}
+
+  uint8_t leg_count;  // zero, by the constructors
   //! False for planar legs (seed 003): they cannot step sideways, so a
   //! sideways command is dropped (and reported as limited); turning stays,
   //! its sideways part reported by the walker as clamped.
@@ -93,7 +104,7 @@ struct VelocityLimits {
 #else
   //! The stored table's codes of this robot, [kMaxLegs][kDirections] in
   //! flash (nullptr: no stride at all).
-  const uint16_t* flash_codes = nullptr;
+  const uint16_t* flash_codes;  // nullptr, by the constructors
   uint16_t code(uint8_t leg, uint8_t k) const {
     return flash_codes == nullptr ? uint16_t(0) : flash_u16(flash_codes, uint16_t(leg * kDirections + k));
   }

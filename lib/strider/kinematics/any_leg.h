@@ -25,7 +25,9 @@ class AnyLeg {
   using Joints = JointVector<S, kMaxDof>;
 
   //! A zero-length sprawl leg at the body centre; assign from from_model().
-  AnyLeg() : kind_(LegKind::kSprawl), side_(BodySide::kLeft), mount_(LegMount<S>::make(Vec3<S>(), S(0))) {}
+  // The mount LegMount::make(Vec3(), 0) gives, as a constant (cos 0 = 1 and
+  // sin 0 = 0 in both scalars): no trig call.
+  AnyLeg() : kind_(LegKind::kSprawl), side_(BodySide::kLeft), mount_{Vec3<S>(), S(0), S(1), S(0)} {}
 
   //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S).
   //! Returns false and leaves `out` alone when index >= model.leg_count or

@@ -11,6 +11,7 @@ struct Vec3 {
   S x, y, z;
 
   constexpr Vec3() : x(), y(), z() {}
+  Vec3(ZeroedStorage t) : x(t), y(t), z(t) {}  //!< zeroed_storage.h
   constexpr Vec3(S x_, S y_, S z_) : x(x_), y(y_), z(z_) {}
 
   //! Converts between scalars (float <-> Fixed) through double.
