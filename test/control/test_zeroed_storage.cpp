@@ -3,9 +3,9 @@
 // float and Fixed, the object they build equals, byte for byte, the one the
 // default constructor builds in zeroed storage; so do the parts that have
 // such a constructor. Both apps then start, take the same commands and
-// ticks and give the same lines and servo writes. Built twice: with the
-// host's six walker legs and with STRIDER_WALKER_LEGS 4 (a quadruped
-// firmware's layout, four-legged models only).
+// ticks and give the same lines and servo writes. Built three times: with
+// the host's six walker legs, with six on one leg solver (hexapod18's
+// firmware layout) and with four on two (dog12's; four-legged models only).
 #include <gtest/gtest.h>
 
 #include <cstring>

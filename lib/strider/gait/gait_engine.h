@@ -69,7 +69,8 @@ class GaitEngine {
   //! The robot stands with no configuration (configure() before use).
   GaitEngine()
       : base_(), offset_(), swing_len_(0), start_phase_(0), relabel_(false), quarter_(0), sit_requested_(false),
-        step_in_place_(false), contact_(), pending_(), leg_swing_len_(), swing_elapsed_(), stance_elapsed_(),
+        step_in_place_(false), foot_(), contact_(), pending_(), lift_(), target_(), apex_(), leg_inv_swing_(),
+        leg_swing_len_(), swing_elapsed_(), stance_elapsed_(),
         edge_r2_(), settled_(), vel_fresh_(false), land_fresh_(false), held_(false), in_window_(false),
         window_start_(0), margin_fresh_(false), td_fresh_(false) {}
   //! The same state in zeroed storage (zeroed_storage.h): only the members
@@ -77,12 +78,11 @@ class GaitEngine {
   explicit GaitEngine(ZeroedStorage z)
       : cfg_(z), cmd_vx_(z), cmd_vy_(z), cmd_wz_(z), to_{z, z, z, z, false}, from_s_{z, z, z, z},
         to_s_{z, z, z, z}, now_s_{z, z, z, z}, land_s_{z, z, z, z}, vx_(z), vy_(z), wz_(z), clock_(z),
-        foot_{STRIDER_PER_WALKER_LEG(z)}, lift_{STRIDER_PER_WALKER_LEG(z)}, target_{STRIDER_PER_WALKER_LEG(z)},
-        apex_{STRIDER_PER_WALKER_LEG(z)}, leg_inv_swing_{STRIDER_PER_WALKER_LEG(z)}, support_(z),
+        support_(z),
 #if STRIDER_BODY_SHIFT
         next_support_(z),
 #endif
-        edge_r2_{STRIDER_PER_WALKER_LEG(z)}, odo_dx_(z), odo_dy_(z), odo_wx_(z), odo_wy_(z), shift_(z), window_inv_(z), pose_{z, z, z, z},
+        odo_dx_(z), odo_dy_(z), odo_wx_(z), odo_wy_(z), shift_(z), window_inv_(z), pose_{z, z, z, z},
         goal_pose_{z, z, z, z}, margin_(z), step_cache_{z, {z, z, z, z, z}}, td_sin_(z), td_dx_(z), td_dy_(z),
         odo_x_(z), odo_y_(z), odo_yaw_(z), odo_s_(z) {}
 
@@ -378,13 +378,26 @@ class GaitEngine {
   S vx_ = S(0), vy_ = S(0), wz_ = S(0), hz_ = S(1);
 
   PhaseClock clock_;
-  Vec3<S> foot_[kWalkerLegs];
+  // The scalar arrays in anonymous unions: the zeroed-storage constructor
+  // need not build them element by element (Fixed's default constructor
+  // stores its zero); the default constructor value-initialises them.
+  union {
+    Vec3<S> foot_[kWalkerLegs];
+  };
   bool contact_[kWalkerLegs];
   bool pending_[kWalkerLegs];
-  Vec3<S> lift_[kWalkerLegs];
-  Vec3<S> target_[kWalkerLegs];
-  S apex_[kWalkerLegs];
-  S leg_inv_swing_[kWalkerLegs];
+  union {
+    Vec3<S> lift_[kWalkerLegs];
+  };
+  union {
+    Vec3<S> target_[kWalkerLegs];
+  };
+  union {
+    S apex_[kWalkerLegs];
+  };
+  union {
+    S leg_inv_swing_[kWalkerLegs];
+  };
   uint32_t leg_swing_len_[kWalkerLegs];
   uint32_t swing_elapsed_[kWalkerLegs];
   int32_t stance_elapsed_[kWalkerLegs];  // phase since touch-down (may start negative)
@@ -394,7 +407,9 @@ class GaitEngine {
 #if STRIDER_BODY_SHIFT
   SupportPolygon<S> next_support_;
 #endif
-  S edge_r2_[kWalkerLegs];  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
+  union {
+    S edge_r2_[kWalkerLegs];  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
+  };
   bool settled_[kWalkerLegs];  // swinging foot's touch-down point already at touchdown(i)
   bool vel_fresh_;       // vx_, vy_, wz_ are now_s_ x hz_
   bool land_fresh_;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)

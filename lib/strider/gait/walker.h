@@ -61,7 +61,7 @@ class Walker {
  public:
   Walker() : model_(nullptr), dof_(0), turn_(), proj_() {}
   //! In zeroed storage (zeroed_storage.h): only the non-zero defaults written.
-  explicit Walker(ZeroedStorage z) : proj_{LegKind(), z, z, int8_t()}, engine_(z) {}
+  explicit Walker(ZeroedStorage z) : Walker(z, SharedLegs<(kWalkerSolvers < kWalkerLegs)>()) {}
 
   //! Builds the legs, the configuration (velocity limits: a few thousand IK
   //! calls) and the engine. Returns false for a gait of another leg count,
@@ -366,6 +366,15 @@ class Walker {
     dof_ = flash_u8(&flash_legs->dof);
     return true;
   }
+
+  // The tag's constructors: legs of one geometry per solver built with the
+  // tag; an AnyLeg per leg by their default constructors (a loop: shorter
+  // than each leg built with the tag).
+  template <bool kShared>
+  struct SharedLegs {};
+  Walker(ZeroedStorage z, SharedLegs<true>)
+      : legs_(walker_detail::LegSolvers<S>::zeroed(z)), proj_{LegKind(), z, z, int8_t()}, engine_(z) {}
+  Walker(ZeroedStorage z, SharedLegs<false>) : proj_{LegKind(), z, z, int8_t()}, engine_(z) {}
 
   // Which model the legs were built from: compared by configure(), never
   // read (the model may have been a copy that is gone, robot_app.h).

@@ -14,7 +14,7 @@
 //! A float member named with the tag (`x_(z)`) is stored as 0 (the
 //! conversion below): one constructor serves both scalars; members without
 //! a default of their own that the tag constructor leaves out (integers,
-//! flags, unions of arrays) cost nothing in either.
+//! flags, arrays in anonymous unions, a Vec3) cost nothing in either.
 //!
 //! gcc 6 and later take an object's storage as indeterminate when its
 //! constructor starts (-flifetime-dse=2): code built with such a constructor
@@ -30,6 +30,13 @@ struct ZeroedStorage {
   constexpr operator float() const { return 0.0f; }
 };
 constexpr ZeroedStorage kZeroedStorage{};
+
+class Fixed;
+//! Which scalar a class template's tag constructor is for (an overload
+//! tag): Vec3 names its Fixed members with the tag and leaves float ones
+//! out, so that neither stores.
+template <typename S>
+struct ZeroedFor {};
 
 }  // namespace strider
 
