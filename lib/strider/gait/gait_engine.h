@@ -69,22 +69,15 @@ class GaitEngine {
   //! The robot stands with no configuration (configure() before use).
   GaitEngine()
       : base_(), offset_(), swing_len_(0), start_phase_(0), relabel_(false), quarter_(0), sit_requested_(false),
-        step_in_place_(false), foot_(), contact_(), pending_(), lift_(), target_(), apex_(), leg_inv_swing_(),
-        leg_swing_len_(), swing_elapsed_(), stance_elapsed_(),
-        edge_r2_(), settled_(), vel_fresh_(false), land_fresh_(false), held_(false), in_window_(false),
-        window_start_(0), margin_fresh_(false), td_fresh_(false) {}
+        step_in_place_(false), cmd_vx_(), cmd_vy_(), cmd_wz_(), to_(), from_s_(), to_s_(), now_s_(), land_s_(),
+        vx_(), vy_(), wz_(), foot_(), contact_(), pending_(), lift_(), target_(), apex_(), leg_inv_swing_(),
+        leg_swing_len_(), swing_elapsed_(), stance_elapsed_(), edge_r2_(), settled_(), vel_fresh_(false),
+        land_fresh_(false), odo_dx_(), odo_dy_(), odo_wx_(), odo_wy_(), held_(false), in_window_(false),
+        window_start_(0), window_inv_(), pose_(), goal_pose_(), margin_(), margin_fresh_(false), step_cache_(),
+        td_fresh_(false), td_sin_(), td_dx_(), td_dy_(), odo_x_(), odo_y_(), odo_yaw_(), odo_s_() {}
   //! The same state in zeroed storage (zeroed_storage.h): only the members
   //! whose default is not zero are written.
-  explicit GaitEngine(ZeroedStorage z)
-      : cfg_(z), cmd_vx_(z), cmd_vy_(z), cmd_wz_(z), to_{z, z, z, z, false}, from_s_{z, z, z, z},
-        to_s_{z, z, z, z}, now_s_{z, z, z, z}, land_s_{z, z, z, z}, vx_(z), vy_(z), wz_(z), clock_(z),
-        support_(z),
-#if STRIDER_BODY_SHIFT
-        next_support_(z),
-#endif
-        odo_dx_(z), odo_dy_(z), odo_wx_(z), odo_wy_(z), shift_(z), window_inv_(z), pose_{z, z, z, z},
-        goal_pose_{z, z, z, z}, margin_(z), step_cache_{z, {z, z, z, z, z}}, td_sin_(z), td_dx_(z), td_dy_(z),
-        odo_x_(z), odo_y_(z), odo_yaw_(z), odo_s_(z) {}
+  explicit GaitEngine(ZeroedStorage z) : GaitEngine(z, ZeroedFor<S>()) {}
 
   //! Takes the configuration and a gait; the robot stands (or sits).
   void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false);
@@ -355,6 +348,25 @@ class GaitEngine {
   static constexpr uint8_t kNoGroup = 0xFF;
   static constexpr double kEdgeShare = 0.53;
 
+  // The zeroed-storage constructor's two forms: Fixed's zeros named with
+  // the tag (its default constructor would store them), float's left out.
+  GaitEngine(ZeroedStorage z, ZeroedFor<Fixed>)
+      : cfg_(z), cmd_vx_(z), cmd_vy_(z), cmd_wz_(z), to_{z, z, z, z, false}, from_s_{z, z, z, z},
+        to_s_{z, z, z, z}, now_s_{z, z, z, z}, land_s_{z, z, z, z}, vx_(z), vy_(z), wz_(z), clock_(z),
+        support_(z),
+#if STRIDER_BODY_SHIFT
+        next_support_(z),
+#endif
+        odo_dx_(z), odo_dy_(z), odo_wx_(z), odo_wy_(z), shift_(z), window_inv_(z), pose_{z, z, z, z},
+        goal_pose_{z, z, z, z}, margin_(z), step_cache_{z, {z, z, z, z, z}}, td_sin_(z), td_dx_(z), td_dy_(z),
+        odo_x_(z), odo_y_(z), odo_yaw_(z), odo_s_(z) {}
+  GaitEngine(ZeroedStorage z, ZeroedFor<float>)
+      : cfg_(z), clock_(z), support_(z),
+#if STRIDER_BODY_SHIFT
+        next_support_(z),
+#endif
+        shift_(z) {}
+
   // Members without a default here are set by the constructors (zero),
   // which the zeroed-storage constructor leaves alone.
   GaitConfig<S> cfg_;
@@ -371,11 +383,11 @@ class GaitEngine {
   bool sit_requested_;
   bool step_in_place_;
 
-  S cmd_vx_ = S(0), cmd_vy_ = S(0), cmd_wz_ = S(0);
-  VelocityPlan<S> to_{};
-  Stride from_s_{}, to_s_{}, now_s_{}, land_s_{};
+  S cmd_vx_, cmd_vy_, cmd_wz_;
+  VelocityPlan<S> to_;
+  Stride from_s_, to_s_, now_s_, land_s_;
   S ramp_ = S(1), ramp_per_cycle_ = S(1), ramp_cycles_ = S(1);  // ramp_cycles_ = 1 / ramp_per_cycle_
-  S vx_ = S(0), vy_ = S(0), wz_ = S(0), hz_ = S(1);
+  S vx_, vy_, wz_, hz_ = S(1);
 
   PhaseClock clock_;
   // The scalar arrays in anonymous unions: the zeroed-storage constructor
@@ -414,27 +426,27 @@ class GaitEngine {
   bool vel_fresh_;       // vx_, vy_, wz_ are now_s_ x hz_
   bool land_fresh_;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)
   // Odometry step in the world frame, kept while the body does not turn.
-  S odo_dx_ = S(0), odo_dy_ = S(0), odo_wx_ = S(0), odo_wy_ = S(0);
+  S odo_dx_, odo_dy_, odo_wx_, odo_wy_;
   BodyShift<S> shift_;
   bool held_;
   bool in_window_;                   // every foot down, shifting for the next swing
   uint8_t window_group_ = kNoGroup;  // leg that leads the next swing group
   Phase16 window_start_;
-  S window_inv_ = S(0);
+  S window_inv_;
 
-  BodyOffsets<S> pose_{}, goal_pose_{};
+  BodyOffsets<S> pose_, goal_pose_;
   bool pose_at_goal_ = true;  // pose_ == goal_pose_ known: step_pose() has nothing to do
-  mutable S margin_ = S(0);
+  mutable S margin_;
   mutable bool margin_fresh_;
   // Per-tick work that only changes with the command: the body step and the
   // rotation and offset of every touch-down point.
   struct StepCache {
     S dt;  // the tick the step is for; 0 (no tick has it): vx_, vy_ or wz_ changed since
     BodyStep<S> step;
-  } step_cache_{};
+  } step_cache_;
   bool td_fresh_;
-  S td_cos_ = S(1), td_sin_ = S(0), td_dx_ = S(0), td_dy_ = S(0);
-  S odo_x_ = S(0), odo_y_ = S(0), odo_yaw_ = S(0), odo_c_ = S(1), odo_s_ = S(0);
+  S td_cos_ = S(1), td_sin_, td_dx_, td_dy_;
+  S odo_x_, odo_y_, odo_yaw_, odo_c_ = S(1), odo_s_;
 };
 
 }  // namespace strider
