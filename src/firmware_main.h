@@ -121,7 +121,10 @@ union AppStorage {
 AppStorage g_app_storage;
 App& g_app = g_app_storage.app;
 __attribute__((noinline)) void make_app() {
-  new (&g_app_storage.app) App(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
+  // g_app_storage is in .bss and nothing has written it yet: the constructor
+  // for zeroed storage (zeroed_storage.h) stores only the members whose
+  // default is not zero.
+  new (&g_app_storage.app) App(strider::kZeroedStorage, kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
 }
 uint32_t g_next_tick_us = 0;
 uint32_t g_led_ms = 0;

@@ -12,6 +12,7 @@
 
 #include <stdint.h>
 
+#include "../math/zeroed_storage.h"
 #include "hal_interfaces.h"
 #include "reply.h"
 #include "sonar_filter.h"
@@ -66,6 +67,10 @@ inline FlashText to_flash(AvoidState s) { return flash_name(kAvoidStateNames, 6,
 
 class Avoidance {
  public:
+  Avoidance() : since_ms_(0), extra_ms_(0), last_ms_(0), cleared_(0), state_(AvoidState::kPassThrough), switched_(false) {}
+  //! In zeroed storage (zeroed_storage.h): only the non-zero members written.
+  explicit Avoidance(ZeroedStorage) {}
+
   //! One control tick: the operator's command, the sonar, the time -> the
   //! command to walk. Seed 000 only avoids while walking forward.
   //! walked_vy: the sideways speed the body really walks [0.1 mm/s] (the
@@ -183,13 +188,14 @@ class Avoidance {
     return Twist{cmd.vx * pct / 100, cmd.vy, cmd.wz};
   }
 
-  uint32_t since_ms_ = 0;
-  uint32_t extra_ms_ = 0;
-  uint32_t last_ms_ = 0;  //!< clearing: the previous tick
-  uint32_t cleared_ = 0;  //!< clearing: walked sideways since clear [1e-4 mm]
-  AvoidState state_ = AvoidState::kPassThrough;
+  // Zero (but side_), by the constructors.
+  uint32_t since_ms_;
+  uint32_t extra_ms_;
+  uint32_t last_ms_;  //!< clearing: the previous tick
+  uint32_t cleared_;  //!< clearing: walked sideways since clear [1e-4 mm]
+  AvoidState state_;
   int8_t side_ = 1;
-  bool switched_ = false;
+  bool switched_;
 };
 
 }  // namespace strider

@@ -17,6 +17,7 @@
 
 #include <stdint.h>
 
+#include "../math/zeroed_storage.h"
 #include "command.h"
 #include "command_line.h"
 
@@ -67,6 +68,9 @@ inline Command rc_command(uint8_t b) {
 
 class CommandParser {
  public:
+  CommandParser() : len_(0), last_rc_(0), after_cr_(false), state_(State::kIdle) {}
+  explicit CommandParser(ZeroedStorage) {}  //!< zeroed_storage.h: all zero
+
   //! Feeds one received byte. On kCommand or kError, *out is filled.
   ParseResult feed(uint8_t b, Command* out) {
     if (b == '\r' || b == '\n') return line_end(b, out);
@@ -173,10 +177,11 @@ class CommandParser {
   }
 
   char line_[kMaxLineBytes];
-  uint8_t len_ = 0;
-  uint8_t last_rc_ = 0;  // RC byte just applied: a line end right after it echoes it
-  bool after_cr_ = false;
-  State state_ = State::kIdle;
+  // Zero, by the constructors.
+  uint8_t len_;
+  uint8_t last_rc_;  // RC byte just applied: a line end right after it echoes it
+  bool after_cr_;
+  State state_;
 };
 
 }  // namespace strider

@@ -33,10 +33,15 @@ namespace controller_detail {
 //! with parsers of its own (on_parsed() only): no RAM for an unused line.
 template <bool kOwn>
 struct ParserSlot {
+  ParserSlot() = default;
+  explicit ParserSlot(ZeroedStorage z) : parser_(z) {}
   CommandParser parser_;
 };
 template <>
-struct ParserSlot<false> {};
+struct ParserSlot<false> {
+  ParserSlot() = default;
+  explicit ParserSlot(ZeroedStorage) {}
+};
 }  // namespace controller_detail
 
 //! kOwnParser false: only on_parsed() takes input (RobotApp, one parser per port).
@@ -44,7 +49,8 @@ template <typename Sink, typename Store, bool kOwnParser = true>
 class Controller : private controller_detail::ParserSlot<kOwnParser> {
  public:
   Controller(Sink& sink, Store& store, const Settings& loaded, SettingsStatus load_status)
-      : sink_(sink), store_(store), settings_(loaded), cal_(loaded), load_status_(load_status) {
+      : sink_(sink), store_(store), settings_(loaded), cal_(loaded), load_status_(load_status), cmd_{0, 0, 0},
+        out_{0, 0, 0}, mode_(RobotMode::kStanding), avoid_clear_mm_(0) {
     deadman_.set_timeout(settings_.deadman_ms);
     speed_pct_ = settings_.speed_pct;
     sink_.apply_settings(settings_);
@@ -52,6 +58,16 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   //! The same from the settings the store gave (settings_store.h).
   Controller(Sink& sink, Store& store, const LoadedSettings& loaded)
       : Controller(sink, store, loaded.settings, loaded.status) {}
+  //! The same in zeroed storage (zeroed_storage.h): only the non-zero
+  //! members written.
+  Controller(ZeroedStorage z, Sink& sink, Store& store, const LoadedSettings& loaded)
+      : controller_detail::ParserSlot<kOwnParser>(z), sink_(sink), store_(store), settings_(loaded.settings),
+        cal_(loaded.settings), load_status_(loaded.status), deadman_(z), avoid_(z), sonar_{SonarStatus::kNoData, kSonarFarMm},
+        speed_pct_(50) {
+    deadman_.set_timeout(settings_.deadman_ms);
+    speed_pct_ = settings_.speed_pct;
+    sink_.apply_settings(settings_);
+  }
 
   //! One received byte at now_ms. Returns true when *w holds a reply line
   //! (without line ending) to send.
@@ -280,10 +296,11 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   Deadman deadman_;
   Avoidance avoid_;
   SonarReading sonar_{SonarStatus::kNoData, kSonarFarMm};
-  Twist cmd_{0, 0, 0};
-  Twist out_{0, 0, 0};
-  RobotMode mode_ = RobotMode::kStanding;
-  uint16_t avoid_clear_mm_ = 0;
+  // Zero, by the constructors (but speed_pct_).
+  Twist cmd_;
+  Twist out_;
+  RobotMode mode_;
+  uint16_t avoid_clear_mm_;
   uint8_t speed_pct_ = 50;
 };
 

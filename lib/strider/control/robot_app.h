@@ -127,9 +127,31 @@ class RobotApp {
   RobotApp(const RobotModel& model, Output& out, Store& store, ModelMemory where = ModelMemory::kRam)
       : model_(model),
         model_in_flash_(where == ModelMemory::kFlash),
+        boards_(0),
         out_(out),
         sink_(*this),
-        controller_(sink_, store, LoadedSettings(store)) {}
+        controller_(sink_, store, LoadedSettings(store)),
+        last_byte_ms_(),
+        last_tick_us_(0),
+        tick_max_us_(0),
+        overruns_(0),
+        stack_probe_(nullptr),
+        ok_(false) {}
+  //! The same in zeroed storage (zeroed_storage.h: a firmware's global
+  //! array in .bss, built in place): only the members whose default is not
+  //! zero are written.
+  RobotApp(ZeroedStorage z, const RobotModel& model, Output& out, Store& store, ModelMemory where = ModelMemory::kRam)
+      : model_(model),
+        model_in_flash_(where == ModelMemory::kFlash),
+        out_(out),
+        motion_(z),
+        stage_(z),
+        sink_(*this),
+        controller_(z, sink_, store, LoadedSettings(store)),
+        parsers_{CommandParser(z), CommandParser(z)},
+        sonar_(z) {
+    static_assert(kLinkPorts == 2, "one parser per port in the list above");
+  }
 
   //! Power-up: walker (sitting), servo map, boot notices; the soft start
   //! begins with the first tick. False (and an `err` notice) when the model
@@ -363,20 +385,21 @@ class RobotApp {
   const RobotModel& model_;  // in RAM or flash (model_in_flash_): read through copy_model() only
   bool model_in_flash_;
   const char* name_ = "";    // the model's name (the string is in RAM either way)
-  uint8_t boards_ = 0;       // PCA9685 boards the model uses
+  uint8_t boards_;           // PCA9685 boards the model uses
   Output& out_;
   WalkerMotion<S> motion_;
   ServoStage<S, kJoints, kStoredChannels> stage_;
   Sink sink_;
   Controller<Sink, Store, false> controller_;  // input from parsers_
   CommandParser parsers_[kLinkPorts];
-  uint32_t last_byte_ms_[kLinkPorts] = {0, 0};
+  uint32_t last_byte_ms_[kLinkPorts];
   SonarFilter sonar_;
-  uint32_t last_tick_us_ = 0;
-  uint32_t tick_max_us_ = 0;
-  uint16_t overruns_ = 0;
-  uint16_t (*stack_probe_)() = nullptr;
-  bool ok_ = false;
+  // Zero, by the constructors (as boards_ and last_byte_ms_).
+  uint32_t last_tick_us_;
+  uint32_t tick_max_us_;
+  uint16_t overruns_;
+  uint16_t (*stack_probe_)();
+  bool ok_;
 };
 
 }  // namespace strider

@@ -106,6 +106,13 @@ class ServoStage {
   static constexpr bool kHasChannels = servo_stage_detail::given(kChannels);
 
  public:
+  ServoStage()
+      : fast_(false), unfit_(false), fitted_legs_(0), settings_(nullptr), model_(nullptr), where_(ModelMemory::kRam),
+        next_leg_ms_(0), count_(0), dof_(0), legs_(0), enabled_legs_(0), soft_start_(false),
+        status_(ServoStatus::kOk) {}
+  //! In zeroed storage (zeroed_storage.h): only the non-zero members written.
+  explicit ServoStage(ZeroedStorage z) : tick_map_(z) {}
+
   //! Channel map of `model` (readable: a copy of `source` if that is in
   //! flash); every output off. The stage reads `source` again later
   //! (nullptr: `model` itself), which must outlive it. False when the model
@@ -323,25 +330,26 @@ class ServoStage {
   }
 
   ServoTickMap<S, N, kServoTickSlots> tick_map_;  // joint k's slot is k % dof_ (configure())
-  bool fast_ = false;
-  bool unfit_ = false;       // fit_legs() met a joint the map cannot hold
-  uint8_t fitted_legs_ = 0;  // legs whose map constants fit the settings
+  // Members without a default here are zero, by the constructors.
+  bool fast_;
+  bool unfit_;           // fit_legs() met a joint the map cannot hold
+  uint8_t fitted_legs_;  // legs whose map constants fit the settings
   uint16_t ticks_[N];  // last written, kOff: off
   uint16_t step_[kMaxLegDof] = {1, 1, 1};
   ServoPart part_[kMaxLegDof] = {ServoPart::kSg90, ServoPart::kSg90, ServoPart::kSg90};  // of joint j
   Pca9685Timing timing_;
-  const Settings* settings_ = nullptr;  // set_settings()
-  const RobotModel* model_ = nullptr;   // configure(): the channels' source
-  ModelMemory where_ = ModelMemory::kRam;
-  uint32_t next_leg_ms_ = 0;
-  uint8_t count_ = 0;
-  uint8_t dof_ = 0;
-  uint8_t legs_ = 0;
-  uint8_t enabled_legs_ = 0;
-  bool soft_start_ = false;
+  const Settings* settings_;  // set_settings()
+  const RobotModel* model_;   // configure(): the channels' source
+  ModelMemory where_;
+  uint32_t next_leg_ms_;
+  uint8_t count_;
+  uint8_t dof_;
+  uint8_t legs_;
+  uint8_t enabled_legs_;
+  bool soft_start_;
   bool relax_pending_ = true;
   bool pwm_pending_ = true;
-  ServoStatus status_ = ServoStatus::kOk;
+  ServoStatus status_;
 };
 
 }  // namespace strider

@@ -89,8 +89,14 @@ namespace servo_ticks_detail {
 //! them per joint. kSlots > 0: joint i's range in slot i % kSlots, shared
 //! with every joint of that slot (a firmware whose legs have one geometry:
 //! a slot per joint of a leg), the rest per joint.
+//! The arrays are members of anonymous unions so that the constructor for
+//! zeroed storage (zeroed_storage.h) need not build them element by element
+//! (Fixed's default constructor stores its zero); the default constructor
+//! value-initialises them (zero).
 template <typename S, uint8_t N, uint8_t kSlots>
 struct TickJoints {
+  TickJoints() : own_(), range_() {}
+  explicit TickJoints(ZeroedStorage) {}
   const ServoTickOwn<S>& own(uint8_t i) const { return own_[i]; }
   ServoTickOwn<S>& own(uint8_t i) { return own_[i]; }
   const ServoTickRange<S>& range(uint8_t, uint8_t slot) const { return range_[slot]; }
@@ -100,17 +106,25 @@ struct TickJoints {
     if (i < kSlots) range_[i] = r;
   }
 
-  ServoTickOwn<S> own_[N];
-  ServoTickRange<S> range_[kSlots];
+  union {
+    ServoTickOwn<S> own_[N];
+  };
+  union {
+    ServoTickRange<S> range_[kSlots];
+  };
 };
 template <typename S, uint8_t N>
 struct TickJoints<S, N, 0> {
+  TickJoints() : joint_() {}
+  explicit TickJoints(ZeroedStorage) {}
   const ServoTickOwn<S>& own(uint8_t i) const { return joint_[i]; }
   ServoTickOwn<S>& own(uint8_t i) { return joint_[i]; }
   const ServoTickRange<S>& range(uint8_t i, uint8_t) const { return joint_[i]; }
   void set_range(uint8_t i, const ServoTickRange<S>& r) { static_cast<ServoTickRange<S>&>(joint_[i]) = r; }
 
-  ServoTickJoint<S> joint_[N];
+  union {
+    ServoTickJoint<S> joint_[N];
+  };
 };
 }  // namespace servo_ticks_detail
 
@@ -121,6 +135,10 @@ struct TickJoints<S, N, 0> {
 template <typename S, uint8_t N = kMaxServoTickJoints, uint8_t kSlots = 0>
 class ServoTickMap {
  public:
+  ServoTickMap() : count_(0) {}
+  //! In zeroed storage (zeroed_storage.h): count_ left at zero.
+  explicit ServoTickMap(ZeroedStorage z) : joints_(z) {}
+
   //! Folds count channels (trims settings.trim_decideg[first_trim + i]) and
   //! the PWM timing into per-joint constants. Call after configure of the
   //! timing and after every calibration change. kUnsupported: some channel
@@ -338,7 +356,7 @@ class ServoTickMap {
   }
 
   servo_ticks_detail::TickJoints<S, N, kSlots> joints_;
-  uint8_t count_ = 0;
+  uint8_t count_;  // zero, by the constructors
 };
 
 }  // namespace strider

@@ -13,6 +13,7 @@
 
 #include <stdint.h>
 
+#include "../math/zeroed_storage.h"
 #include "hal_interfaces.h"
 
 namespace strider {
@@ -42,6 +43,11 @@ constexpr uint32_t echo_to_mm(uint16_t width_us) { return (uint32_t(width_us) * 
 
 class SonarFilter {
  public:
+  SonarFilter()
+      : window_(), count_(0), next_(0), missing_(0), have_sample_(false), pinged_(false), last_sample_us_(0),
+        last_ping_us_(0) {}
+  explicit SonarFilter(ZeroedStorage) {}  //!< zeroed_storage.h: all zero
+
   //! When the next ping should be triggered (non-blocking driver): true at
   //! most once per kSonarPingPeriodUs.
   bool ping_due(uint32_t now_us) {
@@ -96,14 +102,15 @@ class SonarFilter {
     return v[count_ / 2];
   }
 
-  uint16_t window_[kSonarWindow] = {0, 0, 0, 0, 0};
-  uint8_t count_ = 0;
-  uint8_t next_ = 0;
-  uint8_t missing_ = 0;
-  bool have_sample_ = false;
-  bool pinged_ = false;
-  uint32_t last_sample_us_ = 0;
-  uint32_t last_ping_us_ = 0;
+  // Zero, by the constructors.
+  uint16_t window_[kSonarWindow];
+  uint8_t count_;
+  uint8_t next_;
+  uint8_t missing_;
+  bool have_sample_;
+  bool pinged_;
+  uint32_t last_sample_us_;
+  uint32_t last_ping_us_;
 };
 
 }  // namespace strider

@@ -40,6 +40,11 @@ STRIDER_NOINLINE bool move_toward(S& v, S goal, S max_step) {
 template <typename S>
 class BodyShift {
  public:
+  BodyShift() : x_(), y_(), from_x_(), from_y_() {}
+  //! In zeroed storage (zeroed_storage.h): Fixed's zeros named with the tag, float's left out.
+  explicit BodyShift(ZeroedStorage z) : BodyShift(z, ZeroedFor<S>()) {}
+  BodyShift(ZeroedStorage z, ZeroedFor<Fixed>) : x_(z), y_(z), from_x_(z), from_y_(z) {}
+  BodyShift(ZeroedStorage, ZeroedFor<float>) {}
   S x_mm() const { return x_; }
   S y_mm() const { return y_; }
 
@@ -83,8 +88,8 @@ class BodyShift {
   }
 
  private:
-  S x_ = S(0), y_ = S(0);
-  S from_x_ = S(0), from_y_ = S(0);
+  S x_, y_;  // zero, by the constructors
+  S from_x_, from_y_;
 };
 
 }  // namespace strider

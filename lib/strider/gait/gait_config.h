@@ -20,28 +20,43 @@ inline bool velocity_limits_known(const RobotModel& model, const GaitParams& par
 
 template <typename S>
 struct GaitConfig {
-  uint8_t leg_count = 0;
+  constexpr GaitConfig()
+      : leg_count(0), step_height_mm(), stance_depth_mm(), foot_radius_mm(), com_x_mm(), com_y_mm(), margin_mm(),
+        shift_budget_mm(), sit_drop_mm(), accel_mm_s2(), yaw_accel_rad_s2(), shift_speed_mm_s(), target_speed_mm_s(),
+        pose_speed_mm_s(), pose_rate_rad_s(), home_tolerance_mm(), shift_x_only(false), unit_shift(0) {}
+  //! In zeroed storage (zeroed_storage.h): only the non-zero defaults
+  //! written (Fixed's zeros named with the tag, float's left out).
+  explicit GaitConfig(ZeroedStorage z) : GaitConfig(z, ZeroedFor<S>()) {}
+  GaitConfig(ZeroedStorage z, ZeroedFor<float>) : home{STRIDER_PER_WALKER_LEG(z)}, edge_mm{STRIDER_PER_WALKER_LEG(z)}, limits(z) {}
+  GaitConfig(ZeroedStorage z, ZeroedFor<Fixed>)
+      : home{STRIDER_PER_WALKER_LEG(z)}, step_height_mm(z), stance_depth_mm(z), foot_radius_mm(z), com_x_mm(z),
+        com_y_mm(z), margin_mm(z), shift_budget_mm(z), sit_drop_mm(z), accel_mm_s2(z), yaw_accel_rad_s2(z),
+        shift_speed_mm_s(z), target_speed_mm_s(z), pose_speed_mm_s(z), pose_rate_rad_s(z), home_tolerance_mm(z),
+        edge_mm{STRIDER_PER_WALKER_LEG(z)}, limits(z) {}
+
+  // leg_count, shift_x_only and unit_shift are zero, by the constructors.
+  uint8_t leg_count;
   Vec3<S> home[kWalkerLegs];       //!< standing feet, body frame [mm]
   SwingShape shape = SwingShape::kEllipse;
-  S step_height_mm = S(0);      //!< swing apex [mm]
-  S stance_depth_mm = S(0);     //!< [mm]
-  S foot_radius_mm = S(0);      //!< foot pads [mm]
-  S com_x_mm = S(0);            //!< CoM, body frame [mm]
-  S com_y_mm = S(0);
-  S margin_mm = S(0);           //!< body shift's target margin [mm]
-  S shift_budget_mm = S(0);     //!< reach kept for the shift [mm]
-  S sit_drop_mm = S(0);         //!< [mm]
+  S step_height_mm;             //!< swing apex [mm]
+  S stance_depth_mm;            //!< [mm]
+  S foot_radius_mm;             //!< foot pads [mm]
+  S com_x_mm;                   //!< CoM, body frame [mm]
+  S com_y_mm;
+  S margin_mm;                  //!< body shift's target margin [mm]
+  S shift_budget_mm;            //!< reach kept for the shift [mm]
+  S sit_drop_mm;                //!< [mm]
   S transition_s = S(1);        //!< stand-up / sit-down time [s]
-  S accel_mm_s2 = S(0);         //!< command ramp, translation [mm/s^2]
-  S yaw_accel_rad_s2 = S(0);    //!< command ramp, yaw [rad/s^2]
-  S shift_speed_mm_s = S(0);    //!< fastest body shift [mm/s]
-  S target_speed_mm_s = S(0);   //!< fastest move of a swinging foot's touch-down point [mm/s]
-  S pose_speed_mm_s = S(0);     //!< fastest change of the body pose offset [mm/s]
-  S pose_rate_rad_s = S(0);     //!< fastest change of the body rotation [rad/s]
-  S home_tolerance_mm = S(0);   //!< a foot this close to home needs no final step [mm]
-  bool shift_x_only = false;    //!< planar legs: the body can only shift along x
+  S accel_mm_s2;                //!< command ramp, translation [mm/s^2]
+  S yaw_accel_rad_s2;           //!< command ramp, yaw [rad/s^2]
+  S shift_speed_mm_s;           //!< fastest body shift [mm/s]
+  S target_speed_mm_s;          //!< fastest move of a swinging foot's touch-down point [mm/s]
+  S pose_speed_mm_s;            //!< fastest change of the body pose offset [mm/s]
+  S pose_rate_rad_s;            //!< fastest change of the body rotation [rad/s]
+  S home_tolerance_mm;          //!< a foot this close to home needs no final step [mm]
+  bool shift_x_only;            //!< planar legs: the body can only shift along x
   uint8_t min_support = 2;      //!< never lift a foot if fewer would stay down
-  int8_t unit_shift = 0;        //!< working units of the support polygon (stability.h)
+  int8_t unit_shift;            //!< working units of the support polygon (stability.h)
   S edge_mm[kWalkerLegs] = {};     //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
   VelocityLimits<S> limits;
 };

@@ -69,6 +69,19 @@ static_assert(sizeof(BodyOffsets<float>) == 6 * sizeof(float) && sizeof(BodyOffs
 template <typename S>
 class GaitEngine {
  public:
+  //! The robot stands with no configuration (configure() before use).
+  GaitEngine()
+      : base_(), offset_(), swing_len_(0), start_phase_(0), relabel_(false), quarter_(0), sit_requested_(false),
+        step_in_place_(false), cmd_vx_(), cmd_vy_(), cmd_wz_(), to_(), from_s_(), to_s_(), now_s_(), land_s_(),
+        vx_(), vy_(), wz_(), foot_(), contact_(), pending_(), lift_(), target_(), apex_(), leg_inv_swing_(),
+        leg_swing_len_(), swing_elapsed_(), stance_elapsed_(), edge_r2_(), settled_(), vel_fresh_(false),
+        land_fresh_(false), odo_dx_(), odo_dy_(), odo_wx_(), odo_wy_(), held_(false), in_window_(false),
+        window_start_(0), window_inv_(), pose_(), goal_pose_(), margin_(), margin_fresh_(false), step_cache_(),
+        td_fresh_(false), td_sin_(), td_dx_(), td_dy_(), odo_x_(), odo_y_(), odo_yaw_(), odo_s_() {}
+  //! The same state in zeroed storage (zeroed_storage.h): only the members
+  //! whose default is not zero are written.
+  explicit GaitEngine(ZeroedStorage z) : GaitEngine(z, ZeroedFor<S>()) {}
+
   //! Takes the configuration and a gait; the robot stands (or sits).
   void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false);
   //! The same with the configuration built in place (fill_gait_config()).
@@ -347,69 +360,105 @@ class GaitEngine {
   static constexpr uint8_t kNoGroup = 0xFF;
   static constexpr double kEdgeShare = 0.53;
 
+  // The zeroed-storage constructor's two forms: Fixed's zeros named with
+  // the tag (its default constructor would store them), float's left out.
+  GaitEngine(ZeroedStorage z, ZeroedFor<Fixed>)
+      : cfg_(z), cmd_vx_(z), cmd_vy_(z), cmd_wz_(z), to_{z, z, z, z, false}, from_s_{z, z, z, z},
+        to_s_{z, z, z, z}, now_s_{z, z, z, z}, land_s_{z, z, z, z}, vx_(z), vy_(z), wz_(z), clock_(z),
+        support_(z),
+#if STRIDER_BODY_SHIFT
+        next_support_(z),
+#endif
+        odo_dx_(z), odo_dy_(z), odo_wx_(z), odo_wy_(z), shift_(z), window_inv_(z), pose_{z, z, z, z},
+        goal_pose_{z, z, z, z}, margin_(z), step_cache_{z, {z, z, z, z, z}}, td_sin_(z), td_dx_(z), td_dy_(z),
+        odo_x_(z), odo_y_(z), odo_yaw_(z), odo_s_(z) {}
+  GaitEngine(ZeroedStorage z, ZeroedFor<float>)
+      : cfg_(z), clock_(z), support_(z),
+#if STRIDER_BODY_SHIFT
+        next_support_(z),
+#endif
+        shift_(z) {}
+
+  // Members without a default here are set by the constructors (zero),
+  // which the zeroed-storage constructor leaves alone.
   GaitConfig<S> cfg_;
-  GaitTable base_{};   // as given; as walked: table()
-  Phase16 offset_[kWalkerLegs] = {};
-  uint32_t swing_len_ = 0;
+  GaitTable base_;   // as given; as walked: table()
+  Phase16 offset_[kWalkerLegs];
+  uint32_t swing_len_;
   S duty_ = scalar<S>(0.5), inv_swing_ = S(2), inv_stance_ = S(2);
-  Phase16 start_phase_ = 0;
-  bool relabel_ = false;
-  int8_t quarter_ = 0;
+  Phase16 start_phase_;
+  bool relabel_;
+  int8_t quarter_;
 
   GaitState state_ = GaitState::kStanding;
   S progress_ = S(1);  // 0 sitting .. 1 standing
-  bool sit_requested_ = false;
-  bool step_in_place_ = false;
+  bool sit_requested_;
+  bool step_in_place_;
 
-  S cmd_vx_ = S(0), cmd_vy_ = S(0), cmd_wz_ = S(0);
-  VelocityPlan<S> to_{};
-  Stride from_s_{}, to_s_{}, now_s_{}, land_s_{};
+  S cmd_vx_, cmd_vy_, cmd_wz_;
+  VelocityPlan<S> to_;
+  Stride from_s_, to_s_, now_s_, land_s_;
   S ramp_ = S(1), ramp_per_cycle_ = S(1), ramp_cycles_ = S(1);  // ramp_cycles_ = 1 / ramp_per_cycle_
-  S vx_ = S(0), vy_ = S(0), wz_ = S(0), hz_ = S(1);
+  S vx_, vy_, wz_, hz_ = S(1);
 
   PhaseClock clock_;
-  Vec3<S> foot_[kWalkerLegs];
-  bool contact_[kWalkerLegs] = {};
-  bool pending_[kWalkerLegs] = {};
-  Vec3<S> lift_[kWalkerLegs];
-  Vec3<S> target_[kWalkerLegs];
-  S apex_[kWalkerLegs];
-  S leg_inv_swing_[kWalkerLegs];
-  uint32_t leg_swing_len_[kWalkerLegs] = {};
-  uint32_t swing_elapsed_[kWalkerLegs] = {};
-  int32_t stance_elapsed_[kWalkerLegs] = {};  // phase since touch-down (may start negative)
+  // The scalar arrays in anonymous unions: the zeroed-storage constructor
+  // need not build them element by element (Fixed's default constructor
+  // stores its zero); the default constructor value-initialises them.
+  union {
+    Vec3<S> foot_[kWalkerLegs];
+  };
+  bool contact_[kWalkerLegs];
+  bool pending_[kWalkerLegs];
+  union {
+    Vec3<S> lift_[kWalkerLegs];
+  };
+  union {
+    Vec3<S> target_[kWalkerLegs];
+  };
+  union {
+    S apex_[kWalkerLegs];
+  };
+  union {
+    S leg_inv_swing_[kWalkerLegs];
+  };
+  uint32_t leg_swing_len_[kWalkerLegs];
+  uint32_t swing_elapsed_[kWalkerLegs];
+  int32_t stance_elapsed_[kWalkerLegs];  // phase since touch-down (may start negative)
 
   mutable SupportPolygon<S> support_;
   mutable bool support_dirty_ = true;
 #if STRIDER_BODY_SHIFT
   SupportPolygon<S> next_support_;
 #endif
-  S edge_r2_[kWalkerLegs] = {};  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
-  bool settled_[kWalkerLegs] = {};  // swinging foot's touch-down point already at touchdown(i)
-  bool vel_fresh_ = false;       // vx_, vy_, wz_ are now_s_ x hz_
-  bool land_fresh_ = false;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)
+  union {
+    S edge_r2_[kWalkerLegs];  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
+  };
+  bool settled_[kWalkerLegs];  // swinging foot's touch-down point already at touchdown(i)
+  bool vel_fresh_;       // vx_, vy_, wz_ are now_s_ x hz_
+  bool land_fresh_;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)
   // Odometry step in the world frame, kept while the body does not turn.
-  S odo_dx_ = S(0), odo_dy_ = S(0), odo_wx_ = S(0), odo_wy_ = S(0);
+  S odo_dx_, odo_dy_, odo_wx_, odo_wy_;
   BodyShift<S> shift_;
-  bool held_ = false;
-  bool in_window_ = false;           // every foot down, shifting for the next swing
+  bool held_;
+  bool in_window_;                   // every foot down, shifting for the next swing
   uint8_t window_group_ = kNoGroup;  // leg that leads the next swing group
-  Phase16 window_start_ = 0;
-  S window_inv_ = S(0);
+  Phase16 window_start_;
+  S window_inv_;
 
-  BodyOffsets<S> pose_{}, goal_pose_{};
+  BodyOffsets<S> pose_, goal_pose_;
   bool pose_at_goal_ = true;  // pose_ == goal_pose_ known: step_pose() has nothing to do
-  mutable S margin_ = S(0);
-  mutable bool margin_fresh_ = false;
+  mutable S margin_;
+  mutable bool margin_fresh_;
   // Per-tick work that only changes with the command: the body step and the
   // rotation and offset of every touch-down point.
   struct StepCache {
     S dt;  // the tick the step is for; 0 (no tick has it): vx_, vy_ or wz_ changed since
     BodyStep<S> step;
-  } step_cache_{};
-  bool td_fresh_ = false;
-  S td_cos_ = S(1), td_sin_ = S(0), td_dx_ = S(0), td_dy_ = S(0);
-  S odo_x_ = S(0), odo_y_ = S(0), odo_yaw_ = S(0), odo_c_ = S(1), odo_s_ = S(0);
+  } step_cache_;
+  bool td_fresh_;
+  S td_cos_ = S(1), td_sin_, td_dx_, td_dy_;
+  S odo_x_, odo_y_, odo_yaw_, odo_c_ = S(1), odo_s_;
 };
 
 }  // namespace strider

@@ -169,6 +169,8 @@ inline uint32_t cycles_to_q32(Fixed cycles) {
 //! The phase clock of a gait: advance(dt * f) once per tick.
 class PhaseClock {
  public:
+  PhaseClock() : phase_(0), previous_(0) {}
+  explicit PhaseClock(ZeroedStorage) {}  //!< zeroed_storage.h
   //! The current phase [2^-32 cycle].
   uint32_t raw() const { return phase_; }
   //! The current phase as Phase16.
@@ -212,8 +214,8 @@ class PhaseClock {
     return phase_ < previous_;
   }
 
-  uint32_t phase_ = 0;
-  uint32_t previous_ = 0;
+  uint32_t phase_;
+  uint32_t previous_;
 };
 
 //! A leg's own phase: psi = phase - offset (mod one cycle).

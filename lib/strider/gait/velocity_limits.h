@@ -81,7 +81,21 @@ template <typename S>
 struct VelocityLimits {
   static constexpr uint8_t kDirections = 16;  //!< direction k at k * 22.5 deg from forward
 
-  uint8_t leg_count = 0;
+  constexpr VelocityLimits()
+      : leg_count(0),
+#if !STRIDER_VELOCITY_SEARCH
+        flash_codes(nullptr),
+#endif
+        preferred_stride_mm(), lift_ms(), swing_ms_per_mm(), stance_ms_per_mm() {
+  }
+  //! In zeroed storage (zeroed_storage.h): only the non-zero defaults
+  //! written (Fixed's zeros named with the tag, float's left out).
+  explicit VelocityLimits(ZeroedStorage z) : VelocityLimits(z, ZeroedFor<S>()) {}
+  VelocityLimits(ZeroedStorage z, ZeroedFor<Fixed>)
+      : preferred_stride_mm(z), lift_ms(z), swing_ms_per_mm(z), stance_ms_per_mm(z) {}
+  VelocityLimits(ZeroedStorage, ZeroedFor<float>) {}
+
+  uint8_t leg_count;  // zero, by the constructors
   //! False for planar legs (seed 003): they cannot step sideways, so a
   //! sideways command is dropped (and reported as limited); turning stays,
   //! its sideways part reported by the walker as clamped.
@@ -94,16 +108,16 @@ struct VelocityLimits {
 #else
   //! The stored table's codes of this robot, [kMaxLegs][kDirections] in
   //! flash (nullptr: no stride at all).
-  const uint16_t* flash_codes = nullptr;
+  const uint16_t* flash_codes;  // nullptr, by the constructors
   uint16_t code(uint8_t leg, uint8_t k) const {
     return flash_codes == nullptr ? uint16_t(0) : flash_u16(flash_codes, uint16_t(leg * kDirections + k));
   }
 #endif
   S min_hz = S(1);                     //!< default step rate, 1 / cycle_s [Hz]
-  S preferred_stride_mm = S(0);        //!< step_length_mm [mm]
-  S lift_ms = S(0);                    //!< servo time of a swing's lift alone [ms]
-  S swing_ms_per_mm = S(0);            //!< servo time of a swing per mm of stride [ms/mm]
-  S stance_ms_per_mm = S(0);           //!< servo time of a stance per mm of stride [ms/mm]
+  S preferred_stride_mm;               //!< step_length_mm [mm]
+  S lift_ms;                           //!< servo time of a swing's lift alone [ms]
+  S swing_ms_per_mm;                   //!< servo time of a swing per mm of stride [ms/mm]
+  S stance_ms_per_mm;                  //!< servo time of a stance per mm of stride [ms/mm]
 
   //! Leg i's longest stride along direction k [mm].
   S stride_mm(uint8_t leg, uint8_t k) const { return velocity_limit_encoding::stride_of(code(leg, k), S()); }

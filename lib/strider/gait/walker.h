@@ -59,6 +59,10 @@ struct LegResult : LegFeet<S> {
 template <typename S>
 class Walker {
  public:
+  Walker() : model_(nullptr), dof_(0), turn_(), proj_() {}
+  //! In zeroed storage (zeroed_storage.h): only the non-zero defaults written.
+  explicit Walker(ZeroedStorage z) : Walker(z, SharedLegs<(kWalkerSolvers < kWalkerLegs)>()) {}
+
   //! Builds the legs, the configuration (velocity limits: a few thousand IK
   //! calls) and the engine. Returns false for a gait of another leg count,
   //! or velocity limits this build cannot give (gait_config.h). solve_now
@@ -365,13 +369,23 @@ class Walker {
     return true;
   }
 
+  // The tag's constructors: legs of one geometry per solver built with the
+  // tag; an AnyLeg per leg by their default constructors (a loop: shorter
+  // than each leg built with the tag).
+  template <bool kShared>
+  struct SharedLegs {};
+  Walker(ZeroedStorage z, SharedLegs<true>)
+      : legs_(walker_detail::LegSolvers<S>::zeroed(z)), proj_{LegKind(), z, z, int8_t()}, engine_(z) {}
+  Walker(ZeroedStorage z, SharedLegs<false>) : proj_{LegKind(), z, z, int8_t()}, engine_(z) {}
+
   // Which model the legs were built from: compared by configure(), never
   // read (the model may have been a copy that is gone, robot_app.h).
-  const RobotModel* model_ = nullptr;
-  uint8_t dof_ = 0;  // joints per leg; 0 before the legs are built
+  // model_, dof_, turn_ and proj_ are zero, by the constructors.
+  const RobotModel* model_;
+  uint8_t dof_;  // joints per leg; 0 before the legs are built
   walker_detail::LegSolvers<S> legs_;
-  uint8_t turn_[kWalkerLegs] = {};  // MountTurn of each leg's mount
-  ReachProjection<S> proj_{};
+  uint8_t turn_[kWalkerLegs];  // MountTurn of each leg's mount
+  ReachProjection<S> proj_;
   IkOptions<S> ik_options_{};  // the defaults, built once rather than per leg and tick
   GaitEngine<S> engine_;
   LegResult<S> out_[kWalkerLegs];
