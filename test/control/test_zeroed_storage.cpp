@@ -40,6 +40,20 @@ struct Zeroed {
 template <typename T, int kWhich>
 alignas(T) unsigned char Zeroed<T, kWhich>::bytes[sizeof(T)];
 
+// Storage that held something else: the default constructor must not rely
+// on zeros (objects on the stack or in reused memory take it).
+template <typename T>
+struct Garbage {
+  alignas(T) static unsigned char bytes[sizeof(T)];
+  static void* fill() {
+    std::memset(bytes, 0xA5, sizeof bytes);
+    asm volatile("" : : "r"(bytes) : "memory");
+    return bytes;
+  }
+};
+template <typename T>
+alignas(T) unsigned char Garbage<T>::bytes[sizeof(T)];
+
 template <typename T>
 bool same_bytes(const T* a, const T* b) {
   return std::memcmp(static_cast<const void*>(a), static_cast<const void*>(b), sizeof(T)) == 0;
@@ -148,9 +162,18 @@ void expect_same_app(const strider::RobotModel& model) {
   size_t first = 0;
   while (first < a.size() && a[first] == b[first]) ++first;
   EXPECT_EQ(first, a.size()) << model.name << ": the bytes differ from offset " << first << " of " << sizeof(A);
-  EXPECT_EQ(run_script(*by_default, out_default), run_script(*by_tag, out_tag)) << model.name;
+  const std::vector<std::string> tag_log = run_script(*by_tag, out_tag);
+  EXPECT_EQ(run_script(*by_default, out_default), tag_log) << model.name;
   by_default->~A();
   by_tag->~A();
+  // The default constructor in storage that was not zero: every member it
+  // leaves to the zeroed-storage path would show here as other lines or
+  // servo writes.
+  strider_test::RecordingServo out_garbage;
+  strider_test::FakeStore store_garbage;
+  A* on_garbage = new (Garbage<A>::fill()) A(model, out_garbage, store_garbage);
+  EXPECT_EQ(run_script(*on_garbage, out_garbage), tag_log) << model.name << ", default constructor on non-zero storage";
+  on_garbage->~A();
 }
 
 TEST(ZeroedStorage, RobotAppEqualsItsDefaultStateForEveryModel) {

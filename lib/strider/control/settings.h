@@ -39,6 +39,10 @@ constexpr Settings default_settings() {
 //! keep its 54 bytes in RAM on the AVR (const data is copied to RAM there).
 inline void set_default_settings(Settings* s) {
   constexpr Settings d = default_settings();
+  // A host aligns the fields (two bytes of padding), the AVR does not: the
+  // padding zeroed there, so that whole copies of the settings compare byte
+  // for byte (no code on the AVR: the condition is false at compile time).
+  if (sizeof(Settings) != 4 + 2 + 4 + 2 + 2 + 2 + 1 + 1 + 2 * kMaxServoJoints) __builtin_memset(s, 0, sizeof *s);
   s->pca_osc_hz = d.pca_osc_hz;
   s->pwm_hz = d.pwm_hz;
   s->baud = d.baud;

@@ -69,6 +69,7 @@ SettingsStatus load_settings(const Store& store, Settings* out, uint16_t base = 
   if (rec[3] != kSettingsPayloadBytes) return SettingsStatus::kCorrupt;
   if (crc16_ccitt(rec, crc_at) != crc) return SettingsStatus::kCorrupt;
   Settings s;
+  if (sizeof(Settings) != kSettingsPayloadBytes) s = *out;  // a host's padding zeroed (set_default_settings)
   decode_settings(rec + kSettingsHeaderBytes, &s);
   if (!settings_valid(s)) return SettingsStatus::kInvalid;
   *out = s;
