@@ -24,35 +24,34 @@ namespace {
 using strider::Fixed;
 using strider::kZeroedStorage;
 
-// Zeroed storage the way the firmware has it: a static array (two per type:
-// the default constructor's and the tag's). Cleared before each use through
-// a barrier, so that the compiler cannot treat the clearing as dead before
-// the constructor.
-template <typename T, int kWhich>
-struct Zeroed {
+// Static storage for a T, every byte set to kFill before each use through a
+// barrier, so that the compiler cannot treat the filling as dead before the
+// constructor. kWhich tells the arrays of one type apart.
+template <typename T, int kWhich, unsigned char kFill>
+struct Filled {
   alignas(T) static unsigned char bytes[sizeof(T)];
-  static void* clear() {
-    std::memset(bytes, 0, sizeof bytes);
+  static void* fill() {
+    std::memset(bytes, kFill, sizeof bytes);
     asm volatile("" : : "r"(bytes) : "memory");
     return bytes;
   }
 };
+template <typename T, int kWhich, unsigned char kFill>
+alignas(T) unsigned char Filled<T, kWhich, kFill>::bytes[sizeof(T)];
+
+// Zeroed storage the way the firmware has it: a static array (two per type:
+// the default constructor's and the tag's).
 template <typename T, int kWhich>
-alignas(T) unsigned char Zeroed<T, kWhich>::bytes[sizeof(T)];
+struct Zeroed {
+  static void* clear() { return Filled<T, kWhich, 0>::fill(); }
+};
 
 // Storage that held something else: the default constructor must not rely
 // on zeros (objects on the stack or in reused memory take it).
 template <typename T>
 struct Garbage {
-  alignas(T) static unsigned char bytes[sizeof(T)];
-  static void* fill() {
-    std::memset(bytes, 0xA5, sizeof bytes);
-    asm volatile("" : : "r"(bytes) : "memory");
-    return bytes;
-  }
+  static void* fill() { return Filled<T, 2, 0xA5>::fill(); }
 };
-template <typename T>
-alignas(T) unsigned char Garbage<T>::bytes[sizeof(T)];
 
 template <typename T>
 bool same_bytes(const T* a, const T* b) {
