@@ -2,9 +2,11 @@
 // one leg at a time, the standing pose's pulses equal an independent IK +
 // servo map, slew-limited outputs within every channel's limits while
 // walking, relax and wake-up, two ports that never mix their lines, and
-// pose/height refusals that change nothing. Every model, float and Fixed.
+// pose/height refusals that change nothing, seeded random operator input
+// within every limit. Every model, float and Fixed.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <string>
@@ -172,6 +174,95 @@ TYPED_TEST(RobotAppTest, WalksWithinLimitsAndNeverJumps) {
       EXPECT_LE(r.max_jump[c.channel], int(us * 4096.0 / 20000.0 * 1.02) + 1) << "channel " << int(c.channel);
     }
     EXPECT_GT(moved, m->joint_count() / 2);
+  }
+}
+
+// Seeded random operator input for 40 s on every model: any command with any
+// number (in range and far out of it), gait changes, RC buttons, relax and
+// wake-up, and bytes of garbage, a few a second. Every line answered is
+// `ok`, `err` or `info`; every servo write stays within its channel's joint
+// limits; the joints and feet stay finite (float has NaN to lose: the
+// quadrupeds' firmwares compute in float).
+bool finite_scalar(float v) { return v == v && v < 1e30f && v > -1e30f; }
+bool finite_scalar(strider::Fixed) { return true; }  // every value is finite
+
+template <typename S>
+std::string random_command(strider::Prng& rng) {
+  auto num = [&](int lo, int hi) { return std::to_string(lo + int(rng.next_u32() % uint32_t(hi - lo + 1))); };
+  static const char* const kGaits[] = {"walk", "trot", "pace", "crawl", "tripod", "ripple", "wave", "gallop"};
+  static const char* const kKeys[] = {"F", "B", "L", "R", "G", "I", "H", "J", "S", "0", "5", "9", "q", "W", "w"};
+  switch (rng.next_u32() % 14) {
+    case 0: return "walk " + num(-600, 600) + "\n";
+    case 1: return "strafe " + num(-600, 600) + "\n";
+    case 2: return "turn " + num(-400, 400) + "\n";
+    case 3: return "vel " + num(-400, 400) + " " + num(-400, 400) + " " + num(-300, 300) + "\n";
+    case 4: return "pose " + num(-40, 40) + " " + num(-40, 40) + " " + num(-40, 40) + "\n";
+    case 5: return "height " + num(0, 450) + "\n";
+    case 6: return std::string("gait ") + kGaits[rng.next_u32() % 8] + "\n";
+    case 7: return "speed " + num(-10, 110) + "\n";
+    case 8: return kKeys[rng.next_u32() % 15];
+    case 9: return rng.next_u32() % 4 == 0 ? "relax\n" : "stop\n";
+    case 10: return rng.next_u32() % 2 ? "avoid off\n" : "avoid on\n";
+    case 11: return "pose 0 0 0\n";
+    case 12: {
+      std::string junk;
+      for (int i = 0; i < 12; ++i) junk.push_back(char(rng.next_u32() & 0xFF));
+      return junk + "\n";
+    }
+    default: return "status\n";
+  }
+}
+
+TYPED_TEST(RobotAppTest, RandomOperatorInputStaysWithinLimits) {
+  using S = TypeParam;
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    SCOPED_TRACE(m->name);
+    Rig<S> r(*m);
+    r.run_ms(strider::kSoftStartStepMs * m->leg_count + 2000);
+    r.send(1, "deadman 0\n");
+    strider::Prng rng(0x5EED0000u + uint32_t(m->leg_count) * 31u + uint32_t(m->kind));
+    const auto& stage = r.app->servos();
+    int commands = 0, out_of_limits = 0, not_finite = 0, walking = 0, writes = 0;
+    for (int tick = 0; tick < 2000; ++tick) {
+      if (rng.next_u32() % 8 == 0) {
+        r.send(uint8_t(rng.next_u32() % 2), random_command<S>(rng));
+        ++commands;
+      }
+      r.now_us += strider::kTickPeriodUs;
+      r.app->tick(r.now_us, r.lines);
+      for (const auto& w : r.out.writes) {
+        for (uint8_t k = 0; k < stage.joint_count(); ++k) {
+          const auto& c = stage.channel(k);
+          if (c.channel != w.channel) continue;
+          const uint16_t lo = stage.timing().pulse_ticks(strider::servo_pulse_us(c, c.min_rad));
+          const uint16_t hi = stage.timing().pulse_ticks(strider::servo_pulse_us(c, c.max_rad));
+          if (w.ticks < lo || w.ticks > hi) ++out_of_limits;
+        }
+      }
+      writes += int(r.out.writes.size());
+      r.collect();
+      walking += r.app->controller().mode() == strider::RobotMode::kWalking;
+      const auto& walker = r.app->motion().walker();
+      for (uint8_t i = 0; i < m->leg_count; ++i) {
+        for (uint8_t j = 0; j < m->dof(); ++j) not_finite += !finite_scalar(walker.leg(i).q[j]);
+        const auto& f = walker.engine().foot(i);
+        not_finite += !finite_scalar(f.x) + !finite_scalar(f.y) + !finite_scalar(f.z);
+      }
+    }
+    std::printf("%s: %d commands, %d of 2000 ticks walking, %d servo writes\n", m->name, commands, walking, writes);
+    EXPECT_GT(commands, 200);
+    EXPECT_EQ(out_of_limits, 0);
+    EXPECT_EQ(not_finite, 0);
+    for (const auto& l : r.lines.sent) {
+      const std::string& t = l.second;
+      EXPECT_TRUE(t.rfind("ok", 0) == 0 || t.rfind("err", 0) == 0 || t.rfind("info", 0) == 0) << t;
+    }
+    // Still in command afterwards: it stands up and walks when asked.
+    r.send(0, "stop\npose 0 0 0\nspeed 100\n");
+    r.run_ms(8000);
+    r.send(0, "walk 40\n");
+    r.run_ms(1000);
+    EXPECT_EQ(r.app->controller().mode(), strider::RobotMode::kWalking);
   }
 }
 
