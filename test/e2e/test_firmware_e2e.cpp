@@ -320,6 +320,7 @@ void expect_standing(Robot& r, const int16_t* trims, const char* when) {
 
 class FirmwareWalk : public ::testing::TestWithParam<std::string> {};
 class FirmwarePersistence : public ::testing::TestWithParam<std::string> {};
+class FirmwareFuzz : public ::testing::TestWithParam<std::string> {};
 
 // Boot, stand, walk, speed, avoidance, deadman: one boot, several checks.
 TEST_P(FirmwareWalk, BootStandWalkAvoidStop) {
@@ -486,12 +487,96 @@ TEST_P(FirmwarePersistence, GarbageCalibrationEeprom) {
   EXPECT_EQ(r.mega().unexpected_resets(), 0);
 }
 
+// Seeded random operator input for 15 s: any command with any number, gait
+// changes, RC buttons, relax and wake-up, bytes of garbage, over Bluetooth,
+// about six a second. The firmware answers every line with ok, err or info,
+// never resets, never drives a joint past its limits (to the output's
+// resolution; 0 = an output off),
+// and walks when asked afterwards.
+std::string random_command(std::mt19937& rng) {
+  auto num = [&](int lo, int hi) { return std::to_string(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+  static const char* const kGaits[] = {"walk", "trot", "pace", "crawl", "tripod", "ripple", "wave", "gallop"};
+  static const char* const kKeys[] = {"F", "B", "L", "R", "G", "I", "H", "J", "S", "0", "5", "9", "q", "W", "w"};
+  switch (rng() % 13) {
+    case 0: return "walk " + num(-600, 600) + "\n";
+    case 1: return "strafe " + num(-600, 600) + "\n";
+    case 2: return "turn " + num(-400, 400) + "\n";
+    case 3: return "vel " + num(-400, 400) + " " + num(-400, 400) + " " + num(-300, 300) + "\n";
+    case 4: return "pose " + num(-40, 40) + " " + num(-40, 40) + " " + num(-40, 40) + "\n";
+    case 5: return "height " + num(0, 450) + "\n";
+    case 6: return std::string("gait ") + kGaits[rng() % 8] + "\n";
+    case 7: return "speed " + num(-10, 110) + "\n";
+    case 8: return kKeys[rng() % 15];
+    case 9: return rng() % 4 == 0 ? "relax\n" : "stop\n";
+    case 10: return "pose 0 0 0\n";
+    case 11: {
+      std::string junk;
+      for (int i = 0; i < 12; ++i) junk.push_back(char(rng() & 0xFF));
+      return junk + "\n";
+    }
+    default: return "status\n";
+  }
+}
+
+TEST_P(FirmwareFuzz, RandomOperatorInput) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(300000, kSettleTimeoutUs));
+  ASSERT_EQ(r.command("deadman 0").rfind("ok", 0), 0u);
+  const auto limits = r.pulse_limits();
+  r.mega().clear_pulse_log();
+  const size_t from = r.mark();
+  std::mt19937 rng(777u + uint32_t(GetParam().size()));
+  int sent = 0;
+  for (int k = 0; k < 90; ++k) {  // 90 x 160 ms = 14.4 s
+    r.mega().send(1, random_command(rng));
+    ++sent;
+    ASSERT_TRUE(r.run_for(160000));
+  }
+  r.run_for(500000);
+  // The bounds as the firmware sends them (servo_tick_map.h, as map_joint()):
+  // the limit's pulse in whole microseconds, then the nearest PCA9685 tick,
+  // so within half a tick and half a microsecond of the exact limit.
+  const double slack_us = 0.5 * r.mega().board(0).tick_us() + 0.5 + 1e-6;
+  int outside = 0;
+  for (const auto& c : r.mega().pulse_log()) {
+    auto it = limits.find(c.channel);
+    if (it == limits.end() || c.width_us == 0.0) continue;
+    if (c.width_us < it->second.first - slack_us || c.width_us > it->second.second + slack_us) {
+      if (++outside <= 5)
+        ADD_FAILURE() << "channel " << c.channel << " at " << c.time_us << " us: " << c.width_us << " us outside "
+                      << it->second.first << ".." << it->second.second;
+    }
+  }
+  EXPECT_EQ(outside, 0);
+  int answered = 0;
+  for (size_t i = from; i < r.lines().size(); ++i) {
+    const std::string& l = r.lines()[i];
+    EXPECT_TRUE(l.rfind("ok", 0) == 0 || l.rfind("err", 0) == 0 || l.rfind("info", 0) == 0) << l;
+    answered += l.rfind("ok", 0) == 0 || l.rfind("err", 0) == 0;
+  }
+  EXPECT_GT(answered, sent / 2);
+  EXPECT_EQ(r.mega().unexpected_resets(), 0) << r.transcript(from);
+  EXPECT_EQ(r.mega().stack_overflow_us(), 0u);
+  // Still in command: it stands and walks when asked.
+  ASSERT_EQ(r.command("stop").rfind("ok", 0), 0u);
+  ASSERT_EQ(r.command("pose 0 0 0").rfind("ok", 0), 0u);
+  ASSERT_EQ(r.command("speed 100").rfind("ok", 0), 0u);
+  r.run_for(8000000);
+  ASSERT_EQ(r.command("walk 40").rfind("ok move", 0), 0u);
+  r.run_for(1000000);
+  EXPECT_EQ(r.status()["mode"], "walking") << r.transcript(from);
+}
+
 std::string param_name(const ::testing::TestParamInfo<std::string>& p) { return p.param; }
 
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareWalk,
                          ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
 // Every model's firmware: the link and EEPROM code is shared, but each build
 // has its own scalar (float or fixed point), layout and trims.
+INSTANTIATE_TEST_SUITE_P(Models, FirmwareFuzz,
+                         ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
 INSTANTIATE_TEST_SUITE_P(Models, FirmwarePersistence,
                          ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
 
