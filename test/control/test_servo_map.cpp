@@ -212,7 +212,10 @@ TYPED_TEST(ServoMapTest, FrameWritesEveryChannelWithTrims) {
   EXPECT_EQ(out.writes[1].channel, 1);
   EXPECT_EQ(out.writes[1].ticks, timing.pulse_ticks(1550));  // +4.5 deg trim = +50 us
   EXPECT_EQ(out.writes[2].channel, 17);
-  EXPECT_EQ(out.writes[2].ticks, timing.pulse_ticks(1611));  // clamped at +10 deg
+  // Clamped at +10 deg: 1611 us, the tick at or below it (the limit rounded
+  // inward; the nearest tick, 330, would be 1612 us).
+  EXPECT_EQ(out.writes[2].ticks, timing.pulse_ticks_toward(1611, false));
+  EXPECT_EQ(out.writes[2].ticks, 329);
   settings.pca_osc_hz = 1;
   EXPECT_EQ(strider::configure_servo_pwm(out, timing, settings), strider::PwmTimingStatus::kBadOscillator);
   EXPECT_EQ(out.prescale, 126);  // untouched
@@ -221,6 +224,29 @@ TYPED_TEST(ServoMapTest, FrameWritesEveryChannelWithTrims) {
 }  // namespace
 
 namespace {
+
+// pulse_ticks_toward(): the tick at or above (up) / at or below (down) the
+// width, against the formula, over every width and several oscillators and
+// frequencies; the nearest tick is one of the two.
+TEST(Pca9685Timing, TicksTowardTheInside) {
+  Pca9685Timing t;
+  for (uint32_t osc : {25000000u, 23500000u, 26800000u})
+    for (int f : {40, 50, 60, 200, 330}) {
+      ASSERT_EQ(t.configure(osc, uint16_t(f)), strider::PwmTimingStatus::kOk) << osc << " " << f;
+      const double tick_us = double(t.period_x64()) / 64.0 / 4096.0;
+      for (uint32_t w = 1; w < 65535; w += 13) {
+        const uint16_t up = t.pulse_ticks_toward(uint16_t(w), true), down = t.pulse_ticks_toward(uint16_t(w), false);
+        if (up >= 4095) break;
+        ASSERT_GE(up * tick_us, w - 1e-6) << osc << " " << f << " Hz " << w << " us";
+        ASSERT_LT((up - 1) * tick_us, w - 1e-9) << w;
+        ASSERT_LE(down * tick_us, w + 1e-6) << w;
+        ASSERT_GT((down + 1) * tick_us, w + 1e-9) << w;
+        ASSERT_LE(up - down, 1);
+        const uint16_t near = t.pulse_ticks(uint16_t(w));
+        ASSERT_TRUE(near == up || near == down) << w;
+      }
+    }
+}
 
 // Both pulse_ticks paths (one division below 16000 us, two above) against the formula.
 TEST(Pca9685Timing, LongWidthsExact) {
@@ -233,6 +259,55 @@ TEST(Pca9685Timing, LongWidthsExact) {
       ASSERT_LE(std::fabs(t.pulse_ticks(uint16_t(w)) - exact), kMaxTickError) << f << " Hz " << w << " us";
     }
   }
+}
+
+}  // namespace
+
+#include "control/channel_map.h"
+#include "robots/all_robots.h"
+
+namespace {
+
+// Every built-in model's every joint, pushed far past both limits and swept
+// across them, at several PWM frequencies and oscillators: the pulse sent
+// (ticks x tick length) never passes the exact limit pulse by more than the
+// half microsecond of servo_pulse_us()'s rounding; at the limits it is at
+// most one tick inside.
+double as_double(float v) { return double(v); }
+double as_double(Fixed v) { return v.to_double(); }
+
+template <typename S>
+void expect_limits_kept() {
+  for (const strider::RobotModel* m : strider::kAllRobots)
+    for (uint32_t osc : {25000000u, 26000000u})
+      for (int f : {50, 60, 200}) {
+        Pca9685Timing timing;
+        ASSERT_EQ(timing.configure(osc, uint16_t(f)), strider::PwmTimingStatus::kOk);
+        const double tick_us = double(timing.period_x64()) / 64.0 / 4096.0;
+        for (uint8_t i = 0; i < m->leg_count; ++i)
+          for (uint8_t j = 0; j < m->dof(); ++j) {
+            const auto ch = strider::make_joint_channel<S>(*m, i, j);
+            const double a = double(ch.min_pulse_us) + as_double(ch.min_rad) * as_double(ch.us_per_rad);
+            const double b = double(ch.min_pulse_us) + as_double(ch.max_rad) * as_double(ch.us_per_rad);
+            const double lo = std::min(a, b), hi = std::max(a, b);
+            double seen_lo = 1e9, seen_hi = -1e9;
+            for (int k = -1000; k <= 1000; ++k) {
+              const S q = strider::scalar<S>(k * 0.01);  // -10 .. 10 rad
+              const double us = strider::map_joint(ch, q, S(0), timing).ticks * tick_us;
+              ASSERT_GE(us, lo - 0.5 - 1e-6) << m->name << " leg " << int(i) << " joint " << int(j) << " " << f << " Hz";
+              ASSERT_LE(us, hi + 0.5 + 1e-6) << m->name << " leg " << int(i) << " joint " << int(j) << " " << f << " Hz";
+              seen_lo = std::min(seen_lo, us);
+              seen_hi = std::max(seen_hi, us);
+            }
+            EXPECT_LT(seen_lo, lo + tick_us + 0.5) << m->name;  // the limit itself is reached
+            EXPECT_GT(seen_hi, hi - tick_us - 0.5) << m->name;
+          }
+      }
+}
+
+TEST(ServoMapLimits, NeverPastAJointLimit) {
+  expect_limits_kept<float>();
+  expect_limits_kept<Fixed>();
 }
 
 }  // namespace

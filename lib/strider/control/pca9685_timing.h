@@ -91,6 +91,17 @@ class Pca9685Timing {
     return ticks > kPca9685MaxTick ? kPca9685MaxTick : uint16_t(ticks);
   }
 
+  //! Pulse width [us] -> the on-time ticks rounded up (at least width_us
+  //! long) or down (at most width_us), at most 4095: a joint limit's bound
+  //! rounded toward the inside of the range (servo_map.h, limit_ticks()).
+  uint16_t pulse_ticks_toward(uint16_t width_us, bool up) const {
+    const uint32_t num = uint32_t(width_us) * uint32_t(4096);  // < 2^28
+    const uint32_t r = (num % period_x64_) * uint32_t(64);     // < 2^28
+    uint32_t ticks = (num / period_x64_) * uint32_t(64) + r / period_x64_;
+    if (up && r % period_x64_ != 0) ++ticks;
+    return ticks > kPca9685MaxTick ? kPca9685MaxTick : uint16_t(ticks);
+  }
+
  private:
   uint32_t osc_hz_ = kPca9685NominalOscHz;
   uint32_t period_x64_ = 1280000ul;

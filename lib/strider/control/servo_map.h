@@ -105,7 +105,21 @@ uint16_t servo_pulse_us(const ServoChannel<S>& ch, S angle_rad) {
   return uint16_t(us);
 }
 
-//! The whole mapping of one joint, joint angle [rad] + trim [rad] -> command.
+//! The on-time ticks of a channel's two joint limits, rounded toward the
+//! inside of its range: a pulse between them never passes a limit by a
+//! fraction of a tick (only by servo_pulse_us()'s rounding to whole
+//! microseconds, at most 0.5 us). *lo_ticks <= *hi_ticks.
+template <typename S>
+void limit_ticks(const ServoChannel<S>& ch, const Pca9685Timing& timing, uint16_t* lo_ticks, uint16_t* hi_ticks) {
+  const uint16_t a = servo_pulse_us(ch, ch.min_rad), b = servo_pulse_us(ch, ch.max_rad);
+  const uint16_t lo_us = a < b ? a : b, hi_us = a < b ? b : a;
+  *lo_ticks = timing.pulse_ticks_toward(lo_us, true);
+  *hi_ticks = timing.pulse_ticks_toward(hi_us, false);
+  if (*hi_ticks < *lo_ticks) *hi_ticks = *lo_ticks = timing.pulse_ticks(lo_us);  // a range within one tick
+}
+
+//! The whole mapping of one joint, joint angle [rad] + trim [rad] -> command;
+//! the ticks within the limits' ticks (limit_ticks()).
 template <typename S>
 ServoCommand map_joint(const ServoChannel<S>& ch, S joint_rad, S trim_rad, const Pca9685Timing& timing) {
   S angle = ch.centre_rad;
@@ -113,7 +127,10 @@ ServoCommand map_joint(const ServoChannel<S>& ch, S joint_rad, S trim_rad, const
   ServoCommand cmd;
   cmd.channel = ch.channel;
   cmd.pulse_us = servo_pulse_us(ch, angle);
-  cmd.ticks = timing.pulse_ticks(cmd.pulse_us);
+  uint16_t lo, hi;
+  limit_ticks(ch, timing, &lo, &hi);
+  const uint16_t t = timing.pulse_ticks(cmd.pulse_us);
+  cmd.ticks = t < lo ? lo : t > hi ? hi : t;
   cmd.status = status;
   return cmd;
 }

@@ -171,10 +171,11 @@ class ServoTickMap {
     ServoTickRange<S> j;
     j.travel_rad = hi - lo;
     if (!set_scale(j.scale, ch, lo, hi, timing)) return ServoTickStatus::kUnsupported;
-    // The bounds and the centre exactly as map_joint() sends them.
-    j.lo_ticks = timing.pulse_ticks(servo_pulse_us(ch, lo));
-    j.hi_ticks = timing.pulse_ticks(servo_pulse_us(ch, hi));
-    set_centre(j, timing.pulse_ticks(servo_pulse_us(ch, clamp(ch.centre_rad, lo, hi))));
+    // The bounds and the centre exactly as map_joint() sends them: the
+    // limits' ticks rounded toward the inside (limit_ticks()).
+    limit_ticks(ch, timing, &j.lo_ticks, &j.hi_ticks);
+    const uint16_t centre = timing.pulse_ticks(servo_pulse_us(ch, clamp(ch.centre_rad, lo, hi)));
+    set_centre(j, centre < j.lo_ticks ? j.lo_ticks : centre > j.hi_ticks ? j.hi_ticks : centre);
     joints_.set_range(i, j);
     return ServoTickStatus::kOk;
   }
