@@ -17,6 +17,7 @@
 #include "fakes/recording_servo.h"
 #include "math/fixed.h"
 #include "math/prng.h"
+#include "random_commands.h"
 #include "robots/all_robots.h"
 
 namespace {
@@ -186,33 +187,6 @@ TYPED_TEST(RobotAppTest, WalksWithinLimitsAndNeverJumps) {
 bool finite_scalar(float v) { return v == v && v < 1e30f && v > -1e30f; }
 bool finite_scalar(strider::Fixed) { return true; }  // every value is finite
 
-template <typename S>
-std::string random_command(strider::Prng& rng) {
-  auto num = [&](int lo, int hi) { return std::to_string(lo + int(rng.next_u32() % uint32_t(hi - lo + 1))); };
-  static const char* const kGaits[] = {"walk", "trot", "pace", "crawl", "tripod", "ripple", "wave", "gallop"};
-  static const char* const kKeys[] = {"F", "B", "L", "R", "G", "I", "H", "J", "S", "0", "5", "9", "q", "W", "w"};
-  switch (rng.next_u32() % 14) {
-    case 0: return "walk " + num(-600, 600) + "\n";
-    case 1: return "strafe " + num(-600, 600) + "\n";
-    case 2: return "turn " + num(-400, 400) + "\n";
-    case 3: return "vel " + num(-400, 400) + " " + num(-400, 400) + " " + num(-300, 300) + "\n";
-    case 4: return "pose " + num(-40, 40) + " " + num(-40, 40) + " " + num(-40, 40) + "\n";
-    case 5: return "height " + num(0, 450) + "\n";
-    case 6: return std::string("gait ") + kGaits[rng.next_u32() % 8] + "\n";
-    case 7: return "speed " + num(-10, 110) + "\n";
-    case 8: return kKeys[rng.next_u32() % 15];
-    case 9: return rng.next_u32() % 4 == 0 ? "relax\n" : "stop\n";
-    case 10: return rng.next_u32() % 2 ? "avoid off\n" : "avoid on\n";
-    case 11: return "pose 0 0 0\n";
-    case 12: {
-      std::string junk;
-      for (int i = 0; i < 12; ++i) junk.push_back(char(rng.next_u32() & 0xFF));
-      return junk + "\n";
-    }
-    default: return "status\n";
-  }
-}
-
 TYPED_TEST(RobotAppTest, RandomOperatorInputStaysWithinLimits) {
   using S = TypeParam;
   for (const strider::RobotModel* m : strider::kAllRobots) {
@@ -225,7 +199,7 @@ TYPED_TEST(RobotAppTest, RandomOperatorInputStaysWithinLimits) {
     int commands = 0, out_of_limits = 0, not_finite = 0, walking = 0, writes = 0;
     for (int tick = 0; tick < 2000; ++tick) {
       if (rng.next_u32() % 8 == 0) {
-        r.send(uint8_t(rng.next_u32() % 2), random_command<S>(rng));
+        r.send(uint8_t(rng.next_u32() % 2), strider_test::random_operator_command([&] { return rng.next_u32(); }));
         ++commands;
       }
       r.now_us += strider::kTickPeriodUs;

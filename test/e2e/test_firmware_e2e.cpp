@@ -19,6 +19,7 @@
 #include "control/servo_map.h"
 #include "control/settings.h"
 #include "kinematics/any_leg.h"
+#include "random_commands.h"
 #include "robots/all_robots.h"
 #include "virtual_mega.h"
 
@@ -493,31 +494,6 @@ TEST_P(FirmwarePersistence, GarbageCalibrationEeprom) {
 // never resets, never drives a joint past its limits (by more than the
 // half microsecond of a pulse's rounding; 0 = an output off),
 // and walks when asked afterwards.
-std::string random_command(std::mt19937& rng) {
-  auto num = [&](int lo, int hi) { return std::to_string(std::uniform_int_distribution<int>(lo, hi)(rng)); };
-  static const char* const kGaits[] = {"walk", "trot", "pace", "crawl", "tripod", "ripple", "wave", "gallop"};
-  static const char* const kKeys[] = {"F", "B", "L", "R", "G", "I", "H", "J", "S", "0", "5", "9", "q", "W", "w"};
-  switch (rng() % 13) {
-    case 0: return "walk " + num(-600, 600) + "\n";
-    case 1: return "strafe " + num(-600, 600) + "\n";
-    case 2: return "turn " + num(-400, 400) + "\n";
-    case 3: return "vel " + num(-400, 400) + " " + num(-400, 400) + " " + num(-300, 300) + "\n";
-    case 4: return "pose " + num(-40, 40) + " " + num(-40, 40) + " " + num(-40, 40) + "\n";
-    case 5: return "height " + num(0, 450) + "\n";
-    case 6: return std::string("gait ") + kGaits[rng() % 8] + "\n";
-    case 7: return "speed " + num(-10, 110) + "\n";
-    case 8: return kKeys[rng() % 15];
-    case 9: return rng() % 4 == 0 ? "relax\n" : "stop\n";
-    case 10: return "pose 0 0 0\n";
-    case 11: {
-      std::string junk;
-      for (int i = 0; i < 12; ++i) junk.push_back(char(rng() & 0xFF));
-      return junk + "\n";
-    }
-    default: return "status\n";
-  }
-}
-
 TEST_P(FirmwareFuzz, RandomOperatorInput) {
   Robot r(GetParam());
   std::string error;
@@ -530,7 +506,7 @@ TEST_P(FirmwareFuzz, RandomOperatorInput) {
   std::mt19937 rng(777u + uint32_t(GetParam().size()));
   int sent = 0;
   for (int k = 0; k < 90; ++k) {  // 90 x 160 ms = 14.4 s
-    r.mega().send(1, random_command(rng));
+    r.mega().send(1, strider_test::random_operator_command([&] { return uint32_t(rng()); }));
     ++sent;
     ASSERT_TRUE(r.run_for(160000));
   }
