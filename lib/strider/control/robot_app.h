@@ -21,6 +21,7 @@
 #include <stdint.h>
 
 #include "controller.h"
+#include "model_constants.h"
 #include "servo_stage.h"
 #include "settings_store.h"
 #include "sonar_filter.h"
@@ -59,32 +60,6 @@ constexpr char kIkStatusNames[] STRIDER_PROGMEM = "ok\0clamped\0joint_limit\0unr
 inline FlashText to_flash(GaitState s) { return flash_name(kGaitStateNames, 6, uint8_t(s)); }
 inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uint8_t(s)); }
 }  // namespace app_text
-
-//! Avoidance's clearing distance: the widest standing foot's distance from
-//! the body's centre line plus kAvoidClearMarginMm [mm].
-constexpr float kAvoidClearMarginMm = 40.0f;
-constexpr uint16_t avoid_clear_mm(const RobotModel& m) {
-  float w = 0.0f;
-  for (uint8_t i = 0; i < m.leg_count && i < kMaxLegs; ++i) {
-    const float y = m.legs[i].stand_mm.y;
-    if (y > w) w = y;
-    if (-y > w) w = -y;
-  }
-  w += kAvoidClearMarginMm;
-  return w < 60000.0f ? uint16_t(w + 0.5f) : uint16_t(60000);
-}
-
-//! A gait's name as a value (kGaitNameBytes with its zero): RobotApp's
-//! kStoredGait, a firmware's constant in flash.
-struct GaitName {
-  char text[kGaitNameBytes];
-};
-//! The default gait of built-in model r (kGaitParams order).
-constexpr GaitName default_gait_name(uint8_t r) {
-  GaitName n{};
-  for (uint8_t i = 0; i < kGaitNameBytes; ++i) n.text[i] = kGaitParams[r].default_gait[i];
-  return n;
-}
 
 //! Microseconds (<= 1e6) -> seconds, without a division.
 inline void to_seconds(uint32_t us, float* s) { *s = float(us) * 1e-6f; }

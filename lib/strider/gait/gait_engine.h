@@ -25,46 +25,16 @@
 
 #include "../kinematics/body_pose.h"
 #include "../kinematics/leg_ik_common.h"
+#include "body_offsets.h"
 #include "body_shift.h"
 #include "gait_config.h"
+#include "gait_state.h"
 #include "gait_table.h"
 #include "phase.h"
 #include "stance.h"
 #include "swing_trajectory.h"
 
 namespace strider {
-
-enum class GaitState : uint8_t {
-  kSitting = 0,     //!< body lowered, all feet down
-  kStandingUp = 1,  //!< rising to the standing height
-  kStanding = 2,    //!< all feet home, not stepping
-  kWalking = 3,     //!< stepping
-  kStopping = 4,    //!< command at zero, finishing the last steps
-  kSittingDown = 5  //!< lowering the body
-};
-
-inline const char* to_string(GaitState s) {
-  switch (s) {
-    case GaitState::kSitting: return "sitting";
-    case GaitState::kStandingUp: return "standing_up";
-    case GaitState::kStanding: return "standing";
-    case GaitState::kWalking: return "walking";
-    case GaitState::kStopping: return "stopping";
-    case GaitState::kSittingDown: return "sitting_down";
-  }
-  return "standing";
-}
-
-//! The user's body pose offsets (applied while standing and walking).
-template <typename S>
-struct BodyOffsets {
-  Vec3<S> translation_mm;  //!< body shift x, y and height change z [mm]
-  S roll_rad, pitch_rad, yaw_rad;
-  static BodyOffsets zero() { return BodyOffsets{Vec3<S>(), S(0), S(0), S(0)}; }
-};
-// GaitEngine::step_pose() walks the six offsets as an array.
-static_assert(sizeof(BodyOffsets<float>) == 6 * sizeof(float) && sizeof(BodyOffsets<Fixed>) == 6 * sizeof(Fixed),
-              "BodyOffsets: six scalars, no padding");
 
 template <typename S>
 class GaitEngine {
@@ -405,23 +375,13 @@ class GaitEngine {
   // The scalar arrays in anonymous unions: the zeroed-storage constructor
   // need not build them element by element (Fixed's default constructor
   // stores its zero); the default constructor value-initialises them.
-  union {
-    Vec3<S> foot_[kWalkerLegs];
-  };
+  union { Vec3<S> foot_[kWalkerLegs]; };
   bool contact_[kWalkerLegs];
   bool pending_[kWalkerLegs];
-  union {
-    Vec3<S> lift_[kWalkerLegs];
-  };
-  union {
-    Vec3<S> target_[kWalkerLegs];
-  };
-  union {
-    S apex_[kWalkerLegs];
-  };
-  union {
-    S leg_inv_swing_[kWalkerLegs];
-  };
+  union { Vec3<S> lift_[kWalkerLegs]; };
+  union { Vec3<S> target_[kWalkerLegs]; };
+  union { S apex_[kWalkerLegs]; };
+  union { S leg_inv_swing_[kWalkerLegs]; };
   uint32_t leg_swing_len_[kWalkerLegs];
   uint32_t swing_elapsed_[kWalkerLegs];
   int32_t stance_elapsed_[kWalkerLegs];  // phase since touch-down (may start negative)
@@ -431,9 +391,8 @@ class GaitEngine {
 #if STRIDER_BODY_SHIFT
   SupportPolygon<S> next_support_;
 #endif
-  union {
-    S edge_r2_[kWalkerLegs];  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
-  };
+  // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
+  union { S edge_r2_[kWalkerLegs]; };
   bool settled_[kWalkerLegs];  // swinging foot's touch-down point already at touchdown(i)
   bool vel_fresh_;       // vx_, vy_, wz_ are now_s_ x hz_
   bool land_fresh_;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)
