@@ -51,9 +51,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   Controller(Sink& sink, Store& store, const Settings& loaded, SettingsStatus load_status)
       : sink_(sink), store_(store), settings_(loaded), cal_(loaded), load_status_(load_status), cmd_{0, 0, 0},
         out_{0, 0, 0}, mode_(RobotMode::kStanding), avoid_clear_mm_(0) {
-    deadman_.set_timeout(settings_.deadman_ms);
-    speed_pct_ = settings_.speed_pct;
-    sink_.apply_settings(settings_);
+    apply_loaded();
   }
   //! The same from the settings the store gave (settings_store.h).
   Controller(Sink& sink, Store& store, const LoadedSettings& loaded)
@@ -62,11 +60,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   //! members written.
   Controller(ZeroedStorage z, Sink& sink, Store& store, const LoadedSettings& loaded)
       : controller_detail::ParserSlot<kOwnParser>(z), sink_(sink), store_(store), settings_(loaded.settings),
-        cal_(loaded.settings), load_status_(loaded.status), deadman_(z), avoid_(z), sonar_{SonarStatus::kNoData, kSonarFarMm},
-        speed_pct_(50) {
-    deadman_.set_timeout(settings_.deadman_ms);
-    speed_pct_ = settings_.speed_pct;
-    sink_.apply_settings(settings_);
+        cal_(loaded.settings), load_status_(loaded.status), deadman_(z), avoid_(z) {
+    apply_loaded();
   }
 
   //! One received byte at now_ms. Returns true when *w holds a reply line
@@ -293,6 +288,13 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   Settings settings_;
   Calibration cal_;
   SettingsStatus load_status_;
+  // Both constructors: the loaded settings into the deadman, the speed and the sink.
+  void apply_loaded() {
+    deadman_.set_timeout(settings_.deadman_ms);
+    speed_pct_ = settings_.speed_pct;
+    sink_.apply_settings(settings_);
+  }
+
   Deadman deadman_;
   Avoidance avoid_;
   SonarReading sonar_{SonarStatus::kNoData, kSonarFarMm};

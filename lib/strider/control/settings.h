@@ -28,6 +28,9 @@ struct Settings {
   int16_t trim_decideg[kMaxServoJoints]; //!< per-joint trim [0.1 deg], +-300
 };
 
+//! Payload size [bytes]: little-endian fields in declaration order.
+constexpr uint8_t kSettingsPayloadBytes = 4 + 2 + 4 + 2 + 2 + 2 + 1 + 1 + 2 * kMaxServoJoints;
+
 //! Factory settings: nominal oscillator, 50 Hz, 9600 baud (HC-05 default),
 //! 1 s deadman, seed 000's 20 cm avoidance distance with a 40 cm slow band.
 constexpr Settings default_settings() {
@@ -42,7 +45,7 @@ inline void set_default_settings(Settings* s) {
   // A host aligns the fields (two bytes of padding), the AVR does not: the
   // padding zeroed there, so that whole copies of the settings compare byte
   // for byte (no code on the AVR: the condition is false at compile time).
-  if (sizeof(Settings) != 4 + 2 + 4 + 2 + 2 + 2 + 1 + 1 + 2 * kMaxServoJoints) __builtin_memset(s, 0, sizeof *s);
+  if (sizeof(Settings) != kSettingsPayloadBytes) __builtin_memset(s, 0, sizeof *s);
   s->pca_osc_hz = d.pca_osc_hz;
   s->pwm_hz = d.pwm_hz;
   s->baud = d.baud;
@@ -77,8 +80,6 @@ inline bool settings_valid(const Settings& s) {
   return true;
 }
 
-//! Payload size [bytes]: little-endian fields in declaration order.
-constexpr uint8_t kSettingsPayloadBytes = 4 + 2 + 4 + 2 + 2 + 2 + 1 + 1 + 2 * kMaxServoJoints;
 
 namespace detail {
 inline void put_u16(uint8_t*& p, uint16_t v) { *p++ = uint8_t(v); *p++ = uint8_t(v >> 8); }
