@@ -48,6 +48,7 @@
 #include "kinematics/pso.h"
 #include "robots/all_robots.h"
 #include "body_track.h"
+#include "host_robot.h"
 #include "world.h"
 
 namespace {
@@ -57,31 +58,10 @@ using strider_sim::kMaxChannels;
 using strider_sim::World;
 using strider_sim::WorldConfig;
 
-// PCA9685 boards as RobotApp's ServoOutput sees them (as in tools/sim's
-// library driver): 12-bit off counts and the prescale.
-struct Boards {
-  uint16_t ticks[kMaxChannels] = {};
-  bool on[kMaxChannels] = {};
-  uint8_t prescale = 121;
-  void write_ticks(uint8_t ch, uint16_t off_ticks) {
-    if (ch >= kMaxChannels) return;
-    ticks[ch] = off_ticks;
-    on[ch] = true;
-  }
-  void set_prescale(uint8_t p) { prescale = p; }
-  void relax(uint8_t ch) {
-    if (ch < kMaxChannels) on[ch] = false;
-  }
-  void flush() {}
-};
-
 struct Replies {
   int err = 0;
   void send_line(uint8_t, const char* line) { err += std::strncmp(line, "err", 3) == 0; }
 };
-
-using Store = strider::ArrayByteStore<4096>;
-using App = strider::RobotApp<float, Boards, Store>;
 
 struct Candidate {
   float step_length_mm, step_height_mm, cycle_s;
@@ -115,15 +95,6 @@ struct Options {
   std::string walk = "walk 500\n";  // the command walked
   std::string gait;                  // gait to switch to ("" = the model's default)
 };
-
-std::vector<double> sitting_joints(const strider::RobotModel& model) {
-  strider::WalkerMotion<float> motion;
-  std::vector<double> q;
-  if (!motion.configure(model)) return q;
-  for (int i = 0; i < model.leg_count; ++i)
-    for (int j = 0; j < model.dof(); ++j) q.push_back(double(motion.walker().leg(uint8_t(i)).q[uint8_t(j)]));
-  return q;
-}
 
 // A window being measured: the body at its start, and what it did since.
 struct Window {
@@ -183,12 +154,10 @@ std::vector<Rollout> rollout(const strider::RobotModel& model, const strider::Ga
     return out;
   };
   WorldConfig wc;
-  wc.initial_joints_rad = sitting_joints(model);
+  wc.initial_joints_rad = strider_sim::sitting_joints(model);
   World world(model, wc, {});
-  Boards boards;
-  Store store;
-  store.erase();
-  App app(model, boards, store);
+  strider_sim::HostParts parts;
+  strider_sim::HostApp app(model, parts.boards, parts.store);
   Replies link;
   if (!app.begin(0, link)) return fail("robot did not start");
   if (!app.set_gait_params(params)) return fail("walker refused the parameters");
@@ -223,11 +192,7 @@ std::vector<Rollout> rollout(const strider::RobotModel& model, const strider::Ga
       app.tick(uint32_t(next_tick_us), link);
       next_tick_us += strider::kTickPeriodUs;
     }
-    const double tick_us = (double(boards.prescale) + 1.0) * 1e6 / wc.osc_hz;
-    for (int ch = 0; ch < kMaxChannels; ++ch) {
-      pulses[ch].on = boards.on[ch];
-      pulses[ch].pulse_us = double(boards.ticks[ch]) * tick_us;
-    }
+    parts.boards.pulses(wc.osc_hz, pulses);
     world.set_pulses(pulses);
     world.step();
     const double t_walk = double(k + 1) * dt - t_start;  // seconds of walking measured

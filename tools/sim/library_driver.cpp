@@ -3,8 +3,8 @@
 // stage) -> ServoOutput calls -> PCA9685 registers -> pulse widths.
 #include <deque>
 
-#include "control/robot_app.h"
 #include "driver.h"
+#include "host_robot.h"
 
 namespace strider_sim {
 
@@ -16,40 +16,12 @@ constexpr double kByteUs = 10.0 * 1e6 / kBaud;     // start + 8 data + stop bits
 constexpr double kNoEchoUs = 38000;                // HC-SR04's "nothing in range" pulse
 constexpr double kUsPerMmRoundTrip = 2.0 / 0.343;  // sound at 343 m/s, out and back
 
-// The PCA9685 boards as the ServoOutput concept sees them: 12-bit off
-// counts per channel and the prescale; pulse widths follow from the
-// simulated oscillator, as on a real board.
-struct PcaBoards {
-  uint16_t ticks[kMaxChannels] = {};
-  bool on[kMaxChannels] = {};
-  uint8_t prescale = 121;
-  void write_ticks(uint8_t ch, uint16_t off_ticks) {
-    if (ch >= kMaxChannels) return;
-    ticks[ch] = off_ticks;
-    on[ch] = true;
-  }
-  void set_prescale(uint8_t p) { prescale = p; }
-  void relax(uint8_t ch) {
-    if (ch < kMaxChannels) on[ch] = false;
-  }
-  void flush() {}
-};
-
 struct Lines {
   std::vector<std::string>* out;
   void send_line(uint8_t /*port*/, const char* line) { out->push_back(line); }
 };
 
-using Store = strider::ArrayByteStore<4096>;
-using App = strider::RobotApp<float, PcaBoards, Store>;
-
-struct Parts {
-  PcaBoards boards;
-  Store store;
-  Parts() { store.erase(); }  // a new Mega: blank EEPROM, default settings
-};
-
-class LibraryDriver : public Driver, private Parts {
+class LibraryDriver : public Driver, private HostParts {
  public:
   LibraryDriver(const strider::RobotModel& model, double osc_hz, RangeFn range)
       : app_(model, boards, store), osc_hz_(osc_hz), range_(std::move(range)) {}
@@ -132,15 +104,9 @@ class LibraryDriver : public Driver, private Parts {
     update_pulses();
   }
 
-  void update_pulses() {
-    const double tick_us = (double(boards.prescale) + 1.0) * 1e6 / osc_hz_;
-    for (int ch = 0; ch < kMaxChannels; ++ch) {
-      pulses_[ch].on = boards.on[ch];
-      pulses_[ch].pulse_us = double(boards.ticks[ch]) * tick_us;
-    }
-  }
+  void update_pulses() { boards.pulses(osc_hz_, pulses_); }
 
-  App app_;
+  HostApp app_;
   double osc_hz_;
   RangeFn range_;
   std::deque<Rx> rx_;

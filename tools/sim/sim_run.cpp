@@ -10,10 +10,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "control/walker_motion.h"
 #include "gait/gait_params.h"
 #include "body_track.h"
 #include "driver.h"
+#include "host_robot.h"
 #include "robots/all_robots.h"
 
 namespace strider_sim {
@@ -22,17 +22,6 @@ namespace {
 
 constexpr double kWindowS = 2.0;     // speed and yaw-rate window [s]
 constexpr double kFallTiltDeg = 45;  // beyond this the robot has fallen over
-
-// The pose the robot is in at power-up: the walker's sitting pose (feet
-// down, body lowered), which is what its servos will first be sent to.
-std::vector<double> sitting_joints(const strider::RobotModel& model) {
-  strider::WalkerMotion<float> motion;
-  std::vector<double> q;
-  if (!motion.configure(model)) return q;
-  for (int i = 0; i < model.leg_count; ++i)
-    for (int j = 0; j < model.dof(); ++j) q.push_back(double(motion.walker().leg(uint8_t(i)).q[uint8_t(j)]));
-  return q;
-}
 
 double hdist(const Vec& a, const Vec& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
