@@ -39,6 +39,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "bench"))
+from host_info import cpu_name  # noqa: E402
+
 TARGET_COST_MM = 1e-6
 LINK_MM = 70.0
 SEED_T_DEG = (13.34156399, 17.29916917)
@@ -153,16 +156,6 @@ def run_pso_bench(pso_bench, args):
     if not rows:
         raise RuntimeError(f"pso_bench printed nothing (exit {p.returncode}): {p.stderr.strip()}")
     return rows
-
-
-def cpu_name():
-    try:
-        for line in open("/proc/cpuinfo"):
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
 
 
 def main():

@@ -34,7 +34,6 @@ import json
 import math
 import os
 import pathlib
-import platform
 import random
 import re
 import shutil
@@ -45,6 +44,7 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 RESULTS = ROOT / "out" / "results"
 sys.path.insert(0, str(ROOT / "tools" / "bench"))
+from host_info import cpu_name  # noqa: E402
 
 
 class NotMeasured(Exception):
@@ -825,16 +825,6 @@ def git_describe():
         return f"{rev}{' with local changes' if dirty else ''}" if rev else "unknown"
     except OSError:
         return "unknown"
-
-
-def cpu_name():
-    try:
-        for line in open("/proc/cpuinfo"):
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
 
 
 def section(title, fn, *args):
