@@ -14,6 +14,7 @@
 
 #include "gait/gait_library.h"
 #include "gait/walker.h"
+#include "scalar_conv.h"
 
 namespace gaittest {
 
@@ -30,14 +31,8 @@ using Scalars = ::testing::Types<float, Fixed>;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDt = 0.02;  // the firmware's 50 Hz tick [s]
 
-template <typename S>
-S sc(double v) {
-  return strider::scalar<S>(v);
-}
-template <typename S>
-double dbl(S v) {
-  return strider::to_double(v);
-}
+using strider_test::dbl;
+using strider_test::sc;
 
 struct P2 {
   double x, y, z;

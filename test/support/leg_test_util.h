@@ -1,8 +1,8 @@
 // Shared helpers of the leg kinematics tests: scalar conversions, error
 // bounds per scalar, angle differences, worst-case trackers that print the
 // measured maxima, and sentinels for "outputs left untouched".
-#ifndef STRIDER_TEST_KINEMATICS_LEG_TEST_UTIL_H
-#define STRIDER_TEST_KINEMATICS_LEG_TEST_UTIL_H
+#ifndef STRIDER_TEST_SUPPORT_LEG_TEST_UTIL_H
+#define STRIDER_TEST_SUPPORT_LEG_TEST_UTIL_H
 
 #include <gtest/gtest.h>
 
@@ -17,6 +17,7 @@
 #include "kinematics/joints.h"
 #include "math/scalar.h"
 #include "math/vec3.h"
+#include "scalar_conv.h"
 
 namespace legtest {
 
@@ -50,14 +51,9 @@ struct Bounds<Fixed> {
 constexpr double kBoundaryMarginMm = 1.0;
 constexpr double kAxisMarginMm = 1.0;
 
-template <typename S>
-S sc(double v) {
-  return strider::scalar<S>(v);
-}
-template <typename S>
-double dbl(S v) {
-  return strider::to_double(v);
-}
+using strider_test::dbl;
+using strider_test::sc;
+
 template <typename S>
 Vec3<S> vec(double x, double y, double z) {
   return Vec3<S>(sc<S>(x), sc<S>(y), sc<S>(z));
@@ -246,4 +242,4 @@ std::string scalar_name() {
 
 }  // namespace legtest
 
-#endif  // STRIDER_TEST_KINEMATICS_LEG_TEST_UTIL_H
+#endif  // STRIDER_TEST_SUPPORT_LEG_TEST_UTIL_H
