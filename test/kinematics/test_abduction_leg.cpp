@@ -4,7 +4,7 @@
 #include <random>
 
 #include "kinematics/abduction_leg.h"
-#include "leg_test_util.h"
+#include "leg_test_support.h"
 
 namespace {
 
@@ -263,34 +263,17 @@ TYPED_TEST(AbductionLegTest, CartesianGridMatchesReference) {
   using S = TypeParam;
   for (LegSide side : {LegSide::kLeft, LegSide::kRight}) {
     const auto leg = dog12<S>(side);
-    Worst joint("abduction " + std::string(name(side)) + " " + scalar_name<S>() + " IK joint error, grid [deg]");
-    Worst foot("abduction " + std::string(name(side)) + " " + scalar_name<S>() + " reached - nearest [mm]");
-    long statuses[4] = {0, 0, 0, 0};
+    const std::string leg_name = "abduction " + std::string(name(side)) + " " + scalar_name<S>();
+    ReferenceSweep<S> sweep(leg_name + " IK joint error, grid [deg]", leg_name + " reached - nearest [mm]");
     for (double x = -600; x <= 600; x += 40)
       for (double y = -640; y <= 640; y += 40)
         for (double z = -640; z <= 640; z += 40) {
           const Eigen::Vector3d p = quantised<S>(Eigen::Vector3d(x, y, z) + Eigen::Vector3d(0.5, 0.25, 0.125));
           const RefIk r = ref_ik(side, p);
-          typename AbductionLeg<S>::Joints q;
-          Vec3<S> reached;
-          const IkStatus st = checked_ik(leg, vec<S>(p.x(), p.y(), p.z()), q, reached);
-          ++statuses[uint8_t(st)];
-          const IkStatus want = expected_status<S>(r.miss);
-          if (want != IkStatus::kJointLimit) {
-            ASSERT_EQ(st, want) << describe(p) << " miss " << r.miss;
-          }
-          if (st == IkStatus::kUnreachable) continue;
-          foot.add((ev(reached) - r.nearest).norm(), [&] { return describe(p); });
-          if (r.boundary < kBoundaryMarginMm) continue;
-          double e = 0;
-          for (uint8_t j = 0; j < 3; ++j) e = std::max(e, angle_diff(dbl(q[j]), r.q[j]));
-          joint.add(e / kDeg, [&] { return describe(p); });
+          sweep.check(leg, p, expected_status<S>(r.miss), r.miss, r.nearest, r.q,
+                      r.boundary < kBoundaryMarginMm ? Compare::kFoot : Compare::kFootAndJoints);
         }
-    EXPECT_GT(statuses[0], 1000);
-    EXPECT_GT(statuses[1], 100);
-    EXPECT_GT(statuses[3], 1000);
-    EXPECT_LE(joint.max(), Bounds<S>::kJointDeg) << joint.where();
-    EXPECT_LE(foot.max(), Bounds<S>::kFootMm) << foot.where();
+    sweep.expect_results(1000, 100, 1000);
   }
 }
 
@@ -350,15 +333,8 @@ TYPED_TEST(AbductionLegTest, EdgeTable) {
 
 TEST(AbductionLegFloat, NonFiniteTargetsAreUnreachable) {
   for (LegSide side : {LegSide::kLeft, LegSide::kRight}) {
-    const auto leg = dog12<float>(side);
-    for (float b : {float(NAN), float(INFINITY), -float(INFINITY)})
-      for (int axis = 0; axis < 3; ++axis) {
-        Vec3<float> t(50.0f, 44.0f, -400.0f);
-        (axis == 0 ? t.x : axis == 1 ? t.y : t.z) = b;
-        AbductionLeg<float>::Joints q;
-        Vec3<float> reached;
-        EXPECT_EQ(checked_ik(leg, t, q, reached), IkStatus::kUnreachable) << b << " on axis " << axis;
-      }
+    SCOPED_TRACE(name(side));
+    expect_non_finite_targets_unreachable(dog12<float>(side), Vec3<float>(50.0f, 44.0f, -400.0f));
   }
 }
 

@@ -5,7 +5,7 @@
 #include <random>
 
 #include "kinematics/coxa_femur_tibia_leg.h"
-#include "leg_test_util.h"
+#include "leg_test_support.h"
 
 namespace {
 
@@ -195,35 +195,22 @@ TYPED_TEST(CftLegTest, CartesianGridMatchesReference) {
   for (const Geometry& g : {kHexapod, kSpider}) {
     const auto leg = make_leg<S>(g);
     const double reach = g.l1 + g.l2 + g.l3 + 30;
-    Worst joint(std::string("cft ") + g.name + " " + scalar_name<S>() + " IK joint error, Cartesian grid [deg]");
-    Worst foot(std::string("cft ") + g.name + " " + scalar_name<S>() + " reached - nearest reachable [mm]");
-    long statuses[4] = {0, 0, 0, 0};
+    const std::string leg_name = std::string("cft ") + g.name + " " + scalar_name<S>();
+    ReferenceSweep<S> sweep(leg_name + " IK joint error, Cartesian grid [deg]",
+                            leg_name + " reached - nearest reachable [mm]");
     const double step = reach / 20;
     for (double x = -reach; x <= reach; x += step)
       for (double y = -reach; y <= reach; y += step)
         for (double z = g.d1 - reach; z <= g.d1 + reach; z += step) {
           const Eigen::Vector3d p = quantised<S>(Eigen::Vector3d(x, y, z));
           const RefIk r = ref_ik(g, p, KneeBranch::kNegative);
-          typename CoxaFemurTibiaLeg<S>::Joints q;
-          Vec3<S> reached;
-          const IkStatus st = checked_ik(leg, vec<S>(p.x(), p.y(), p.z()), q, reached);
-          ++statuses[uint8_t(st)];
-          const IkStatus want = expected_status<S>(r.miss);
-          if (want != IkStatus::kJointLimit) {
-            ASSERT_EQ(st, want) << describe(p) << " miss " << r.miss;
-          }
-          if (st == IkStatus::kUnreachable || r.side_gap < 0.05) continue;
-          foot.add((ev(reached) - r.nearest).norm(), [&] { return describe(p); });
-          if (r.boundary < kBoundaryMarginMm || r.side_gap < kBoundaryMarginMm) continue;
-          double e = 0;
-          for (uint8_t j = 0; j < 3; ++j) e = std::max(e, angle_diff(dbl(q[j]), r.q[j]));
-          joint.add(e / kDeg, [&] { return describe(p); });
+          const Compare compare = r.side_gap < 0.05 ? Compare::kStatus
+                                  : r.boundary < kBoundaryMarginMm || r.side_gap < kBoundaryMarginMm
+                                      ? Compare::kFoot
+                                      : Compare::kFootAndJoints;
+          sweep.check(leg, p, expected_status<S>(r.miss), r.miss, r.nearest, r.q, compare);
         }
-    EXPECT_GT(statuses[0], 1000);
-    EXPECT_GT(statuses[1], 100);
-    EXPECT_GT(statuses[3], 1000);
-    EXPECT_LE(joint.max(), Bounds<S>::kJointDeg) << joint.where();
-    EXPECT_LE(foot.max(), Bounds<S>::kFootMm) << foot.where();
+    sweep.expect_results(1000, 100, 1000);
   }
 }
 
@@ -287,13 +274,7 @@ TYPED_TEST(CftLegTest, EdgeTable) {
   using S = TypeParam;
   const auto leg = make_leg<S>(kHexapod);
   const double tol = dbl(strider::IkOptions<S>().tolerance_mm);
-  struct Case {
-    const char* what;
-    double x, y, z;
-    IkStatus want;
-    double miss;  // expected |reached - target| [mm], < 0: not checked
-  };
-  const Case cases[] = {
+  const EdgeRow cases[] = {
       {"fully stretched", 240, 0, 32, IkStatus::kOk, 0},
       {"stretched, within tolerance", 240 + 0.5 * tol, 0, 32, IkStatus::kOk, 0.5 * tol},
       {"stretched straight down", 30, 0, 32 - 210, IkStatus::kOk, 0},
@@ -311,15 +292,7 @@ TYPED_TEST(CftLegTest, EdgeTable) {
       {"huge", 0, 0, -1e30, IkStatus::kUnreachable, -1},
       {"Fixed's largest value", 32767, 32767, -32768, IkStatus::kUnreachable, -1},
   };
-  for (const Case& c : cases) {
-    typename CoxaFemurTibiaLeg<S>::Joints q;
-    Vec3<S> reached;
-    const Vec3<S> target = vec<S>(c.x, c.y, c.z);
-    EXPECT_EQ(checked_ik(leg, target, q, reached), c.want) << c.what;
-    if (c.miss >= 0) {
-      EXPECT_NEAR((ev(reached) - ev(target)).norm(), c.miss, Bounds<S>::kFootMm) << c.what;
-    }
-  }
+  for (const EdgeRow& c : cases) expect_edge_row(leg, c);
   // On the yaw axis t1 is free: 0, or the nearest limit when 0 is outside.
   JointLimits<S, 3> lim = JointLimits<S, 3>::unlimited();
   lim.lo[0] = sc<S>(20 * kDeg), lim.hi[0] = sc<S>(60 * kDeg);
@@ -331,15 +304,7 @@ TYPED_TEST(CftLegTest, EdgeTable) {
 }
 
 TEST(CftLegFloat, NonFiniteTargetsAreUnreachable) {
-  const auto leg = make_leg<float>(kHexapod);
-  for (float b : {float(NAN), float(INFINITY), -float(INFINITY)})
-    for (int axis = 0; axis < 3; ++axis) {
-      Vec3<float> t(100.0f, 20.0f, -50.0f);
-      (axis == 0 ? t.x : axis == 1 ? t.y : t.z) = b;
-      CoxaFemurTibiaLeg<float>::Joints q;
-      Vec3<float> reached;
-      EXPECT_EQ(checked_ik(leg, t, q, reached), IkStatus::kUnreachable) << b << " on axis " << axis;
-    }
+  expect_non_finite_targets_unreachable(make_leg<float>(kHexapod), Vec3<float>(100.0f, 20.0f, -50.0f));
 }
 
 TYPED_TEST(CftLegTest, JointLimits) {

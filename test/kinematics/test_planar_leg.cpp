@@ -3,7 +3,7 @@
 #include <random>
 
 #include "kinematics/planar_leg.h"
-#include "leg_test_util.h"
+#include "leg_test_support.h"
 
 namespace {
 
@@ -159,33 +159,18 @@ TYPED_TEST(PlanarLegTest, IkOfFkRoundTripRandom) {
 TYPED_TEST(PlanarLegTest, CartesianGridMatchesReference) {
   using S = TypeParam;
   const auto leg = mammal8<S>(KneeBranch::kNegative);
-  Worst joint("planar " + scalar_name<S>() + " IK joint error, Cartesian grid [deg]");
-  Worst foot("planar " + scalar_name<S>() + " reached - nearest reachable point [mm]");
-  long statuses[4] = {0, 0, 0, 0};
+  ReferenceSweep<S> sweep("planar " + scalar_name<S>() + " IK joint error, Cartesian grid [deg]",
+                          "planar " + scalar_name<S>() + " reached - nearest reachable point [mm]");
   for (double x = -180; x <= 180; x += 3)
     for (double z = -180; z <= 180; z += 3)
       for (double y : {0.0, 0.004, 3.0, 24.0, 26.0}) {
         const Eigen::Vector3d p = quantised<S>(Eigen::Vector3d(x, y, z));
         const RefIk r = ref_ik(p, KneeBranch::kNegative);
-        typename PlanarLeg<S>::Joints q;
-        Vec3<S> reached;
-        const IkStatus st = checked_ik(leg, vec<S>(p.x(), p.y(), p.z()), q, reached);
-        ++statuses[uint8_t(st)];
-        const IkStatus want = expected_status<S>(r.miss);
-        if (want != IkStatus::kJointLimit) {
-          ASSERT_EQ(st, want) << describe(p) << " miss " << r.miss;
-        }
-        if (st == IkStatus::kUnreachable) continue;
-        foot.add((ev(reached) - r.nearest).norm(), [&] { return describe(p); });
-        if (!regular(p)) continue;
-        joint.add(std::max(angle_diff(dbl(q[0]), r.t1), angle_diff(dbl(q[1]), r.t2)) / kDeg,
-                  [&] { return describe(p); });
+        const double q_ref[2] = {r.t1, r.t2};
+        sweep.check(leg, p, expected_status<S>(r.miss), r.miss, r.nearest, q_ref,
+                    regular(p) ? Compare::kFootAndJoints : Compare::kFoot);
       }
-  EXPECT_GT(statuses[0], 1000);
-  EXPECT_GT(statuses[1], 1000);
-  EXPECT_GT(statuses[3], 1000);
-  EXPECT_LE(joint.max(), Bounds<S>::kJointDeg) << joint.where();
-  EXPECT_LE(foot.max(), Bounds<S>::kFootMm) << foot.where();
+  sweep.expect_results(1000, 1000, 1000);
 }
 
 TYPED_TEST(PlanarLegTest, EdgeTable) {
@@ -215,13 +200,7 @@ TYPED_TEST(PlanarLegTest, EdgeTable) {
       {"Fixed's largest value", -32768, 0, 32767, IkStatus::kUnreachable, -1, NAN},
   };
   for (const Case& c : cases) {
-    typename PlanarLeg<S>::Joints q;
-    Vec3<S> reached;
-    const Vec3<S> target = vec<S>(c.x, c.y, c.z);
-    EXPECT_EQ(checked_ik(leg, target, q, reached), c.want) << c.what;
-    if (c.miss >= 0) {
-      EXPECT_NEAR((ev(reached) - ev(target)).norm(), c.miss, Bounds<S>::kFootMm) << c.what;
-    }
+    const typename PlanarLeg<S>::Joints q = expect_edge_row(leg, c);
     if (!std::isnan(c.t2_deg)) {
       EXPECT_NEAR(dbl(q[1]) / kDeg, c.t2_deg, Bounds<S>::kJointDeg) << c.what;
     }
@@ -229,15 +208,7 @@ TYPED_TEST(PlanarLegTest, EdgeTable) {
 }
 
 TEST(PlanarLegFloat, NonFiniteTargetsAreUnreachable) {
-  const auto leg = mammal8<float>();
-  for (float b : {float(NAN), float(INFINITY), -float(INFINITY)})
-    for (int axis = 0; axis < 3; ++axis) {
-      Vec3<float> t(50.0f, 0.0f, -80.0f);
-      (axis == 0 ? t.x : axis == 1 ? t.y : t.z) = b;
-      PlanarLeg<float>::Joints q;
-      Vec3<float> reached;
-      EXPECT_EQ(checked_ik(leg, t, q, reached), IkStatus::kUnreachable) << b << " on axis " << axis;
-    }
+  expect_non_finite_targets_unreachable(mammal8<float>(), Vec3<float>(50.0f, 0.0f, -80.0f));
 }
 
 // Seed 003's joint constraints (table 1): 0 <= t1, t2 <= 20 deg.

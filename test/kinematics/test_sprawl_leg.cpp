@@ -3,7 +3,7 @@
 #include <random>
 
 #include "kinematics/sprawl_leg.h"
-#include "leg_test_util.h"
+#include "leg_test_support.h"
 
 namespace {
 
@@ -147,39 +147,27 @@ TYPED_TEST(SprawlLegTest, IkOfFkRoundTripRandom) {
 TYPED_TEST(SprawlLegTest, CartesianGridMatchesReference) {
   using S = TypeParam;
   const auto leg = sprawl8<S>();
-  Worst joint("sprawl " + scalar_name<S>() + " IK joint error off the torus [deg]");
-  Worst foot("sprawl " + scalar_name<S>() + " reached - nearest torus point [mm]");
+  ReferenceSweep<S> sweep("sprawl " + scalar_name<S>() + " IK joint error off the torus [deg]",
+                          "sprawl " + scalar_name<S>() + " reached - nearest torus point [mm]");
   Worst miss("sprawl " + scalar_name<S>() + " |reached - p| - distance to torus [mm]");
   constexpr double kTieMm = 0.05;  // both halves about as near: either answer is right
-  long statuses[4] = {0, 0, 0, 0};
   for (double x = -180; x <= 180; x += 6)
     for (double y = -180; y <= 180; y += 6)
       for (double z = -130; z <= 130; z += 6.5) {
         const Eigen::Vector3d p = quantised<S>(Eigen::Vector3d(x, y, z));
         const RefIk r = ref_ik(p);
-        typename SprawlLeg<S>::Joints q;
-        Vec3<S> reached;
-        const IkStatus st = checked_ik(leg, vec<S>(p.x(), p.y(), p.z()), q, reached);
-        ++statuses[uint8_t(st)];
+        const double q_ref[2] = {r.t1, r.t2};
+        // The point itself where one half of the torus is clearly nearer; the
+        // distance to the torus (below) everywhere.
+        const Compare compare = r.side_gap < kTieMm                                     ? Compare::kStatus
+                                : r.rho < kAxisMarginMm || r.knee_dist < kAxisMarginMm ? Compare::kFoot
+                                                                                         : Compare::kFootAndJoints;
         const IkStatus want = r.knee_dist == 0.0 ? IkStatus::kUnreachable : expected_status<S>(r.miss);
-        if (want != IkStatus::kJointLimit) {
-          ASSERT_EQ(st, want) << describe(p) << " miss " << r.miss;
-        }
-        if (st == IkStatus::kUnreachable) continue;
-        // The distance to the torus everywhere; the point itself where one
-        // half of the torus is clearly nearer.
-        miss.add(std::fabs((ev(reached) - p).norm() - r.miss), [&] { return describe(p); });
-        if (r.side_gap < kTieMm) continue;
-        foot.add((ev(reached) - r.nearest).norm(), [&] { return describe(p); });
-        if (r.rho < kAxisMarginMm || r.knee_dist < kAxisMarginMm) continue;
-        joint.add(std::max(angle_diff(dbl(q[0]), r.t1), angle_diff(dbl(q[1]), r.t2)) / kDeg,
-                  [&] { return describe(p); });
+        const auto got = sweep.check(leg, p, want, r.miss, r.nearest, q_ref, compare);
+        if (got.status == IkStatus::kUnreachable) continue;
+        miss.add(std::fabs((ev(got.reached) - p).norm() - r.miss), [&] { return describe(p); });
       }
-  EXPECT_GT(statuses[0], 0);
-  EXPECT_GT(statuses[1], 100);
-  EXPECT_GT(statuses[3], 100);
-  EXPECT_LE(joint.max(), Bounds<S>::kJointDeg) << joint.where();
-  EXPECT_LE(foot.max(), Bounds<S>::kFootMm) << foot.where();
+  sweep.expect_results(0, 100, 100);
   EXPECT_LE(miss.max(), Bounds<S>::kFootMm) << miss.where();
 }
 
@@ -187,13 +175,7 @@ TYPED_TEST(SprawlLegTest, EdgeTable) {
   using S = TypeParam;
   const auto leg = sprawl8<S>();
   const double tol = dbl(strider::IkOptions<S>().tolerance_mm);
-  struct Case {
-    const char* what;
-    double x, y, z;
-    IkStatus want;
-    double miss;  // expected |reached - target| [mm], < 0: not checked
-  };
-  const Case cases[] = {
+  const EdgeRow cases[] = {
       {"fully stretched", 145, 0, 0, IkStatus::kOk, 0},
       {"stretched, within tolerance", 145 + 0.5 * tol, 0, 0, IkStatus::kOk, 0.5 * tol},
       {"just outside reach", 150, 0, 0, IkStatus::kClamped, 5},
@@ -208,28 +190,11 @@ TYPED_TEST(SprawlLegTest, EdgeTable) {
       {"huge z", 100, 0, 1e30, IkStatus::kUnreachable, -1},
       {"Fixed's largest value", 32767, -32768, 32767, IkStatus::kUnreachable, -1},
   };
-  for (const Case& c : cases) {
-    typename SprawlLeg<S>::Joints q;
-    Vec3<S> reached;
-    const Vec3<S> target = vec<S>(c.x, c.y, c.z);
-    EXPECT_EQ(checked_ik(leg, target, q, reached), c.want) << c.what;
-    if (c.miss >= 0) {
-      EXPECT_NEAR((ev(reached) - ev(target)).norm(), c.miss, Bounds<S>::kFootMm) << c.what;
-    }
-  }
+  for (const EdgeRow& c : cases) expect_edge_row(leg, c);
 }
 
 TEST(SprawlLegFloat, NonFiniteTargetsAreUnreachable) {
-  const auto leg = sprawl8<float>();
-  const float bad[] = {NAN, INFINITY, -INFINITY};
-  for (float b : bad)
-    for (int axis = 0; axis < 3; ++axis) {
-      Vec3<float> t(100.0f, 0.0f, -50.0f);
-      (axis == 0 ? t.x : axis == 1 ? t.y : t.z) = b;
-      SprawlLeg<float>::Joints q;
-      Vec3<float> reached;
-      EXPECT_EQ(checked_ik(leg, t, q, reached), IkStatus::kUnreachable) << b << " on axis " << axis;
-    }
+  expect_non_finite_targets_unreachable(sprawl8<float>(), Vec3<float>(100.0f, 0.0f, -50.0f));
 }
 
 TYPED_TEST(SprawlLegTest, JointLimits) {
