@@ -2,71 +2,22 @@
 // its stdout parsed as JSON lines, its exit status and stderr checked
 // (host contracts of docs/cli.md).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <algorithm>
-#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli_run.h"
 #include "mini_json.h"
-
-#ifndef STRIDER_CLI_PATH
-#error "STRIDER_CLI_PATH must name the strider executable"
-#endif
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::vector<std::string> lines;  // stdout
-  std::string err;                 // stderr
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
-// Runs `strider <args>` with `input` on stdin.
-Result run(const std::string& args, const std::string& input = "") {
-  const std::string dir = std::filesystem::temp_directory_path().string();
-  std::string in_name = dir + "/strider_cli_in_XXXXXX", err_name = dir + "/strider_cli_err_XXXXXX";
-  char* in_path = in_name.data();
-  char* err_path = err_name.data();
-  const int in_fd = mkstemp(in_path);
-  const int err_fd = mkstemp(err_path);
-  EXPECT_GE(in_fd, 0);
-  EXPECT_GE(err_fd, 0);
-  EXPECT_EQ(write(in_fd, input.data(), input.size()), ssize_t(input.size()));
-  close(in_fd);
-  close(err_fd);
-  const std::string cmd = std::string("'") + STRIDER_CLI_PATH + "' " + args + " < " + in_path + " 2> " + err_path;
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  EXPECT_NE(p, nullptr);
-  std::string out;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-  const int raw = pclose(p);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::stringstream ss(out);
-  std::string line;
-  while (std::getline(ss, line)) r.lines.push_back(line);
-  r.err = slurp(err_path);
-  unlink(in_path);
-  unlink(err_path);
-  return r;
-}
+using Result = strider_test::CliResult;
+using strider_test::run_cli;
 
 mini_json::Value only_line(const Result& r) {
   EXPECT_EQ(r.status, 0) << r.err;
@@ -86,7 +37,7 @@ double distance(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 TEST(Cli, RobotsListsEveryModel) {
-  const Result r = run("robots");
+  const Result r = run_cli("robots");
   ASSERT_EQ(r.status, 0);
   ASSERT_EQ(r.lines.size(), 5u);
   const char* names[] = {"sprawl8", "mammal8", "dog12", "hexapod18", "spider12"};
@@ -106,7 +57,7 @@ TEST(Cli, LegsDescribesEveryLegStandingOk) {
   const char* names[] = {"sprawl8", "mammal8", "dog12", "hexapod18", "spider12"};
   const size_t counts[] = {4, 4, 4, 6, 4};
   for (size_t i = 0; i < 5; ++i) {
-    const Result r = run(std::string("legs --robot ") + names[i]);
+    const Result r = run_cli(std::string("legs --robot ") + names[i]);
     ASSERT_EQ(r.status, 0);
     ASSERT_EQ(r.lines.size(), counts[i]);
     for (size_t k = 0; k < counts[i]; ++k) {
@@ -120,36 +71,36 @@ TEST(Cli, LegsDescribesEveryLegStandingOk) {
 
 TEST(Cli, FkKnownAnswers) {
   // Hexapod leg stretched out (seed 002 eqs 5-7 at zero): (l1 + l2 + l3, 0, d1).
-  mini_json::Value v = only_line(run("fk --robot hexapod18 --leg 0 --joints 0,0,0"));
+  mini_json::Value v = only_line(run_cli("fk --robot hexapod18 --leg 0 --joints 0,0,0"));
   EXPECT_EQ(v["status"].str, "ok");
   expect_near(v["foot_mm"].numbers(), {240, 0, 32}, 1e-3, "hexapod leg frame");
   EXPECT_FALSE(v["within_limits"].b);  // t3 = 0 is outside [-150, -20]
   // Same in the body frame: mount (87.5, 77.5, -20), yaw 45 deg.
-  v = only_line(run("fk --robot hexapod18 --leg 0 --joints 0,0,0 --frame body"));
+  v = only_line(run_cli("fk --robot hexapod18 --leg 0 --joints 0,0,0 --frame body"));
   const double c = std::sqrt(0.5) * 240;
   expect_near(v["foot_mm"].numbers(), {87.5 + c, 77.5 + c, 12}, 1e-3, "hexapod body frame");
   // Sprawl (seed 000 eqs 4-6): t1 = 90, t2 = -90: (0, a1, -a2).
-  v = only_line(run("fk --robot sprawl8 --leg 1 --joints=90,-90"));
+  v = only_line(run_cli("fk --robot sprawl8 --leg 1 --joints=90,-90"));
   expect_near(v["foot_mm"].numbers(), {0, 55, -90}, 1e-3, "sprawl");
   EXPECT_FALSE(v["within_limits"].b);
   // Planar (seed 003 eq 3): hanging straight down.
-  v = only_line(run("fk --robot mammal8 --leg 2 --joints -90,0 --frame body"));
+  v = only_line(run_cli("fk --robot mammal8 --leg 2 --joints -90,0 --frame body"));
   expect_near(v["foot_mm"].numbers(), {-75, -45, -140}, 1e-3, "planar");
   // Abduction: standing joints of the right front leg land on its stance.
-  v = only_line(run("fk --robot dog12 --leg 3 --joints 180,39.3107,102.1427 --frame body"));
+  v = only_line(run_cli("fk --robot dog12 --leg 3 --joints 180,39.3107,102.1427 --frame body"));
   expect_near(v["foot_mm"].numbers(), {300, -184, -350}, 0.01, "dog12");
   EXPECT_TRUE(v["within_limits"].b);
 }
 
 TEST(Cli, IkStatusesAndTheirFields) {
-  mini_json::Value v = only_line(run("ik --robot hexapod18 --leg 0 --foot 120,0,-90"));
+  mini_json::Value v = only_line(run_cli("ik --robot hexapod18 --leg 0 --foot 120,0,-90"));
   EXPECT_EQ(v.keys(), (std::vector<std::string>{"status", "joints_deg", "foot_mm"}));
   EXPECT_EQ(v["status"].str, "ok");
   expect_near(v["joints_deg"].numbers(), {0, 1.9538, -89.6387}, 2e-4, "hexapod stand");
   expect_near(v["foot_mm"].numbers(), {120, 0, -90}, 1e-4, "hexapod stand");
 
   // Off the sprawl leg's torus by a few mm: clamped onto it.
-  v = only_line(run("ik --robot sprawl8 --leg 0 --foot 80,80,-60"));
+  v = only_line(run_cli("ik --robot sprawl8 --leg 0 --foot 80,80,-60"));
   EXPECT_EQ(v["status"].str, "clamped");
   EXPECT_EQ(v["joints_deg"].arr.size(), 2u);
   const std::vector<double> at = v["foot_mm"].numbers();
@@ -157,17 +108,17 @@ TEST(Cli, IkStatusesAndTheirFields) {
   EXPECT_NEAR(std::hypot(rho - 55, at[2]), 90, 1e-3);  // on the torus
 
   // Reachable only past a limit: joint_limit, foot_mm where the clamped joints are.
-  v = only_line(run("ik --robot sprawl8 --leg 0 --foot 94,94,60"));
+  v = only_line(run_cli("ik --robot sprawl8 --leg 0 --foot 94,94,60"));
   EXPECT_EQ(v["status"].str, "joint_limit");
   EXPECT_NEAR(v["joints_deg"].numbers()[1], 30, 1e-3);
-  const mini_json::Value f = only_line(run("fk --robot sprawl8 --leg 0 --joints 45,30"));
+  const mini_json::Value f = only_line(run_cli("fk --robot sprawl8 --leg 0 --joints 45,30"));
   expect_near(v["foot_mm"].numbers(), f["foot_mm"].numbers(), 1e-3, "joint_limit foot");
 
   // Far away: unreachable, exit 0, nulls.
   for (const char* args : {"ik --robot dog12 --leg 1 --foot 2000,0,0", "ik --robot dog12 --leg 1 --foot 1e7,0,0",
                            "ik --robot dog12 --leg 1 --foot 5000,0,0 --scalar fixed",
                            "ik --robot spider12 --leg 3 --foot 0,0,-900 --frame body --scalar fixed"}) {
-    v = only_line(run(args));
+    v = only_line(run_cli(args));
     EXPECT_EQ(v["status"].str, "unreachable") << args;
     EXPECT_TRUE(v["joints_deg"].is_null());
     EXPECT_TRUE(v["foot_mm"].is_null());
@@ -179,7 +130,7 @@ TEST(Cli, IkStatusesAndTheirFields) {
 TEST(Cli, IkThenFkRoundTripsOnEveryLeg) {
   const char* names[] = {"sprawl8", "mammal8", "dog12", "hexapod18", "spider12"};
   for (const char* name : names) {
-    const Result legs = run(std::string("legs --robot ") + name);
+    const Result legs = run_cli(std::string("legs --robot ") + name);
     for (const std::string& line : legs.lines) {
       const mini_json::Value leg = mini_json::parse(line);
       const std::vector<double> stand = leg["stand_mm"].numbers();
@@ -187,14 +138,14 @@ TEST(Cli, IkThenFkRoundTripsOnEveryLeg) {
       args.precision(10);
       args << "ik --robot " << name << " --leg " << int(leg["leg"].num) << " --frame body --foot " << stand[0] << ","
            << stand[1] << "," << stand[2];
-      const mini_json::Value ik = only_line(run(args.str()));
+      const mini_json::Value ik = only_line(run_cli(args.str()));
       ASSERT_EQ(ik["status"].str, "ok") << args.str();
       std::ostringstream fk;
       fk.precision(10);
       fk << "fk --robot " << name << " --leg " << int(leg["leg"].num) << " --frame body --joints ";
       const std::vector<double> q = ik["joints_deg"].numbers();
       for (size_t j = 0; j < q.size(); ++j) fk << (j ? "," : "") << q[j];
-      const mini_json::Value back = only_line(run(fk.str()));
+      const mini_json::Value back = only_line(run_cli(fk.str()));
       EXPECT_LT(distance(back["foot_mm"].numbers(), stand), 0.01) << fk.str();  // 4 printed decimals
       EXPECT_TRUE(back["within_limits"].b);
     }
@@ -213,7 +164,7 @@ TEST(Cli, StdinAnswersEveryLineInOrder) {
       "  130\t 5   -70  \n"
       "4000 0 0\n"
       "110 0 -95";  // no final newline
-  const Result r = run("ik --robot hexapod18 --leg 4 --stdin", input);
+  const Result r = run_cli("ik --robot hexapod18 --leg 4 --stdin", input);
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_EQ(r.lines.size(), 10u);
   const char* want[] = {"ok", "ok", "error", "error", "error", "error", "error", "ok", "unreachable", "ok"};
@@ -226,11 +177,11 @@ TEST(Cli, StdinAnswersEveryLineInOrder) {
     }
   }
   // Good lines give exactly what --foot gives.
-  const Result single = run("ik --robot hexapod18 --leg 4 --foot 130,5,-70");
+  const Result single = run_cli("ik --robot hexapod18 --leg 4 --foot 130,5,-70");
   ASSERT_EQ(single.lines.size(), 1u);
   EXPECT_EQ(r.lines[7], single.lines[0]);
   // Empty input: no output, exit 0.
-  const Result empty = run("ik --robot dog12 --leg 0 --stdin", "");
+  const Result empty = run_cli("ik --robot dog12 --leg 0 --stdin", "");
   EXPECT_EQ(empty.status, 0);
   EXPECT_TRUE(empty.lines.empty());
 }
@@ -241,7 +192,7 @@ TEST(Cli, FixedAgreesWithFloat) {
   const char* names[] = {"sprawl8", "mammal8", "dog12", "hexapod18", "spider12"};
   double worst_deg = 0, worst_mm = 0;
   for (const char* name : names) {
-    const Result legs = run(std::string("legs --robot ") + name);
+    const Result legs = run_cli(std::string("legs --robot ") + name);
     for (const std::string& line : legs.lines) {
       const mini_json::Value leg = mini_json::parse(line);
       const std::vector<double> s = leg["stand_mm"].numbers();
@@ -252,8 +203,8 @@ TEST(Cli, FixedAgreesWithFloat) {
           for (double dz : {-20.0, 0.0, 20.0}) in << s[0] + dx << " " << s[1] + dy << " " << s[2] + dz << "\n";
       const std::string base = std::string("ik --robot ") + name + " --leg " + std::to_string(int(leg["leg"].num)) +
                                " --frame body --stdin --scalar ";
-      const Result f = run(base + "float", in.str());
-      const Result x = run(base + "fixed", in.str());
+      const Result f = run_cli(base + "float", in.str());
+      const Result x = run_cli(base + "fixed", in.str());
       ASSERT_EQ(f.lines.size(), 27u);
       ASSERT_EQ(x.lines.size(), 27u);
       for (size_t i = 0; i < 27; ++i) {
@@ -308,7 +259,7 @@ TEST(Cli, RandomStdinLinesEachGetOneAnswer) {
     in << text << "\n";
     good.push_back(ok);
   }
-  const Result r = run("ik --robot spider12 --leg 2 --frame body --stdin --scalar fixed", in.str());
+  const Result r = run_cli("ik --robot spider12 --leg 2 --frame body --stdin --scalar fixed", in.str());
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_EQ(r.lines.size(), size_t(n));
   for (int i = 0; i < n; ++i) {
@@ -357,7 +308,7 @@ TEST(Cli, BadUsageExitsTwoWithAMessage) {
       "ik --robot dog12 --leg 0 --stdin=yes",
   };
   for (const char* args : bad) {
-    const Result r = run(args);
+    const Result r = run_cli(args);
     EXPECT_EQ(r.status, 2) << "'" << args << "'";
     EXPECT_TRUE(r.lines.empty()) << "'" << args << "'";
     EXPECT_EQ(r.err.rfind("strider: ", 0), 0u) << "'" << args << "': " << r.err;
@@ -367,7 +318,7 @@ TEST(Cli, BadUsageExitsTwoWithAMessage) {
 
 TEST(Cli, HelpGoesToStdout) {
   for (const char* args : {"help", "--help", "ik --help"}) {
-    const Result r = run(args);
+    const Result r = run_cli(args);
     EXPECT_EQ(r.status, 0) << args;
     ASSERT_FALSE(r.lines.empty());
     EXPECT_EQ(r.lines[0].rfind("usage: strider", 0), 0u);

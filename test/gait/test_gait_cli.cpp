@@ -3,60 +3,23 @@
 // column count, row count, value formats and status values; the JSON lines
 // of `gaits`; bad usage exits 2; float and fixed agree.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli_run.h"
 #include "gait/gait_library.h"
 #include "robots/all_robots.h"
 
-#ifndef STRIDER_CLI_PATH
-#error "STRIDER_CLI_PATH must name the strider executable"
-#endif
-
 namespace {
 
-struct Result {
-  int status = -1;
-  std::vector<std::string> lines;  // stdout
-  std::string err;                 // stderr
-};
-
-Result run(const std::string& args) {
-  const std::string dir = std::filesystem::temp_directory_path().string();
-  std::string err_name = dir + "/strider_gait_err_XXXXXX";
-  const int fd = mkstemp(err_name.data());
-  EXPECT_GE(fd, 0);
-  close(fd);
-  const std::string cmd = std::string("'") + STRIDER_CLI_PATH + "' " + args + " 2> " + err_name;
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  EXPECT_NE(p, nullptr);
-  std::string out;
-  char buf[8192];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-  const int raw = pclose(p);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::stringstream ss(out);
-  std::string line;
-  while (std::getline(ss, line)) r.lines.push_back(line);
-  std::ifstream f(err_name);
-  std::stringstream es;
-  es << f.rdbuf();
-  r.err = es.str();
-  std::filesystem::remove(err_name);
-  return r;
-}
+using Result = strider_test::CliResult;
+using strider_test::run_cli;
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> v;
@@ -97,8 +60,8 @@ TEST(GaitCli, CsvFormatForEveryModelAndGait) {
     const strider::GaitList list = strider::gaits_for(*m);
     for (uint8_t g = 0; g < list.count; ++g) {
       SCOPED_TRACE(std::string(m->name) + "/" + list.items[g]->name);
-      const Result r = run(std::string("gait --robot ") + m->name + " --gait " + list.items[g]->name +
-                           " --vx 40 --wz 5 --duration 2 --dt 0.02");
+      const Result r = run_cli(std::string("gait --robot ") + m->name + " --gait " + list.items[g]->name +
+                               " --vx 40 --wz 5 --duration 2 --dt 0.02");
       ASSERT_EQ(r.status, 0) << r.err;
       ASSERT_EQ(r.lines.size(), 1u + 101u);  // header, t = 0 .. 2 s
       const std::vector<std::string> header = expected_header(*m);
@@ -132,7 +95,7 @@ TEST(GaitCli, CsvFormatForEveryModelAndGait) {
 TEST(GaitCli, StandingRowAndMarginMatchTheModel) {
   // The first row is the standing pose: feet at the model's stand_mm, margin
   // the CoM's distance to the nearest support edge plus the pad radius.
-  const Result r = run("gait --robot hexapod18 --gait tripod --vx 50 --duration 0.04 --dt 0.02");
+  const Result r = run_cli("gait --robot hexapod18 --gait tripod --vx 50 --duration 0.04 --dt 0.02");
   ASSERT_EQ(r.status, 0);
   const std::vector<std::string> c = split(r.lines[1], ',');
   for (int i = 0; i < 6; ++i) {
@@ -147,7 +110,7 @@ TEST(GaitCli, StandingRowAndMarginMatchTheModel) {
 
 TEST(GaitCli, GaitsListsEachGaitOfAModel) {
   for (const strider::RobotModel* m : strider::kAllRobots) {
-    const Result r = run(std::string("gaits --robot ") + m->name);
+    const Result r = run_cli(std::string("gaits --robot ") + m->name);
     ASSERT_EQ(r.status, 0);
     const strider::GaitList list = strider::gaits_for(*m);
     ASSERT_EQ(r.lines.size(), size_t(list.count));
@@ -160,7 +123,7 @@ TEST(GaitCli, GaitsListsEachGaitOfAModel) {
       EXPECT_EQ(l.back(), '}');
     }
   }
-  const Result walk = run("gaits --robot mammal8");
+  const Result walk = run_cli("gaits --robot mammal8");
   EXPECT_EQ(walk.lines[0], "{\"name\":\"walk\",\"duty\":0.85,\"offsets\":[0.25,0.75,0,0.5]}");
 }
 
@@ -177,7 +140,7 @@ TEST(GaitCli, BadUsageExits2) {
         "gait --robot sprawl8 --gait walk --duration 1 --dt 0.02 --trajectory circle",
         "gait --robot sprawl8 --gait walk --duration 1 --dt 0.02 --bogus 1", "gaits", "gaits --robot nosuch",
         "gaits --robot sprawl8 --gait walk"}) {
-    const Result r = run(args);
+    const Result r = run_cli(args);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_TRUE(r.lines.empty()) << args;
     EXPECT_NE(r.err.find("strider: "), std::string::npos) << args;
@@ -185,10 +148,10 @@ TEST(GaitCli, BadUsageExits2) {
 }
 
 TEST(GaitCli, LimitedCommandIsReported) {
-  const Result r = run("gait --robot spider12 --gait walk --vx 5000 --duration 0.1 --dt 0.02");
+  const Result r = run_cli("gait --robot spider12 --gait walk --vx 5000 --duration 0.1 --dt 0.02");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.err.find("command limited"), std::string::npos) << r.err;
-  const Result ok = run("gait --robot spider12 --gait walk --vx 5 --duration 0.1 --dt 0.02");
+  const Result ok = run_cli("gait --robot spider12 --gait walk --vx 5 --duration 0.1 --dt 0.02");
   EXPECT_EQ(ok.err, "");
 }
 
@@ -198,8 +161,8 @@ TEST(GaitCli, FloatAndFixedAgree) {
   // so contacts agree on at least 97 % of the rows and feet within one tick
   // of travel (the largest row-to-row move in the float run) plus 0.5 mm.
   const std::string args = "gait --robot hexapod18 --gait ripple --vx 60 --vy 20 --wz 5 --duration 6 --dt 0.02";
-  const Result a = run(args + " --scalar float");
-  const Result b = run(args + " --scalar fixed");
+  const Result a = run_cli(args + " --scalar float");
+  const Result b = run_cli(args + " --scalar fixed");
   ASSERT_EQ(a.status, 0);
   ASSERT_EQ(b.status, 0);
   ASSERT_EQ(a.lines.size(), b.lines.size());
@@ -232,8 +195,8 @@ TEST(GaitCli, FloatAndFixedAgree) {
 
 TEST(GaitCli, TrajectoryOptionChangesTheSwing) {
   const std::string base = "gait --robot dog12 --gait trot --vx 100 --duration 1.5 --dt 0.02 --trajectory ";
-  const Result rect = run(base + "rectangle");
-  const Result bez = run(base + "bezier");
+  const Result rect = run_cli(base + "rectangle");
+  const Result bez = run_cli(base + "bezier");
   ASSERT_EQ(rect.status, 0);
   ASSERT_EQ(bez.status, 0);
   ASSERT_EQ(rect.lines.size(), bez.lines.size());
