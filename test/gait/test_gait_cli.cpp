@@ -167,13 +167,15 @@ TEST(GaitCli, FloatAndFixedAgree) {
   ASSERT_EQ(b.status, 0);
   ASSERT_EQ(a.lines.size(), b.lines.size());
   EXPECT_EQ(a.lines[0], b.lines[0]);
-  auto foot = [](const std::vector<std::string>& c, int i, int v) { return std::stod(c[size_t(v + i * 8)]); };
+  // How far apart leg i's foot is in rows r and s (its x, y, z: columns 2-4 of its 8).
+  auto feet_apart = [](const std::vector<std::string>& r, const std::vector<std::string>& s, int i) {
+    auto foot = [i](const std::vector<std::string>& c, int v) { return std::stod(c[size_t(v + i * 8)]); };
+    return std::hypot(std::hypot(foot(r, 2) - foot(s, 2), foot(r, 3) - foot(s, 3)), foot(r, 4) - foot(s, 4));
+  };
   double tick = 0.0;
   for (size_t k = 2; k < a.lines.size(); ++k) {
     const std::vector<std::string> x = split(a.lines[k], ','), p = split(a.lines[k - 1], ',');
-    for (int i = 0; i < 6; ++i)
-      tick = std::max(tick, std::hypot(std::hypot(foot(x, i, 2) - foot(p, i, 2), foot(x, i, 3) - foot(p, i, 3)),
-                                       foot(x, i, 4) - foot(p, i, 4)));
+    for (int i = 0; i < 6; ++i) tick = std::max(tick, feet_apart(x, p, i));
   }
   size_t same = 0;
   double worst = 0.0;
@@ -183,9 +185,7 @@ TEST(GaitCli, FloatAndFixedAgree) {
     for (int i = 0; i < 6; ++i) contacts = contacts && x[size_t(1 + i * 8)] == y[size_t(1 + i * 8)];
     if (!contacts) continue;
     ++same;
-    for (int i = 0; i < 6; ++i)
-      worst = std::max(worst, std::hypot(std::hypot(foot(x, i, 2) - foot(y, i, 2), foot(x, i, 3) - foot(y, i, 3)),
-                                         foot(x, i, 4) - foot(y, i, 4)));
+    for (int i = 0; i < 6; ++i) worst = std::max(worst, feet_apart(x, y, i));
   }
   EXPECT_GE(double(same) / double(a.lines.size() - 1), 0.97);
   EXPECT_LT(worst, tick + 0.5);
