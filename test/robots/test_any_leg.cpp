@@ -16,19 +16,11 @@ class AnyLegTest : public ::testing::Test {};
 using Scalars = ::testing::Types<float, Fixed>;
 TYPED_TEST_SUITE(AnyLegTest, Scalars);
 
-template <typename S>
-JointLimits<S, 3> limits3(const LegModel& lm) {
-  JointLimits<S, 3> l;
-  for (uint8_t j = 0; j < 3; ++j) {
-    l.lo[j] = deg_to_rad<S>(lm.joint[j].min_deg);
-    l.hi[j] = deg_to_rad<S>(lm.joint[j].max_deg);
-  }
-  return l;
-}
-template <typename S>
-JointLimits<S, 2> limits2(const LegModel& lm) {
-  JointLimits<S, 2> l;
-  for (uint8_t j = 0; j < 2; ++j) {
+// The first N joint limits of a leg model, for a leg type with N joints.
+template <typename S, uint8_t N>
+JointLimits<S, N> limits(const LegModel& lm) {
+  JointLimits<S, N> l;
+  for (uint8_t j = 0; j < N; ++j) {
     l.lo[j] = deg_to_rad<S>(lm.joint[j].min_deg);
     l.hi[j] = deg_to_rad<S>(lm.joint[j].max_deg);
   }
@@ -80,14 +72,18 @@ TYPED_TEST(AnyLegTest, DispatchesToTheModelsLegType) {
       const S l1 = scalar<S>(m->links.l1_mm), l2 = scalar<S>(m->links.l2_mm);
       const S l3 = scalar<S>(m->links.l3_mm), d1 = scalar<S>(m->links.d1_mm);
       switch (m->kind) {
-        case LegKind::kSprawl: expect_same(any, SprawlLeg<S>::make(l1, l2, limits2<S>(lm)), probes<S>(lm), m->name); break;
-        case LegKind::kPlanar: expect_same(any, PlanarLeg<S>::make(l1, l2, limits2<S>(lm)), probes<S>(lm), m->name); break;
+        case LegKind::kSprawl:
+          expect_same(any, SprawlLeg<S>::make(l1, l2, limits<S, 2>(lm)), probes<S>(lm), m->name);
+          break;
+        case LegKind::kPlanar:
+          expect_same(any, PlanarLeg<S>::make(l1, l2, limits<S, 2>(lm)), probes<S>(lm), m->name);
+          break;
         case LegKind::kCoxaFemurTibia:
-          expect_same(any, CoxaFemurTibiaLeg<S>::make(d1, l1, l2, l3, limits3<S>(lm)), probes<S>(lm), m->name);
+          expect_same(any, CoxaFemurTibiaLeg<S>::make(d1, l1, l2, l3, limits<S, 3>(lm)), probes<S>(lm), m->name);
           break;
         case LegKind::kAbduction:
           expect_same(any,
-                      AbductionLeg<S>::make(l1, l2, l3, limits3<S>(lm),
+                      AbductionLeg<S>::make(l1, l2, l3, limits<S, 3>(lm),
                                             lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight),
                       probes<S>(lm), m->name);
           break;
