@@ -32,6 +32,21 @@ double atan2_error(int32_t y, int32_t x) {
   return static_cast<double>(strider_test::angle_diff(got, exact));
 }
 
+// Calls f(y, x) for the points on circles of radius 1.37 * 2^-14 to 2^14 at
+// angle steps of pi / 2048 (~0.0015 rad), rounded to Q16.16 raw.
+template <typename F>
+void for_each_circle_point(F&& f) {
+  for (int e = -14; e <= 14; ++e) {
+    const long double r = std::ldexp(1.0L, e) * 1.37L;
+    for (int k = -2048; k <= 2048; ++k) {
+      const long double th = k * kPiL / 2048;
+      const int32_t x = static_cast<int32_t>(std::lround(r * std::cos(th) * 65536.0L));
+      const int32_t y = static_cast<int32_t>(std::lround(r * std::sin(th) * 65536.0L));
+      f(y, x);
+    }
+  }
+}
+
 TEST(FixedAtanTables, AtanTableMatchesItsFormula) {
   for (uint16_t i = 0; i <= 256; ++i) {
     const double t = i / 256.0;
@@ -66,19 +81,10 @@ TEST(FixedAtan2, EdgeTable) {
   EXPECT_NEAR(strider::atan2(Fixed(-300), Fixed(-400)).to_double(), std::atan2(-300.0, -400.0), kAtan2AbsError);
 }
 
-// Points on circles of radius 2^-14 to 2^14 at angle steps of ~0.0015 rad,
-// rounded to Q16.16, against the exact angle of the rounded point.
+// The circle points against the exact angle of each rounded point.
 TEST(FixedAtan2, CircleSweep) {
   MaxError err("Fixed atan2, circle sweep");
-  for (int e = -14; e <= 14; ++e) {
-    const long double r = std::ldexp(1.0L, e) * 1.37L;
-    for (int k = -2048; k <= 2048; ++k) {
-      const long double th = k * kPiL / 2048;
-      const int32_t x = static_cast<int32_t>(std::lround(r * std::cos(th) * 65536.0L));
-      const int32_t y = static_cast<int32_t>(std::lround(r * std::sin(th) * 65536.0L));
-      err.add(atan2_error(y, x), y, x);
-    }
-  }
+  for_each_circle_point([&](int32_t y, int32_t x) { err.add(atan2_error(y, x), y, x); });
   err.expect_below(kAtan2AbsError);
 }
 
@@ -128,15 +134,7 @@ TEST(FixedAtan2Lean, RandomPairsCirclesAndEdges) {
     const int32_t y = rng.raw_any(), x = rng.raw_any();
     err.add(lean_error(y, x), y, x);
   }
-  for (int e = -14; e <= 14; ++e) {
-    const long double r = std::ldexp(1.0L, e) * 1.37L;
-    for (int k = -2048; k <= 2048; ++k) {
-      const long double th = k * kPiL / 2048;
-      const int32_t x = static_cast<int32_t>(std::lround(r * std::cos(th) * 65536.0L));
-      const int32_t y = static_cast<int32_t>(std::lround(r * std::sin(th) * 65536.0L));
-      err.add(lean_error(y, x), y, x);
-    }
-  }
+  for_each_circle_point([&](int32_t y, int32_t x) { err.add(lean_error(y, x), y, x); });
   const int32_t edges[] = {0, 1, -1, 0x7FFFFF, 0x1000000, -0x1000000, Fixed::kMaxRaw, Fixed::kMinRaw, 12345678};
   for (int32_t y : edges)
     for (int32_t x : edges) err.add(lean_error(y, x), y, x);
