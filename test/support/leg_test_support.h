@@ -22,7 +22,9 @@ enum class Compare { kStatus, kFoot, kFootAndJoints };
 //! against the one the reference's miss gives, the reached point against the
 //! reference's nearest reachable point, the joints against the reference's;
 //! at the end the worst errors against Bounds<S> and how many targets gave
-//! each status (so the sweep is known to cover all three).
+//! each status (so the sweep is known to cover all three). A wrong status is
+//! counted and the first one named at the end, as RoundTrip does, so one bad
+//! region does not print a failure per target.
 template <typename S>
 class ReferenceSweep {
  public:
