@@ -37,11 +37,10 @@ import sys
 import time
 
 from results_avr import avr, avr_data
-from results_common import RESULTS, ROOT, Cli, NotMeasured, git_describe, not_measured, section, table
+from results_common import RESULTS, ROOT, Cli, NotMeasured, cpu_name, git_describe, not_measured, section, table
 from results_kinematics import accuracy, seed001, seed002
 from results_pso import pso_data, pso_vs_pyswarms, seed003_pso
 from results_sim import gait_tune_data, gait_tuning, physics_check, seed000, seed003_distance, sim_metrics, sim_table
-from host_info import cpu_name  # tools/bench, which results_common puts on sys.path
 
 
 SECTION_GROUPS = {"pso": ("Seed 003: PSO joint angles, table 4", "PSO: Strider against pyswarms"),

@@ -12,6 +12,7 @@ RESULTS = ROOT / "out" / "results"
 # tools/bench's host_info, bench_report and firmware_figures, for the page's
 # stamp and the AVR section.
 sys.path.insert(0, str(ROOT / "tools" / "bench"))
+from host_info import cpu_name  # noqa: E402,F401 (the page's stamp, re-exported)
 
 
 class NotMeasured(Exception):
