@@ -132,5 +132,27 @@ INSTANTIATE_TEST_SUITE_P(AllModelsAndGaits, WalkSweep, ::testing::Range(0, int(a
                            return n;
                          });
 
+// A configuration built before, for a model passed at the address of
+// another one (a copy overwritten in place): the walker builds its legs from
+// what the model is now, not from what was at that address before.
+TEST(WalkerPrebuiltConfig, LegsFollowTheModelNotItsAddress) {
+  auto config_of = [](const RobotModel& m) {
+    strider::AnyLeg<float> legs[6];
+    for (uint8_t i = 0; i < m.leg_count; ++i) strider::AnyLeg<float>::from_model(m, i, legs[i]);
+    return strider::make_gait_config(m, legs, *strider::gait_params_for(m), strider::gait_params_for(m)->shape);
+  };
+  static Walker<float> w;  // large: not on the stack
+  RobotModel m = strider::kMammal8;
+  ASSERT_TRUE(w.configure(m, strider::kGaitTrot, config_of(m)));
+  EXPECT_EQ(w.leg_model(0).kind(), strider::LegKind::kPlanar);
+  m = strider::kSpider12;  // four legs too, of another kind
+  ASSERT_TRUE(w.configure(m, strider::kGaitWalk, config_of(m)));
+  EXPECT_EQ(w.leg_model(0).kind(), strider::kSpider12.kind);
+  ASSERT_NE(strider::kSpider12.kind, strider::LegKind::kPlanar);
+  // and its feet are where the spider's legs reach
+  w.tick(0.02f);
+  for (uint8_t i = 0; i < m.leg_count; ++i) EXPECT_EQ(w.leg(i).status, IkStatus::kOk) << int(i);
+}
+
 }  // namespace
 }  // namespace gaittest

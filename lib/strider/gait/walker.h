@@ -59,7 +59,7 @@ struct LegResult : LegFeet<S> {
 template <typename S>
 class Walker {
  public:
-  Walker() : model_(nullptr), dof_(0), turn_(), proj_() {}
+  Walker() : dof_(0), turn_(), proj_() {}
   //! In zeroed storage (zeroed_storage.h): only the non-zero defaults written.
   explicit Walker(ZeroedStorage z) : Walker(z, SharedLegs<(kWalkerSolvers < kWalkerLegs)>()) {}
 
@@ -101,12 +101,14 @@ class Walker {
   }
 
   //! The same with a configuration built before (make_gait_config): no IK
-  //! search, so a robot can switch configurations quickly.
+  //! search, so a robot can switch configurations quickly. The legs are
+  //! built from `model` every time (a copy of a few fields each; a model is
+  //! not recognised by its address, which a copy that is gone may share).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>& config,
                  bool sitting = false) {
     if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || config.leg_count != model.leg_count)
       return false;
-    if (model_ != &model && !build_legs(model)) return false;
+    if (!build_legs(model)) return false;
     engine_.configure(config, gait, sitting);
     reset_legs();
     return true;
@@ -344,12 +346,10 @@ class Walker {
   }
 
   bool build_legs(const RobotModel& model) {
-    model_ = nullptr;
     dof_ = 0;
     if (!legs_.build(model)) return false;
     for (uint8_t i = 0; i < model.leg_count; ++i) turn_[i] = turn_of(legs_.mount(i));
     proj_ = ReachProjection<S>::make(model);
-    model_ = &model;
     dof_ = model.dof();
     return true;
   }
@@ -357,7 +357,6 @@ class Walker {
   //! The legs from flash (no copy of the whole constant on the stack);
   //! false when they do not fit or have another leg count than the gait's.
   bool build_legs(const WalkerLegs<S>* flash_legs, uint8_t gait_legs) {
-    model_ = nullptr;
     dof_ = 0;
     const uint8_t legs = flash_u8(&flash_legs->leg_count);
     if (flash_u8(&flash_legs->ok) == 0 || legs > kWalkerLegs || legs != gait_legs) return false;
@@ -378,10 +377,7 @@ class Walker {
       : legs_(walker_detail::LegSolvers<S>::zeroed(z)), proj_{LegKind(), z, z, int8_t()}, engine_(z) {}
   Walker(ZeroedStorage z, SharedLegs<false>) : proj_{LegKind(), z, z, int8_t()}, engine_(z) {}
 
-  // Which model the legs were built from: compared by configure(), never
-  // read (the model may have been a copy that is gone, robot_app.h).
-  // model_, dof_, turn_ and proj_ are zero, by the constructors.
-  const RobotModel* model_;
+  // dof_, turn_ and proj_ are zero, by the constructors.
   uint8_t dof_;  // joints per leg; 0 before the legs are built
   walker_detail::LegSolvers<S> legs_;
   uint8_t turn_[kWalkerLegs];  // MountTurn of each leg's mount
