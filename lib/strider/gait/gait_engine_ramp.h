@@ -163,15 +163,23 @@ void GaitEngine<S>::replan() {
 
 template <typename S>
 void GaitEngine<S>::start_walking() {
-  relabel_ = STRIDER_GAIT_RELABEL && base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
-  quarter_ = 0;
-  if (relabel_) {
+  const bool relabel = STRIDER_GAIT_RELABEL && base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
+  int8_t quarter = 0;
+  if (relabel) {
     // The quadrant of the direction of travel (seed 000 section 3.3).
     const S ax = abs(to_.vx_mm_s), ay = abs(to_.vy_mm_s);
-    quarter_ = ax >= ay ? (to_.vx_mm_s >= S(0) ? 0 : 2) : (to_.vy_mm_s > S(0) ? 1 : 3);
-    load_table(gait_table::relabeled(base_, quarter_));
+    quarter = ax >= ay ? (to_.vx_mm_s >= S(0) ? 0 : 2) : (to_.vy_mm_s > S(0) ? 1 : 3);
+  }
+  // configure(), set_gait() and the last start loaded the table that
+  // relabel_ and quarter_ name: the same one again (the usual start) keeps
+  // its phases and fractions (the duty's conversions cost ~5,000 cycles in
+  // Fixed, in the tick that also starts the ramp and the first swings).
+  if (relabel != relabel_ || quarter != quarter_) {
+    relabel_ = relabel;
+    quarter_ = quarter;
+    load_table(relabel ? gait_table::relabeled(base_, quarter) : base_);
   } else {
-    load_table(base_);
+    invalidate_touchdown();
   }
   clock_.reset(start_phase_);
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
@@ -191,17 +199,20 @@ template <typename S>
 void GaitEngine<S>::step_command(S dt) {
   if (ramp_ < S(1)) {
     ramp_ = min_of(ramp_ + dt * hz_ * ramp_per_cycle_, S(1));
-    now_s_ = lerp(from_s_, to_s_, ramp_);
-    if (ramp_ >= S(1)) now_s_ = to_s_;
+    if (ramp_ >= S(1)) {
+      now_s_ = to_s_;
+    } else {
+      ramp_stride(now_s_, ramp_);
+    }
     vel_fresh_ = false;
     land_fresh_ = false;
   }
   if (vel_fresh_) return;  // a steady command: the products of the last tick hold
   // Products into locals first, then the stores: written member by member,
   // avr-gcc 5.4 -Os clobbered the address register between two of them.
-  const Stride s = now_s_;
-  const S vx = s.x * s.hz, vy = s.y * s.hz, wz = s.yaw * s.hz;
-  hz_ = s.hz;
+  const S hz = now_s_.hz;
+  const S vx = now_s_.x * hz, vy = now_s_.y * hz, wz = now_s_.yaw * hz;
+  hz_ = hz;
   vx_ = vx;
   vy_ = vy;
   wz_ = wz;
@@ -213,7 +224,7 @@ void GaitEngine<S>::step_command(S dt) {
 //! (duty cycles, stride-per-cycle units): stance.h's touchdown_point, its
 //! leg-independent terms computed once per change of the landing stride.
 template <typename S>
-Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
+void GaitEngine<S>::touchdown_xy(uint8_t i, S& x, S& y) {
   const Vec3<S>& h = cfg_.home[i];
   if (!td_fresh_) {
     if (land_s_.yaw == S(0)) {
@@ -225,13 +236,18 @@ Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
       td_cos_ = S(1);
       td_sin_ = S(0);
       td_fresh_ = true;
-      return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
+    } else {
+      touchdown_turning();
     }
-    touchdown_turning();
   }
   // Sums in place (scalar.h's add_inline: the same bits as operator+).
-  if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
-  return Vec3<S>(td_cos_ * h.x - td_sin_ * h.y + td_dx_, td_sin_ * h.x + td_cos_ * h.y + td_dy_, h.z);
+  if (td_sin_ == S(0) && td_cos_ == S(1)) {
+    x = add_inline(h.x, td_dx_);
+    y = add_inline(h.y, td_dy_);
+    return;
+  }
+  x = td_cos_ * h.x - td_sin_ * h.y + td_dx_;
+  y = td_sin_ * h.x + td_cos_ * h.y + td_dy_;
 }
 
 template <typename S>
@@ -247,9 +263,11 @@ template <typename S>
 void GaitEngine<S>::update_landing() {
   // The ramp over and land_s_ already now_s_: nothing changes.
   if (land_fresh_) return;
-  const Stride was = land_s_;
-  land_s_ = now_s_;
-  if (ramp_ < S(1)) {
+  // The old stride's three parts, not the whole Stride (a byte loop).
+  const S was_x = land_s_.x, was_y = land_s_.y, was_yaw = land_s_.yaw;
+  if (ramp_ >= S(1)) {
+    land_s_ = now_s_;
+  } else {
     const S left = S(1) - ramp_;              // ramp still to go
     // Products, not divisions, on every tick of a ramp: the ramp's length
     // and 1 / duty are at hand.
@@ -257,9 +275,9 @@ void GaitEngine<S>::update_landing() {
     // lag = (integral over the stance of (1 - ramp)) / stance
     constexpr S half = scalar<S>(0.5);
     const S lag = finish >= duty_ ? left - ramp_per_cycle_ * duty_ * half : left * finish * half * inv_stance_;
-    land_s_ = lerp(from_s_, to_s_, S(1) - lag);
+    ramp_stride(land_s_, S(1) - lag);
   }
-  if (!(land_s_.x == was.x && land_s_.y == was.y && land_s_.yaw == was.yaw)) invalidate_touchdown();
+  if (!(land_s_.x == was_x && land_s_.y == was_y && land_s_.yaw == was_yaw)) invalidate_touchdown();
   land_fresh_ = ramp_ >= S(1);
 }
 
