@@ -298,10 +298,23 @@ class GaitEngine {
   bool at_edge(uint8_t i) const { return beyond_edge(i, foot_[i]); }
   //! Where foot i lands, x and y (z is home's; stance.h's touchdown_point
   //! with cached terms): into place, no point returned and copied.
-  void touchdown_xy(uint8_t i, S& x, S& y);
-  //! touchdown_xy()'s offset and rotation of a turning landing stride (out of
+  //! Inline in its two callers (a ramp's every tick steers each foot in the
+  //! air): the straight case is two sums, the rest out of line.
+  STRIDER_ALWAYS_INLINE void touchdown_xy(uint8_t i, S& x, S& y) {
+    if (!td_fresh_) refresh_touchdown();
+    // Sums in place (scalar.h's add_inline: the same bits as operator+).
+    if (td_sin_ == S(0) && td_cos_ == S(1)) {
+      x = add_inline(cfg_.home[i].x, td_dx_);
+      y = add_inline(cfg_.home[i].y, td_dy_);
+    } else {
+      touchdown_turned(i, x, y);
+    }
+  }
+  //! touchdown_xy()'s offset and rotation of the landing stride (out of
   //! line: the straight path's registers and member addresses stay few).
-  STRIDER_NOINLINE void touchdown_turning();
+  STRIDER_NOINLINE void refresh_touchdown();
+  //! touchdown_xy() of a turning landing stride (rotation and offset).
+  STRIDER_NOINLINE void touchdown_turned(uint8_t i, S& x, S& y) const;
   //! The mean stride per cycle over the next stance along the ramp.
   void update_landing();
 

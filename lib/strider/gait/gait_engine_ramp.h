@@ -211,7 +211,11 @@ void GaitEngine<S>::step_command(S dt) {
   // Products into locals first, then the stores: written member by member,
   // avr-gcc 5.4 -Os clobbered the address register between two of them.
   const S hz = now_s_.hz;
-  const S vx = now_s_.x * hz, vy = now_s_.y * hz, wz = now_s_.yaw * hz;
+  // A zero part (a straight or forward walk's) needs no product: the
+  // rate is positive, so the product would be that zero, its sign included.
+  const S vx = now_s_.x * hz;
+  const S vy = now_s_.y == S(0) ? now_s_.y : now_s_.y * hz;
+  const S wz = now_s_.yaw == S(0) ? now_s_.yaw : now_s_.yaw * hz;
   hz_ = hz;
   vx_ = vx;
   vy_ = vy;
@@ -223,38 +227,30 @@ void GaitEngine<S>::step_command(S dt) {
 //! Where foot i lands: centred on home for the travel of its coming stance
 //! (duty cycles, stride-per-cycle units): stance.h's touchdown_point, its
 //! leg-independent terms computed once per change of the landing stride.
+//! touchdown_xy()'s terms for the landing stride: once per change of it
+//! (every tick of a ramp), out of line.
 template <typename S>
-void GaitEngine<S>::touchdown_xy(uint8_t i, S& x, S& y) {
-  const Vec3<S>& h = cfg_.home[i];
-  if (!td_fresh_) {
-    if (land_s_.yaw == S(0)) {
-      // Not turning: touchdown_point() is home + the stride x duty / 2.
-      constexpr S half = scalar<S>(0.5);
-      const S k = duty_ * half;
-      td_dx_ = land_s_.x * k;
-      td_dy_ = land_s_.y * k;
-      td_cos_ = S(1);
-      td_sin_ = S(0);
-      td_fresh_ = true;
-    } else {
-      touchdown_turning();
-    }
+void GaitEngine<S>::refresh_touchdown() {
+  if (land_s_.yaw == S(0)) {
+    // Not turning: touchdown_point() is home + the stride x duty / 2.
+    constexpr S half = scalar<S>(0.5);
+    const S k = duty_ * half;
+    td_dx_ = land_s_.x * k;
+    td_dy_ = land_s_.y * k;
+    td_cos_ = S(1);
+    td_sin_ = S(0);
+  } else {
+    // touchdown_point()'s offset and rotation for every home (stance.h).
+    touchdown_frame(land_s_.x, land_s_.y, land_s_.yaw, duty_, td_dx_, td_dy_, td_cos_, td_sin_);
   }
-  // Sums in place (scalar.h's add_inline: the same bits as operator+).
-  if (td_sin_ == S(0) && td_cos_ == S(1)) {
-    x = add_inline(h.x, td_dx_);
-    y = add_inline(h.y, td_dy_);
-    return;
-  }
-  x = td_cos_ * h.x - td_sin_ * h.y + td_dx_;
-  y = td_sin_ * h.x + td_cos_ * h.y + td_dy_;
+  td_fresh_ = true;
 }
 
 template <typename S>
-void GaitEngine<S>::touchdown_turning() {
-  // touchdown_point()'s offset and rotation for every home (stance.h).
-  touchdown_frame(land_s_.x, land_s_.y, land_s_.yaw, duty_, td_dx_, td_dy_, td_cos_, td_sin_);
-  td_fresh_ = true;
+void GaitEngine<S>::touchdown_turned(uint8_t i, S& x, S& y) const {
+  const Vec3<S>& h = cfg_.home[i];
+  x = td_cos_ * h.x - td_sin_ * h.y + td_dx_;
+  y = td_sin_ * h.x + td_cos_ * h.y + td_dy_;
 }
 
 //! The mean stride per cycle over the next stance (duty cycles) along the
