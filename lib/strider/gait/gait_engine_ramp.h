@@ -224,11 +224,10 @@ void GaitEngine<S>::step_command(S dt) {
   vel_fresh_ = true;
 }
 
-//! Where foot i lands: centred on home for the travel of its coming stance
-//! (duty cycles, stride-per-cycle units): stance.h's touchdown_point, its
-//! leg-independent terms computed once per change of the landing stride.
-//! touchdown_xy()'s terms for the landing stride: once per change of it
-//! (every tick of a ramp), out of line.
+//! touchdown_xy()'s terms: where a foot lands is centred on home for the
+//! travel of its coming stance (duty cycles, stride-per-cycle units),
+//! stance.h's touchdown_point; its leg-independent terms are computed once
+//! per change of the landing stride (every tick of a ramp), out of line.
 template <typename S>
 void GaitEngine<S>::refresh_touchdown() {
   if (land_s_.yaw == S(0)) {
