@@ -250,12 +250,22 @@ class GaitEngine {
   //! Moves the ramp on by this tick's phase; the velocity is stride x rate.
   void step_command(S dt);
 
-  static Stride lerp(const Stride& a, const Stride& b, S t) {
-    return Stride{mix(a.x, b.x, t), mix(a.y, b.y, t), mix(a.yaw, b.yaw, t), mix(a.hz, b.hz, t)};
+  //! out = from_s_ + (to_s_ - from_s_) t, field by field into place (a
+  //! returned Stride is copied with a byte loop by avr-gcc, twice per ramp
+  //! tick).
+  STRIDER_NOINLINE void ramp_stride(Stride& out, S t) const {
+    // The four parts in their order (x, y, yaw, hz) at their byte offsets
+    // in Stride (four scalars, no padding): one mix() inlined, one loop.
+    const unsigned char* a = reinterpret_cast<const unsigned char*>(&from_s_);
+    const unsigned char* b = reinterpret_cast<const unsigned char*>(&to_s_);
+    unsigned char* o = reinterpret_cast<unsigned char*>(&out);
+    for (uint8_t k = 0; k < 4; ++k, a += sizeof(S), b += sizeof(S), o += sizeof(S))
+      *reinterpret_cast<S*>(o) = mix(*reinterpret_cast<const S*>(a), *reinterpret_cast<const S*>(b), t);
   }
   //! a + (b - a) t; a itself when b has a's bits (a ramp's unchanged parts:
   //! the yaw of a straight walk, a rate kept), the formula's value then.
-  static S mix(S a, S b, S t) { return leg_ik::same_bits(a, b) ? a : a + (b - a) * t; }
+  //! Sums in place (scalar.h's add_inline: the same bits as the operators).
+  STRIDER_ALWAYS_INLINE static S mix(S a, S b, S t) { return leg_ik::same_bits(a, b) ? a : add_inline(a, sub_inline(b, a) * t); }
 
   bool near_home(uint8_t i) const {
     return abs(foot_[i].x - cfg_.home[i].x) <= cfg_.home_tolerance_mm &&
@@ -286,11 +296,25 @@ class GaitEngine {
     return d > stride * share;
   }
   bool at_edge(uint8_t i) const { return beyond_edge(i, foot_[i]); }
-  //! Where foot i lands (stance.h's touchdown_point with cached terms).
-  Vec3<S> touchdown(uint8_t i);
-  //! touchdown()'s offset and rotation of a turning landing stride (out of
+  //! Where foot i lands, x and y (z is home's; stance.h's touchdown_point
+  //! with cached terms): into place, no point returned and copied.
+  //! Inline in its two callers (a ramp's every tick steers each foot in the
+  //! air): the straight case is two sums, the rest out of line.
+  STRIDER_ALWAYS_INLINE void touchdown_xy(uint8_t i, S& x, S& y) {
+    if (!td_fresh_) refresh_touchdown();
+    // Sums in place (scalar.h's add_inline: the same bits as operator+).
+    if (td_sin_ == S(0) && td_cos_ == S(1)) {
+      x = add_inline(cfg_.home[i].x, td_dx_);
+      y = add_inline(cfg_.home[i].y, td_dy_);
+    } else {
+      touchdown_turned(i, x, y);
+    }
+  }
+  //! touchdown_xy()'s offset and rotation of the landing stride (out of
   //! line: the straight path's registers and member addresses stay few).
-  STRIDER_NOINLINE void touchdown_turning();
+  STRIDER_NOINLINE void refresh_touchdown();
+  //! touchdown_xy() of a turning landing stride (rotation and offset).
+  STRIDER_NOINLINE void touchdown_turned(uint8_t i, S& x, S& y) const;
   //! The mean stride per cycle over the next stance along the ramp.
   void update_landing();
 
@@ -298,7 +322,7 @@ class GaitEngine {
   //! step_walk()'s feet in the air, apart so that its locals do not widen
   //! step_walk()'s stack frame (on the AVR, offsets past 63 bytes cost extra).
   STRIDER_NOINLINE void step_swing(S dt);
-  //! step_swing()'s move of foot i's touch-down point toward touchdown(i) by at
+  //! step_swing()'s move of foot i's touch-down point toward touchdown_xy(i) by at
   //! most max_step (out of line: its point stays out of the loop's frame).
   STRIDER_NOINLINE void settle_target(uint8_t i, S max_step);
   //! step_walk()'s test of a foot at its edge: would `step` take it farther
@@ -310,6 +334,9 @@ class GaitEngine {
   //! step_walk()'s lift-offs (edge: the feet at the edge of their reach
   //! before the step), apart for the same reason; true when a foot lifted.
   STRIDER_NOINLINE bool step_lift(const bool* edge);
+  //! step_lift()'s lift-off of foot i (out of line: the loop over the legs
+  //! keeps its registers; the touch-down point is written in place).
+  STRIDER_NOINLINE void lift_foot(uint8_t i, bool crossed);
 #if STRIDER_BODY_SHIFT
   void step_shift(S dt);
 #endif
@@ -393,7 +420,7 @@ class GaitEngine {
 #endif
   // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
   union { S edge_r2_[kWalkerLegs]; };
-  bool settled_[kWalkerLegs];  // swinging foot's touch-down point already at touchdown(i)
+  bool settled_[kWalkerLegs];  // swinging foot's touch-down point already at touchdown_xy(i)
   bool vel_fresh_;       // vx_, vy_, wz_ are now_s_ x hz_
   bool land_fresh_;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)
   // Odometry step in the world frame, kept while the body does not turn.

@@ -163,15 +163,23 @@ void GaitEngine<S>::replan() {
 
 template <typename S>
 void GaitEngine<S>::start_walking() {
-  relabel_ = STRIDER_GAIT_RELABEL && base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
-  quarter_ = 0;
-  if (relabel_) {
+  const bool relabel = STRIDER_GAIT_RELABEL && base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
+  int8_t quarter = 0;
+  if (relabel) {
     // The quadrant of the direction of travel (seed 000 section 3.3).
     const S ax = abs(to_.vx_mm_s), ay = abs(to_.vy_mm_s);
-    quarter_ = ax >= ay ? (to_.vx_mm_s >= S(0) ? 0 : 2) : (to_.vy_mm_s > S(0) ? 1 : 3);
-    load_table(gait_table::relabeled(base_, quarter_));
+    quarter = ax >= ay ? (to_.vx_mm_s >= S(0) ? 0 : 2) : (to_.vy_mm_s > S(0) ? 1 : 3);
+  }
+  // configure(), set_gait() and the last start loaded the table that
+  // relabel_ and quarter_ name: the same one again (the usual start) keeps
+  // its phases and fractions (the duty's conversions cost ~5,000 cycles in
+  // Fixed, in the tick that also starts the ramp and the first swings).
+  if (relabel != relabel_ || quarter != quarter_) {
+    relabel_ = relabel;
+    quarter_ = quarter;
+    load_table(relabel ? gait_table::relabeled(base_, quarter) : base_);
   } else {
-    load_table(base_);
+    invalidate_touchdown();
   }
   clock_.reset(start_phase_);
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
@@ -191,17 +199,24 @@ template <typename S>
 void GaitEngine<S>::step_command(S dt) {
   if (ramp_ < S(1)) {
     ramp_ = min_of(ramp_ + dt * hz_ * ramp_per_cycle_, S(1));
-    now_s_ = lerp(from_s_, to_s_, ramp_);
-    if (ramp_ >= S(1)) now_s_ = to_s_;
+    if (ramp_ >= S(1)) {
+      now_s_ = to_s_;
+    } else {
+      ramp_stride(now_s_, ramp_);
+    }
     vel_fresh_ = false;
     land_fresh_ = false;
   }
   if (vel_fresh_) return;  // a steady command: the products of the last tick hold
   // Products into locals first, then the stores: written member by member,
   // avr-gcc 5.4 -Os clobbered the address register between two of them.
-  const Stride s = now_s_;
-  const S vx = s.x * s.hz, vy = s.y * s.hz, wz = s.yaw * s.hz;
-  hz_ = s.hz;
+  const S hz = now_s_.hz;
+  // A zero part (a straight or forward walk's) needs no product: the
+  // rate is positive, so the product would be that zero, its sign included.
+  const S vx = now_s_.x * hz;
+  const S vy = now_s_.y == S(0) ? now_s_.y : now_s_.y * hz;
+  const S wz = now_s_.yaw == S(0) ? now_s_.yaw : now_s_.yaw * hz;
+  hz_ = hz;
   vx_ = vx;
   vy_ = vy;
   wz_ = wz;
@@ -209,36 +224,32 @@ void GaitEngine<S>::step_command(S dt) {
   vel_fresh_ = true;
 }
 
-//! Where foot i lands: centred on home for the travel of its coming stance
-//! (duty cycles, stride-per-cycle units): stance.h's touchdown_point, its
-//! leg-independent terms computed once per change of the landing stride.
+//! touchdown_xy()'s terms: where a foot lands is centred on home for the
+//! travel of its coming stance (duty cycles, stride-per-cycle units),
+//! stance.h's touchdown_point; its leg-independent terms are computed once
+//! per change of the landing stride (every tick of a ramp), out of line.
 template <typename S>
-Vec3<S> GaitEngine<S>::touchdown(uint8_t i) {
-  const Vec3<S>& h = cfg_.home[i];
-  if (!td_fresh_) {
-    if (land_s_.yaw == S(0)) {
-      // Not turning: touchdown_point() is home + the stride x duty / 2.
-      constexpr S half = scalar<S>(0.5);
-      const S k = duty_ * half;
-      td_dx_ = land_s_.x * k;
-      td_dy_ = land_s_.y * k;
-      td_cos_ = S(1);
-      td_sin_ = S(0);
-      td_fresh_ = true;
-      return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
-    }
-    touchdown_turning();
+void GaitEngine<S>::refresh_touchdown() {
+  if (land_s_.yaw == S(0)) {
+    // Not turning: touchdown_point() is home + the stride x duty / 2.
+    constexpr S half = scalar<S>(0.5);
+    const S k = duty_ * half;
+    td_dx_ = land_s_.x * k;
+    td_dy_ = land_s_.y * k;
+    td_cos_ = S(1);
+    td_sin_ = S(0);
+  } else {
+    // touchdown_point()'s offset and rotation for every home (stance.h).
+    touchdown_frame(land_s_.x, land_s_.y, land_s_.yaw, duty_, td_dx_, td_dy_, td_cos_, td_sin_);
   }
-  // Sums in place (scalar.h's add_inline: the same bits as operator+).
-  if (td_sin_ == S(0) && td_cos_ == S(1)) return Vec3<S>(add_inline(h.x, td_dx_), add_inline(h.y, td_dy_), h.z);
-  return Vec3<S>(td_cos_ * h.x - td_sin_ * h.y + td_dx_, td_sin_ * h.x + td_cos_ * h.y + td_dy_, h.z);
+  td_fresh_ = true;
 }
 
 template <typename S>
-void GaitEngine<S>::touchdown_turning() {
-  // touchdown_point()'s offset and rotation for every home (stance.h).
-  touchdown_frame(land_s_.x, land_s_.y, land_s_.yaw, duty_, td_dx_, td_dy_, td_cos_, td_sin_);
-  td_fresh_ = true;
+void GaitEngine<S>::touchdown_turned(uint8_t i, S& x, S& y) const {
+  const Vec3<S>& h = cfg_.home[i];
+  x = td_cos_ * h.x - td_sin_ * h.y + td_dx_;
+  y = td_sin_ * h.x + td_cos_ * h.y + td_dy_;
 }
 
 //! The mean stride per cycle over the next stance (duty cycles) along the
@@ -247,9 +258,11 @@ template <typename S>
 void GaitEngine<S>::update_landing() {
   // The ramp over and land_s_ already now_s_: nothing changes.
   if (land_fresh_) return;
-  const Stride was = land_s_;
-  land_s_ = now_s_;
-  if (ramp_ < S(1)) {
+  // The old stride's three parts, not the whole Stride (a byte loop).
+  const S was_x = land_s_.x, was_y = land_s_.y, was_yaw = land_s_.yaw;
+  if (ramp_ >= S(1)) {
+    land_s_ = now_s_;
+  } else {
     const S left = S(1) - ramp_;              // ramp still to go
     // Products, not divisions, on every tick of a ramp: the ramp's length
     // and 1 / duty are at hand.
@@ -257,9 +270,9 @@ void GaitEngine<S>::update_landing() {
     // lag = (integral over the stance of (1 - ramp)) / stance
     constexpr S half = scalar<S>(0.5);
     const S lag = finish >= duty_ ? left - ramp_per_cycle_ * duty_ * half : left * finish * half * inv_stance_;
-    land_s_ = lerp(from_s_, to_s_, S(1) - lag);
+    ramp_stride(land_s_, S(1) - lag);
   }
-  if (!(land_s_.x == was.x && land_s_.y == was.y && land_s_.yaw == was.yaw)) invalidate_touchdown();
+  if (!(land_s_.x == was_x && land_s_.y == was_y && land_s_.yaw == was_yaw)) invalidate_touchdown();
   land_fresh_ = ramp_ >= S(1);
 }
 

@@ -135,22 +135,28 @@ bool GaitEngine<S>::step_lift(const bool* edge) {
       continue;
     }
     if (!may_lift(i)) continue;  // deferred until enough feet are down
-    lift_[i] = foot_[i];
-    contact_[i] = false;
-    pending_[i] = false;
-    leg_swing_len_[i] = swing_len_;
-    leg_inv_swing_[i] = inv_swing_;
-    swing_elapsed_[i] = crossed ? uint32_t(Phase16(clock_.now() - offset_[i])) : 0u;
-    target_[i] = touchdown(i);
-    settled_[i] = true;
-    // Only the semicircle's apex depends on the step's length (a square root).
-    apex_[i] = swing_shape_built(SwingShape::kSemicircle) && cfg_.shape == SwingShape::kSemicircle
-                   ? swing_apex_mm(cfg_.shape, hypot(target_[i].x - lift_[i].x, target_[i].y - lift_[i].y),
-                                   cfg_.step_height_mm)
-                   : cfg_.step_height_mm;
+    lift_foot(i, crossed);
     changed = true;
   }
   return changed;
+}
+
+template <typename S>
+void GaitEngine<S>::lift_foot(uint8_t i, bool crossed) {
+  lift_[i] = foot_[i];
+  contact_[i] = false;
+  pending_[i] = false;
+  leg_swing_len_[i] = swing_len_;
+  leg_inv_swing_[i] = inv_swing_;
+  swing_elapsed_[i] = crossed ? uint32_t(Phase16(clock_.now() - offset_[i])) : 0u;
+  Vec3<S>& t = target_[i];
+  touchdown_xy(i, t.x, t.y);
+  t.z = cfg_.home[i].z;
+  settled_[i] = true;
+  // Only the semicircle's apex depends on the step's length (a square root).
+  apex_[i] = swing_shape_built(SwingShape::kSemicircle) && cfg_.shape == SwingShape::kSemicircle
+                 ? swing_apex_mm(cfg_.shape, hypot(t.x - lift_[i].x, t.y - lift_[i].y), cfg_.step_height_mm)
+                 : cfg_.step_height_mm;
 }
 
 template <typename S>
@@ -200,10 +206,15 @@ bool GaitEngine<S>::step_takes_out(uint8_t i, const BodyStep<S>& step) const {
 
 template <typename S>
 void GaitEngine<S>::settle_target(uint8_t i, S max_step) {
-  const Vec3<S> want = touchdown(i);
-  target_[i].x += clamp(want.x - target_[i].x, -max_step, max_step);
-  target_[i].y += clamp(want.y - target_[i].y, -max_step, max_step);
-  settled_[i] = target_[i].x == want.x && target_[i].y == want.y;
+  // Every tick of a ramp, for every foot in the air: x and y into place,
+  // sums in place (scalar.h: the same bits as the operators).
+  S wx, wy;
+  touchdown_xy(i, wx, wy);
+  Vec3<S>& t = target_[i];
+  const S lo = neg_inline(max_step);
+  t.x = add_inline(t.x, clamp(sub_inline(wx, t.x), lo, max_step));
+  t.y = add_inline(t.y, clamp(sub_inline(wy, t.y), lo, max_step));
+  settled_[i] = t.x == wx && t.y == wy;
 }
 
 #if STRIDER_BODY_SHIFT
