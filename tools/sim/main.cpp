@@ -13,13 +13,14 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: strider-sim SCENARIO --out DIR [--firmware ELF] [--step SECONDS] [--iterations N]\n"
-               "                   [--solver mlcp|pgs] [--cfm CFM] [--friction MU] [--quiet]\n"
+               "                   [--solver mlcp|pgs] [--cfm CFM] [--friction MU] [--foot-pad MM] [--quiet]\n"
                "  SCENARIO  scenario file (robot, duration, obstacle box, at T send TEXT)\n"
                "  --out     output folder: metrics.json, trace.csv, robot.log\n"
                "  --firmware  run the firmware ELF on the virtual Mega instead of the library\n"
                "  --step    physics step [s] (default 0.004)\n"
                "  --solver  constraint solver: mlcp (default, exact) or pgs (iterative)\n"
-               "  --cfm     constraint force mixing of every solver row (default 1e-6; 0: none)\n");
+               "  --cfm     constraint force mixing of every solver row (default 1e-6; 0: none)\n"
+               "  --foot-pad  feet as capsules across the leg, MM to each side (default 0: balls)\n");
   return 2;
 }
 
@@ -61,6 +62,10 @@ int main(int argc, char** argv) {
     } else if (a == "--friction") {
       if (!value(&v)) return usage();
       opt.world.foot_friction = std::atof(v.c_str());
+    } else if (a == "--foot-pad") {
+      if (!value(&v)) return usage();
+      opt.world.foot_pad_half_mm = std::atof(v.c_str());
+      if (!(opt.world.foot_pad_half_mm >= 0 && opt.world.foot_pad_half_mm <= 50)) return usage();
     } else if (a == "--quiet") {
       quiet = true;
     } else if (a == "-h" || a == "--help") {

@@ -48,6 +48,11 @@ struct WorldConfig {
   // 1 / (cfm x step), 2.5e8 N/m at 4 ms: regularisation, not a soft contact.
   double solver_cfm = 1e-6;
   double foot_friction = 0.8;      // rubber foot caps on a laminate (Formica) board
+  // 0: each foot is a ball of the model's foot radius. > 0: a capsule of that
+  // radius across the leg (along its last joint's axis), this far from the
+  // foot point to each side [mm]: a rubber tube over the shank's end, for
+  // trying wider feet (docs/simulator.md, mammal8 item 9).
+  double foot_pad_half_mm = 0;
   double body_friction = 0.4;      // aluminium or plastic on the same board
   double osc_hz = 25e6;            // the simulated PCA9685 boards' oscillator [Hz]
   double link_density_g_mm = 0.1;  // leg brackets and links [g per mm of link]

@@ -222,9 +222,17 @@ World::World(const strider::RobotModel& model, const WorldConfig& cfg, const std
         w.shapes.push_back(std::move(cap));
       }
       if (last) {
-        std::unique_ptr<btSphereShape> foot(new btSphereShape(btScalar(w.foot_radius_mm * kMm)));
+        std::unique_ptr<btConvexInternalShape> foot;
         btTransform t;
         t.setIdentity();
+        if (cfg.foot_pad_half_mm > 0) {
+          // Bullet's capsule lies along its local y axis: turned onto the joint's axis.
+          const Vec& axis = geom[i].joint[j].axis;
+          foot.reset(new btCapsuleShape(btScalar(w.foot_radius_mm * kMm), btScalar(2 * cfg.foot_pad_half_mm * kMm)));
+          t.setRotation(shortestArcQuat(btVector3(0, 1, 0), btVector3(btScalar(axis.x), btScalar(axis.y), btScalar(axis.z))));
+        } else {
+          foot.reset(new btSphereShape(btScalar(w.foot_radius_mm * kMm)));
+        }
         t.setOrigin(to_bt_m(sub(end, p.com)));
         compound->addChildShape(t, foot.get());
         w.shapes.push_back(std::move(foot));
