@@ -253,15 +253,7 @@ class GaitEngine {
   //! out = from_s_ + (to_s_ - from_s_) t, field by field into place (a
   //! returned Stride is copied with a byte loop by avr-gcc, twice per ramp
   //! tick).
-  STRIDER_NOINLINE void ramp_stride(Stride& out, S t) const {
-    // The four parts in their order (x, y, yaw, hz) at their byte offsets
-    // in Stride (four scalars, no padding): one mix() inlined, one loop.
-    const unsigned char* a = reinterpret_cast<const unsigned char*>(&from_s_);
-    const unsigned char* b = reinterpret_cast<const unsigned char*>(&to_s_);
-    unsigned char* o = reinterpret_cast<unsigned char*>(&out);
-    for (uint8_t k = 0; k < 4; ++k, a += sizeof(S), b += sizeof(S), o += sizeof(S))
-      *reinterpret_cast<S*>(o) = mix(*reinterpret_cast<const S*>(a), *reinterpret_cast<const S*>(b), t);
-  }
+  STRIDER_NOINLINE void ramp_stride(Stride& out, S t) const;
   //! a + (b - a) t; a itself when b has a's bits (a ramp's unchanged parts:
   //! the yaw of a straight walk, a rate kept), the formula's value then.
   //! Sums in place (scalar.h's add_inline: the same bits as the operators).
@@ -300,16 +292,7 @@ class GaitEngine {
   //! with cached terms): into place, no point returned and copied.
   //! Inline in its two callers (a ramp's every tick steers each foot in the
   //! air): the straight case is two sums, the rest out of line.
-  STRIDER_ALWAYS_INLINE void touchdown_xy(uint8_t i, S& x, S& y) {
-    if (!td_fresh_) refresh_touchdown();
-    // Sums in place (scalar.h's add_inline: the same bits as operator+).
-    if (td_sin_ == S(0) && td_cos_ == S(1)) {
-      x = add_inline(cfg_.home[i].x, td_dx_);
-      y = add_inline(cfg_.home[i].y, td_dy_);
-    } else {
-      touchdown_turned(i, x, y);
-    }
-  }
+  STRIDER_ALWAYS_INLINE void touchdown_xy(uint8_t i, S& x, S& y);
   //! touchdown_xy()'s offset and rotation of the landing stride (out of
   //! line: the straight path's registers and member addresses stay few).
   STRIDER_NOINLINE void refresh_touchdown();

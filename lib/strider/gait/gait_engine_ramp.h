@@ -224,6 +224,29 @@ void GaitEngine<S>::step_command(S dt) {
   vel_fresh_ = true;
 }
 
+template <typename S>
+void GaitEngine<S>::ramp_stride(Stride& out, S t) const {
+  // The four parts in their order (x, y, yaw, hz) at their byte offsets in
+  // Stride (four scalars, no padding): one mix() inlined, one loop.
+  const unsigned char* a = reinterpret_cast<const unsigned char*>(&from_s_);
+  const unsigned char* b = reinterpret_cast<const unsigned char*>(&to_s_);
+  unsigned char* o = reinterpret_cast<unsigned char*>(&out);
+  for (uint8_t k = 0; k < 4; ++k, a += sizeof(S), b += sizeof(S), o += sizeof(S))
+    *reinterpret_cast<S*>(o) = mix(*reinterpret_cast<const S*>(a), *reinterpret_cast<const S*>(b), t);
+}
+
+template <typename S>
+inline void GaitEngine<S>::touchdown_xy(uint8_t i, S& x, S& y) {
+  if (!td_fresh_) refresh_touchdown();
+  // Sums in place (scalar.h's add_inline: the same bits as operator+).
+  if (td_sin_ == S(0) && td_cos_ == S(1)) {
+    x = add_inline(cfg_.home[i].x, td_dx_);
+    y = add_inline(cfg_.home[i].y, td_dy_);
+  } else {
+    touchdown_turned(i, x, y);
+  }
+}
+
 //! touchdown_xy()'s terms: where a foot lands is centred on home for the
 //! travel of its coming stance (duty cycles, stride-per-cycle units),
 //! stance.h's touchdown_point; its leg-independent terms are computed once
