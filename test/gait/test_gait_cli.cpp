@@ -14,6 +14,7 @@
 
 #include "cli_run.h"
 #include "gait/gait_library.h"
+#include "gait/gait_params.h"
 #include "robots/all_robots.h"
 
 namespace {
@@ -124,7 +125,50 @@ TEST(GaitCli, GaitsListsEachGaitOfAModel) {
     }
   }
   const Result walk = run_cli("gaits --robot mammal8");
-  EXPECT_EQ(walk.lines[0], "{\"name\":\"walk\",\"duty\":0.85,\"offsets\":[0.25,0.75,0,0.5]}");
+  EXPECT_EQ(walk.lines[0], "{\"name\":\"walk\",\"duty\":0.85,\"offsets\":[0.25,0.75,0,0.5],\"min_margin_mm\":11}");
+}
+
+// min_margin_mm of `gaits`: the value after "min_margin_mm": in line l.
+double min_margin_of(const std::string& l) {
+  const std::string key = "\"min_margin_mm\":";
+  const size_t at = l.find(key);
+  if (at == std::string::npos) return NAN;
+  return std::strtod(l.c_str() + at + key.size(), nullptr);
+}
+
+// The lowest static margin tells static gaits from dynamic ones. Known
+// answers: a pace keeps the two feet of one side down, so its support is the
+// line through them; on mammal8's planar legs (seed 003) the feet stay at the
+// hips' y = +-45 mm, the CoM at y = 0, and the 5 mm pads reach 5 mm toward
+// it: -40 mm, whatever the stride. A trot's diagonal passes through the CoM:
+// within a pad radius of 0. The walk keeps its configured margin
+// (gait_params.h), a hexapod's tripod three feet around the CoM.
+TEST(GaitCli, GaitsMinMarginSeparatesStaticFromDynamicGaits) {
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    SCOPED_TRACE(m->name);
+    const Result r = run_cli(std::string("gaits --robot ") + m->name);
+    ASSERT_EQ(r.status, 0);
+    const strider::GaitParams& params = *strider::gait_params_for(*m);
+    for (const std::string& l : r.lines) {
+      const double margin = min_margin_of(l);
+      ASSERT_TRUE(std::isfinite(margin)) << l;
+      if (l.find("\"name\":\"walk\"") != std::string::npos) {
+        EXPECT_GE(margin, params.margin_mm - 0.05) << l;
+      }
+      if (l.find("\"name\":\"pace\"") != std::string::npos) {
+        EXPECT_LT(margin, -30.0) << l;
+      }
+      if (m->leg_count == 6) {
+        EXPECT_GT(margin, 50.0) << l;
+      }
+    }
+  }
+  const Result mammal8 = run_cli("gaits --robot mammal8");
+  ASSERT_EQ(mammal8.lines.size(), 4u);
+  const double half_width = strider::kMammal8.legs[0].mount_mm.y;
+  const double pad = strider::gait_params_for(strider::kMammal8)->foot_radius_mm;
+  EXPECT_NEAR(min_margin_of(mammal8.lines[2]), -(half_width - pad), 0.05) << mammal8.lines[2];  // pace
+  EXPECT_NEAR(min_margin_of(mammal8.lines[1]), 0.0, pad) << mammal8.lines[1];                   // trot
 }
 
 TEST(GaitCli, BadUsageExits2) {

@@ -2,6 +2,7 @@
 // the CSV of ARCHITECTURE.md's "Gaits" contract; list the gaits of a model.
 #include "cmd_gait.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -140,6 +141,30 @@ int walk(const Run& r, std::ostream& out, std::ostream& err) {
   return 0;
 }
 
+// The smallest static stability margin [mm] of `g` on `m`: the CoM's ground
+// projection to the edge of the feet's support region (stability.h; negative:
+// outside), over two cycles of walking straight ahead at the model's
+// preferred speed (step length / cycle time, gait_params.h), after three
+// cycles to settle. A gait with a negative margin cannot stand still on the
+// feet it keeps down: only its motion keeps it up (a pace on legs that cannot
+// move the body sideways; docs/gaits.md).
+double steady_min_margin_mm(const RobotModel& m, const GaitTable& g) {
+  static strider::Walker<float> w;  // a few kB: keep it off the stack
+  const GaitParams& params = *strider::gait_params_for(m);
+  if (!w.configure(m, g, params, params.shape)) return 0.0;
+  strider::GaitEngine<float>& e = w.engine();
+  e.set_command(params.step_length_mm / params.cycle_s, 0.0f, 0.0f, 100.0f);
+  constexpr float kDt = 0.01f;
+  const long settle = long(3.0f * params.cycle_s / kDt);
+  const long measure = long(2.0f * params.cycle_s / kDt);
+  double lowest = 1e9;
+  for (long k = 0; k < settle + measure; ++k) {
+    w.tick(kDt);
+    if (k >= settle && e.state() == strider::GaitState::kWalking) lowest = std::min(lowest, double(w.margin_mm()));
+  }
+  return lowest;
+}
+
 }  // namespace
 
 std::string gait_usage_text() {
@@ -149,7 +174,9 @@ std::string gait_usage_text() {
          "      frame], joints [deg], IK status, then margin_mm. No velocity: steps in place.\n"
          "      SHAPE: rectangle, semicircle, ellipse, cycloid, parabola, bezier\n"
          "  gaits --robot R\n"
-         "      the gaits of a model: {\"name\",\"duty\",\"offsets\"} per line\n";
+         "      the gaits of a model, one JSON line each: name, duty, offsets, and\n"
+         "      min_margin_mm (lowest static stability margin walking; < 0: only\n"
+         "      the motion keeps the robot up)\n";
 }
 
 int cmd_gaits(const std::vector<std::string>& args, std::ostream& out) {
@@ -160,7 +187,14 @@ int cmd_gaits(const std::vector<std::string>& args, std::ostream& out) {
     const GaitTable& g = *list.items[i];
     std::vector<double> offsets;
     for (uint8_t k = 0; k < g.leg_count; ++k) offsets.push_back(double(g.offset[k]));
-    out << JsonObject().add("name", g.name).add("duty", double(g.duty)).add("offsets", offsets).str() << "\n";
+    const double margin = std::round(steady_min_margin_mm(m, g) * 10.0) / 10.0;
+    out << JsonObject()
+               .add("name", g.name)
+               .add("duty", double(g.duty))
+               .add("offsets", offsets)
+               .add("min_margin_mm", margin)
+               .str()
+        << "\n";
   }
   return 0;
 }

@@ -16,7 +16,10 @@ namespace strider_cli {
 // on stderr when the command was limited to the robot's limits.
 int cmd_gait(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
-// strider gaits --robot R: one JSON line per gait {"name","duty","offsets"}.
+// strider gaits --robot R: one JSON line per gait {"name","duty","offsets",
+// "min_margin_mm"}: the lowest static stability margin over two cycles of
+// walking forward at the model's preferred speed [mm]; negative: the CoM
+// leaves the support polygon (a dynamic gait on this robot).
 int cmd_gaits(const std::vector<std::string>& args, std::ostream& out);
 
 // The usage lines of both commands, for the CLI's usage text.
