@@ -186,6 +186,54 @@ TEST(SimScenarios, FootPadsKeepTheMammal8TrotLevel) {
   EXPECT_GT(pad.metrics.distance_mm, ball.metrics.distance_mm + 25.0);
 }
 
+// The highest a foot was in the air once the robot had stood up [mm above
+// the lowest foot on the ground]: the swing apex the gait walked.
+double highest_swing_mm(const RunResult& r) {
+  double ground = 1e9, top = -1e9;
+  for (const strider_sim::TraceRow& row : r.trace) {
+    if (row.t_s < r.metrics.ready_s + 1.0) continue;
+    for (size_t i = 0; i < row.feet_mm.size(); ++i) {
+      if (row.contact[i]) ground = std::min(ground, row.feet_mm[i].z);
+      else top = std::max(top, row.feet_mm[i].z);
+    }
+  }
+  return top - ground;
+}
+
+// strider-sim --step-height/--step-length/--cycle/--swing: the walker takes
+// them instead of the model's defaults (gait_params.h: mammal8 20 mm
+// steps), in library mode only; what it cannot walk is an error, not a run.
+TEST(SimScenarios, GaitOverridesChangeTheStepInLibraryModeOnly) {
+  strider_sim::Scenario sc;
+  std::string error;
+  ASSERT_TRUE(strider_sim::load_scenario(std::string(STRIDER_SIM_SCENARIOS) + "/mammal8_walk_100mm.scenario", &sc,
+                                         &error))
+      << error;
+  strider_sim::RunOptions opt;
+  const RunResult standard = strider_sim::run_scenario(sc, opt);
+  opt.gait.step_height_mm = 8.0;
+  opt.gait.swing = "bezier";
+  const RunResult low = strider_sim::run_scenario(sc, opt);
+  ASSERT_TRUE(standard.ok && low.ok) << standard.error << low.error;
+  const double standard_mm = highest_swing_mm(standard), low_mm = highest_swing_mm(low);
+  std::printf("[ metrics  ] mammal8 walk: swing apex %.1f mm by default, %.1f mm with --step-height 8\n", standard_mm,
+              low_mm);
+  EXPECT_GT(standard_mm, 15.0);
+  EXPECT_LT(standard_mm, 30.0);
+  EXPECT_LT(low_mm, 12.0);
+  EXPECT_GT(low.metrics.distance_mm, 50.0);  // and still walks
+
+  opt.gait.swing = "zigzag";
+  const RunResult bad_shape = strider_sim::run_scenario(sc, opt);
+  EXPECT_FALSE(bad_shape.ok);
+  EXPECT_NE(bad_shape.error.find("zigzag"), std::string::npos) << bad_shape.error;
+  opt.gait.swing.clear();
+  opt.firmware_elf = "firmware.elf";
+  const RunResult firmware = strider_sim::run_scenario(sc, opt);
+  EXPECT_FALSE(firmware.ok);
+  EXPECT_NE(firmware.error.find("library mode"), std::string::npos) << firmware.error;
+}
+
 TEST(SimScenarios, AvoidanceKeepsTheBodyClearOfAWall) {
   const RunResult r = run_file("sprawl8_obstacle");
   const Metrics& m = r.metrics;

@@ -42,9 +42,23 @@ class Driver {
   }
 };
 
+// Gait defaults to walk instead of the model's (gait_params.h), for trying a
+// gait's step and cycle without a rebuild; 0 (or an empty swing): the
+// model's value. Library mode only: a firmware has its defaults built in.
+struct GaitOverrides {
+  double step_height_mm = 0;  // swing apex above the ground [mm]
+  double step_length_mm = 0;  // preferred stride [mm]
+  double cycle_s = 0;         // cycle time at low speed [s]
+  std::string swing;          // swing shape: rectangle, semicircle, ellipse, cycloid, parabola, bezier
+  bool any() const { return step_height_mm > 0 || step_length_mm > 0 || cycle_s > 0 || !swing.empty(); }
+};
+
 // The library: strider::RobotApp<float> with an in-memory EEPROM (erased,
 // so the robot boots on default settings) and a PCA9685 with oscillator osc_hz.
-std::unique_ptr<Driver> make_library_driver(const strider::RobotModel& model, double osc_hz, RangeFn range);
+// With `gait` overrides, the walker is configured again with them before the
+// robot stands up (begin() fails when the walker refuses them).
+std::unique_ptr<Driver> make_library_driver(const strider::RobotModel& model, double osc_hz, RangeFn range,
+                                            const GaitOverrides& gait = GaitOverrides());
 
 // The firmware ELF on the virtual Mega; nullptr and *error when this build
 // has no virtual Mega or the ELF does not load.

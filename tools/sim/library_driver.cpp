@@ -23,8 +23,8 @@ struct Lines {
 
 class LibraryDriver : public Driver, private HostParts {
  public:
-  LibraryDriver(const strider::RobotModel& model, double osc_hz, RangeFn range)
-      : app_(model, boards, store), osc_hz_(osc_hz), range_(std::move(range)) {}
+  LibraryDriver(const strider::RobotModel& model, double osc_hz, RangeFn range, const GaitOverrides& gait)
+      : app_(model, boards, store), model_(model), gait_(gait), osc_hz_(osc_hz), range_(std::move(range)) {}
 
   const char* mode() const override { return "library"; }
 
@@ -34,6 +34,7 @@ class LibraryDriver : public Driver, private HostParts {
       *error = lines_.empty() ? "robot did not start" : lines_.back();
       return false;
     }
+    if (gait_.any() && !apply_gait_overrides(error)) return false;
     update_pulses();
     return true;
   }
@@ -106,7 +107,27 @@ class LibraryDriver : public Driver, private HostParts {
 
   void update_pulses() { boards.pulses(osc_hz_, pulses_); }
 
+  // The model's gait defaults with the overrides in; the robot is still
+  // sitting, as at power-up, when the walker takes them.
+  bool apply_gait_overrides(std::string* error) {
+    strider::GaitParams p = *strider::gait_params_for(model_);
+    if (gait_.step_height_mm > 0) p.step_height_mm = float(gait_.step_height_mm);
+    if (gait_.step_length_mm > 0) p.step_length_mm = float(gait_.step_length_mm);
+    if (gait_.cycle_s > 0) p.cycle_s = float(gait_.cycle_s);
+    if (!gait_.swing.empty() && !strider::parse_swing_shape(gait_.swing.c_str(), p.shape)) {
+      *error = "unknown swing shape " + gait_.swing;
+      return false;
+    }
+    if (!app_.set_gait_params(p)) {
+      *error = "the walker refused the gait parameters (a step the legs cannot reach, or a swing shape not built in)";
+      return false;
+    }
+    return true;
+  }
+
   HostApp app_;
+  const strider::RobotModel& model_;
+  GaitOverrides gait_;
   double osc_hz_;
   RangeFn range_;
   std::deque<Rx> rx_;
@@ -121,8 +142,9 @@ class LibraryDriver : public Driver, private HostParts {
 
 }  // namespace
 
-std::unique_ptr<Driver> make_library_driver(const strider::RobotModel& model, double osc_hz, RangeFn range) {
-  return std::unique_ptr<Driver>(new LibraryDriver(model, osc_hz, std::move(range)));
+std::unique_ptr<Driver> make_library_driver(const strider::RobotModel& model, double osc_hz, RangeFn range,
+                                            const GaitOverrides& gait) {
+  return std::unique_ptr<Driver>(new LibraryDriver(model, osc_hz, std::move(range), gait));
 }
 
 }  // namespace strider_sim

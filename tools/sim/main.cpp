@@ -13,14 +13,18 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: strider-sim SCENARIO --out DIR [--firmware ELF] [--step SECONDS] [--iterations N]\n"
-               "                   [--solver mlcp|pgs] [--cfm CFM] [--friction MU] [--foot-pad MM] [--quiet]\n"
+               "                   [--solver mlcp|pgs] [--cfm CFM] [--friction MU] [--foot-pad MM]\n"
+               "                   [--step-height MM] [--step-length MM] [--cycle S] [--swing SHAPE] [--quiet]\n"
                "  SCENARIO  scenario file (robot, duration, obstacle box, at T send TEXT)\n"
                "  --out     output folder: metrics.json, trace.csv, robot.log\n"
                "  --firmware  run the firmware ELF on the virtual Mega instead of the library\n"
                "  --step    physics step [s] (default 0.004)\n"
                "  --solver  constraint solver: mlcp (default, exact) or pgs (iterative)\n"
                "  --cfm     constraint force mixing of every solver row (default 1e-6; 0: none)\n"
-               "  --foot-pad  feet as capsules across the leg, MM to each side (default 0: balls)\n");
+               "  --foot-pad  feet as capsules across the leg, MM to each side (default 0: balls)\n"
+               "  --step-height, --step-length, --cycle, --swing  the gait defaults to walk instead of\n"
+               "            the model's (library mode): swing apex [mm], preferred stride [mm], cycle\n"
+               "            at low speed [s], swing shape (rectangle semicircle ellipse cycloid parabola bezier)\n");
   return 2;
 }
 
@@ -66,6 +70,17 @@ int main(int argc, char** argv) {
       if (!value(&v)) return usage();
       opt.world.foot_pad_half_mm = std::atof(v.c_str());
       if (!(opt.world.foot_pad_half_mm >= 0 && opt.world.foot_pad_half_mm <= 50)) return usage();
+    } else if (a == "--step-height" || a == "--step-length") {
+      if (!value(&v)) return usage();
+      const double mm = std::atof(v.c_str());
+      if (!(mm > 0 && mm <= 500)) return usage();
+      (a == "--step-height" ? opt.gait.step_height_mm : opt.gait.step_length_mm) = mm;
+    } else if (a == "--cycle") {
+      if (!value(&v)) return usage();
+      opt.gait.cycle_s = std::atof(v.c_str());
+      if (!(opt.gait.cycle_s >= 0.1 && opt.gait.cycle_s <= 10)) return usage();
+    } else if (a == "--swing") {
+      if (!value(&opt.gait.swing) || opt.gait.swing.empty()) return usage();
     } else if (a == "--quiet") {
       quiet = true;
     } else if (a == "-h" || a == "--help") {

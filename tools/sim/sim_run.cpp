@@ -103,7 +103,10 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   RangeFn range = [&world]() { return world.sonar_mm(); };
   std::unique_ptr<Driver> driver;
   if (opt.firmware_elf.empty()) {
-    driver = make_library_driver(*model, wc.osc_hz, range);
+    driver = make_library_driver(*model, wc.osc_hz, range, opt.gait);
+  } else if (opt.gait.any()) {
+    r.error = "gait parameter options need library mode: a firmware has its gait defaults built in";
+    return r;
   } else {
     driver = make_firmware_driver(opt.firmware_elf, *model, wc.osc_hz, range, &r.error);
     if (!driver) return r;

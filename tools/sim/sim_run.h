@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "driver.h"
 #include "scenario.h"
 #include "world.h"
 
@@ -14,6 +15,7 @@ namespace strider_sim {
 struct RunOptions {
   std::string firmware_elf;     // empty: library mode
   WorldConfig world;
+  GaitOverrides gait;           // library mode only (driver.h)
   double trace_period_s = 0.02; // one trace row per control tick
 };
 
