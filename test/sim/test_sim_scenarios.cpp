@@ -361,7 +361,7 @@ TEST(SimScenarios, Mammal8PaceSwingsItsFeetOnTheGround) {
 // The trot tips about its support diagonal onto a swing foot, the pace onto
 // its lifted side, and those feet drag. No gait setting comes within 2 %
 // (tools/sim/sweep_gait.py, 150 settings each: best trot 20 %, pace never
-// forward within 56 %); docs/simulator.md says why this robot cannot.
+// within 56 %); docs/simulator.md says why this robot cannot.
 TEST(SimTargets, DISABLED_Mammal8ReachesCommandedDistanceWithin2Percent) {
   for (const char* gait : {"walk", "trot", "pace"})
     for (const char* mm : {"100", "200", "1000"}) {
