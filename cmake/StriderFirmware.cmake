@@ -24,6 +24,14 @@ foreach(model IN LISTS STRIDER_FIRMWARE_MODELS)
   list(APPEND _fw_byproducts ${STRIDER_FIRMWARE_DIR}/strider_firmware_${model}.elf)
 endforeach()
 string(REPLACE ";" "$<SEMICOLON>" _fw_models "${STRIDER_FIRMWARE_MODELS}")
+# Local copies of the firmware's libraries (FetchContent source overrides),
+# passed on to the sub-build.
+set(_fw_fetch_args)
+foreach(dep ADAFRUIT_PWM_SERVO_DRIVER ADAFRUIT_BUSIO)
+  if(FETCHCONTENT_SOURCE_DIR_${dep})
+    list(APPEND _fw_fetch_args -DFETCHCONTENT_SOURCE_DIR_${dep}=${FETCHCONTENT_SOURCE_DIR_${dep}})
+  endif()
+endforeach()
 ExternalProject_Add(strider_firmware
   SOURCE_DIR ${PROJECT_SOURCE_DIR}/src
   BINARY_DIR ${STRIDER_FIRMWARE_DIR}
@@ -34,6 +42,7 @@ ExternalProject_Add(strider_firmware
     -DSTRIDER_ROOT=${PROJECT_SOURCE_DIR}
     -DARDUINO_AVR_DIR=${STRIDER_ARDUINO_AVR_DIR}
     -DSTRIDER_MODELS=${_fw_models}
+    ${_fw_fetch_args}
   BUILD_ALWAYS ON          # the library's headers change without the sub-build knowing
   INSTALL_COMMAND ""
   BUILD_BYPRODUCTS ${_fw_byproducts}

@@ -7,16 +7,18 @@ set(CMAKE_SYSTEM_PROCESSOR avr)
 
 find_program(AVR_GCC avr-gcc REQUIRED)
 find_program(AVR_GXX avr-g++ REQUIRED)
-find_program(AVR_AR avr-ar REQUIRED)
-find_program(AVR_RANLIB avr-ranlib REQUIRED)
+# The gcc wrappers of ar and ranlib: static libraries of -flto objects need
+# the linker plugin (as PlatformIO's builder uses them).
+find_program(AVR_GCC_AR avr-gcc-ar REQUIRED)
+find_program(AVR_GCC_RANLIB avr-gcc-ranlib REQUIRED)
 find_program(AVR_OBJCOPY avr-objcopy REQUIRED)
 find_program(AVR_SIZE avr-size REQUIRED)
 
 set(CMAKE_C_COMPILER ${AVR_GCC})
 set(CMAKE_CXX_COMPILER ${AVR_GXX})
 set(CMAKE_ASM_COMPILER ${AVR_GCC})
-set(CMAKE_AR ${AVR_AR} CACHE FILEPATH "avr-ar")
-set(CMAKE_RANLIB ${AVR_RANLIB} CACHE FILEPATH "avr-ranlib")
+set(CMAKE_AR ${AVR_GCC_AR} CACHE FILEPATH "avr-gcc-ar" FORCE)
+set(CMAKE_RANLIB ${AVR_GCC_RANLIB} CACHE FILEPATH "avr-gcc-ranlib" FORCE)
 
 # Compiler checks link a program: a bare main() links fine for the AVR, but
 # keep the checks from needing the MCU flags.

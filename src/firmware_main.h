@@ -138,6 +138,7 @@ uint32_t g_led_ms = 0;
 //   `status` can tell how deep the stack has ever reached (stack_peak).
 constexpr uint8_t kStackPaint = 0xC5;
 extern "C" uint8_t __heap_start;  // avr-libc: first byte after .data, .bss and .noinit
+extern "C" char* __brkval;        // avr-libc: end of the heap, 0 until malloc() first runs
 uint8_t g_reset_flags __attribute__((section(".noinit")));
 void early_init() __attribute__((naked, used, section(".init3")));
 void early_init() {
@@ -148,9 +149,11 @@ void early_init() {
 }
 
 // Deepest stack use since power-up [bytes]: RAMEND down to the lowest byte
-// that lost its paint.
+// that lost its paint, searched from the top of the heap up (a library that
+// allocates, as Arduino libraries may in begin(), overwrites the paint
+// below it: those bytes are heap, not stack).
 uint16_t stack_peak() {
-  const uint8_t* p = &__heap_start;
+  const uint8_t* p = __brkval != nullptr ? reinterpret_cast<const uint8_t*>(__brkval) : &__heap_start;
   while (p <= reinterpret_cast<const uint8_t*>(RAMEND) && *p == kStackPaint) ++p;
   return uint16_t(RAMEND + 1 - reinterpret_cast<uintptr_t>(p));
 }

@@ -33,8 +33,7 @@ void Pca9685Output::flush() {
       ++ch;
     }
     if (board >= boards_) continue;
-    const uint8_t reg = uint8_t(pca9685_bus::kLed0OnL + 4 * (first % strider::kPcaChannelsPerBoard));
-    if (!pca9685_bus::write(board, reg, burst, uint8_t(4 * n))) ++errors_;
-    bytes_ = uint16_t(bytes_ + 2 + 4 * n);  // address + register + data
+    if (!pca9685_bus::write_channels(board, uint8_t(first % strider::kPcaChannelsPerBoard), burst, n)) ++errors_;
+    bytes_ = uint16_t(bytes_ + 2 + 4 * n - 2);  // address + register + data from the first OFF_L
   }
 }

@@ -1,7 +1,7 @@
 // Pca9685Output: the firmware's ServoOutput (lib/strider/control/
 // hal_interfaces.h). Writes go to a shadow of every channel; flush() sends
 // only the channels that changed since the last frame, consecutive ones in
-// one auto-increment burst (up to 7 per transfer), so a frame of 18 servos
+// one auto-increment burst (up to 8 per transfer), so a frame of 18 servos
 // costs a few transfers instead of 18 (and the PRESCALE register is never
 // re-read: the timing is cached in lib/strider/control/pca9685_timing.h).
 #ifndef STRIDER_PCA9685_OUTPUT_H

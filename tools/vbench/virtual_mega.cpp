@@ -236,6 +236,9 @@ void VirtualMega::set_range_mm(double mm) { impl_->range_mm = mm < 0 ? -1 : mm; 
 void VirtualMega::set_no_echo() { impl_->range_mm = -1; }
 int VirtualMega::sonar_triggers() const { return impl_->triggers; }
 int VirtualMega::sonar_short_triggers() const { return impl_->short_triggers; }
+double VirtualMega::sonar_min_trigger_width_us() const {
+  return double(impl_->min_trigger_width_cycles) * 1e6 / double(impl_->options.f_cpu_hz);
+}
 uint64_t VirtualMega::sonar_min_trigger_interval_us() const {
   return impl_->min_trigger_interval_cycles / (impl_->options.f_cpu_hz / 1000000u);
 }

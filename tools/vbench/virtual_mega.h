@@ -127,6 +127,8 @@ class VirtualMega {
   void set_no_echo();
   int sonar_triggers() const;       // accepted trigger pulses (>= 10 us)
   int sonar_short_triggers() const;  // pulses too short to trigger
+  //! Shortest TRIG high time seen, accepted or not [us] (0 before the first).
+  double sonar_min_trigger_width_us() const;
   //! Shortest time between two accepted triggers [us] (0 before two).
   uint64_t sonar_min_trigger_interval_us() const;
 

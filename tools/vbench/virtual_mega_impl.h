@@ -70,6 +70,7 @@ struct VirtualMega::Impl {
   bool sonar_busy = false;
   int triggers = 0;
   int short_triggers = 0;
+  uint64_t min_trigger_width_cycles = 0;  // shortest TRIG high time, accepted or not
   uint64_t last_trigger_cycle = 0;
   uint64_t min_trigger_interval_cycles = 0;
 

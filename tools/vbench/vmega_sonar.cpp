@@ -19,7 +19,9 @@ void VirtualMega::Impl::trigger_edge(bool high) {
     trig_rise_cycle = avr->cycle;
     return;
   }
-  if (avr->cycle - trig_rise_cycle < kMinTriggerUs * cycles_per_us()) {
+  const uint64_t width = avr->cycle - trig_rise_cycle;
+  if (min_trigger_width_cycles == 0 || width < min_trigger_width_cycles) min_trigger_width_cycles = width;
+  if (width < kMinTriggerUs * cycles_per_us()) {
     ++short_triggers;
     return;
   }
