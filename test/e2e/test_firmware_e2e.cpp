@@ -32,8 +32,15 @@ constexpr uint64_t kBootTimeoutUs = 8000000;   // start-up incl. the velocity-li
 constexpr uint64_t kSettleTimeoutUs = 8000000;  // soft start and standing up
 constexpr double kTickToleranceUs = 2.5;        // in PCA9685 counts: Fixed-point IK vs float
 
+// The CMake build's ELFs, or another build's (the PlatformIO one) when the
+// environment variable STRIDER_FIRMWARE_DIR names their folder.
+std::string firmware_dir() {
+  const char* dir = std::getenv("STRIDER_FIRMWARE_DIR");
+  return dir && *dir ? std::string(dir) : std::string(STRIDER_FIRMWARE_DIR);
+}
+
 std::string elf_path(const std::string& model) {
-  return std::string(STRIDER_FIRMWARE_DIR) + "/strider_firmware_" + model + ".elf";
+  return firmware_dir() + "/strider_firmware_" + model + ".elf";
 }
 
 std::map<std::string, std::string> status_fields(const std::string& line) {
