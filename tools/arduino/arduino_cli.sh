@@ -32,7 +32,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 # The release, and its tag's commit for `arduino-cli version`. 1.0.4 is the
 # newest release the Go module proxy served when this was written (it refused
-# 1.1 and later).
+# each of 1.1.0 to 1.3.1 that was tried).
 ARDUINO_CLI_VERSION=1.0.4
 ARDUINO_CLI_COMMIT=a0d912d
 ARDUINO_CLI_MODULE=github.com/arduino/arduino-cli
