@@ -5,6 +5,12 @@
 #ifndef STRIDER_H
 #define STRIDER_H
 
+// The Arduino AVR core compiles C++ as gnu++11: say what to change rather
+// than fail on the first C++14 constexpr function.
+#if defined(__cplusplus) && __cplusplus < 201402L
+#error "Strider needs C++14. Arduino IDE: add the line compiler.cpp.extra_flags=-std=gnu++14 to a platform.local.txt beside the AVR core's platform.txt (docs/arduino.md); PlatformIO: build_unflags = -std=gnu++11, build_flags = -std=gnu++14."
+#else
+
 // Arduino.h (included first in every sketch) defines min, max, abs, round,
 // constrain, sq, radians and degrees as function-like macros that would rewrite the library's own
 // names; they are set aside here and restored at the end.
@@ -79,4 +85,5 @@
 #pragma pop_macro("max")
 #pragma pop_macro("min")
 
+#endif  // C++14
 #endif  // STRIDER_H

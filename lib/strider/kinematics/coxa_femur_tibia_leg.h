@@ -52,8 +52,8 @@ bool cft_solve_fast(const Leg&, const Vec3<S>&, const S*, JointVector<S, 3>&) {
   return false;
 }
 template <typename Leg>
-STRIDER_NOINLINE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, const Fixed* yaw,
-                                     JointVector<Fixed, 3>& sol) {
+STRIDER_NOINLINE_NOCLONE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& target, const Fixed* yaw,
+                                             JointVector<Fixed, 3>& sol) {
   uint32_t x = 0, y = 0;  // |x|, |y|: only their squares are needed
   int32_t v;
   Fixed dz;

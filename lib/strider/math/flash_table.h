@@ -37,6 +37,19 @@
 #define STRIDER_NOINLINE
 #endif
 
+// The same for a function whose inline assembly takes most of the AVR's
+// registers, and never cloned either: under -flto (the Arduino IDE's build)
+// avr-gcc 5.4 specialises such a function for a constant argument (a global
+// leg) and then finds no registers for the assembly ("impossible
+// constraints"). clang has no noclone.
+#if defined(__GNUC__) && !defined(__clang__)
+#define STRIDER_NOINLINE_NOCLONE __attribute__((noinline, noclone))
+#elif defined(__GNUC__)
+#define STRIDER_NOINLINE_NOCLONE __attribute__((noinline))
+#else
+#define STRIDER_NOINLINE_NOCLONE
+#endif
+
 namespace strider {
 
 //! table[i] of a uint16_t table declared with STRIDER_PROGMEM.
