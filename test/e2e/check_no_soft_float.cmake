@@ -3,6 +3,10 @@
 # in, as through a library's float API, costs about 1 KB of flash and the
 # cycles of soft float).
 #   cmake -DNM=avr-nm -DELF=<firmware.elf> -P check_no_soft_float.cmake
+if(NOT EXISTS ${ELF})
+  message("skipped: no ${ELF} (its build was skipped)")
+  return()
+endif()
 execute_process(COMMAND ${NM} ${ELF} OUTPUT_VARIABLE symbols RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${NM} ${ELF} failed (${rc})")
