@@ -330,6 +330,7 @@ class FirmwareWalk : public ::testing::TestWithParam<std::string> {};
 class FirmwarePersistence : public ::testing::TestWithParam<std::string> {};
 class FirmwareFuzz : public ::testing::TestWithParam<std::string> {};
 class FirmwareReset : public ::testing::TestWithParam<std::string> {};
+class FirmwareSoak : public ::testing::TestWithParam<std::string> {};
 
 // Boot, stand, walk, speed, avoidance, deadman: one boot, several checks.
 TEST_P(FirmwareWalk, BootStandWalkAvoidStop) {
@@ -613,6 +614,73 @@ TEST_P(FirmwareReset, MidWalkResetSendsOnlyServoPulses) {
   EXPECT_EQ(r.mega().unexpected_resets(), 0) << r.transcript(from);
 }
 
+// A soak: seeded random operator input (commands, RC keys, garbage), a line
+// every 0.5 s on average with the keys held, for STRIDER_SOAK_SECONDS of
+// simulated time (default 20 s in the test command; `tools/dev soak
+// --minutes 30` for the long run). Checked as it runs, in 60 s chunks: no
+// reset, no overrun, no pulse past a joint's limits or not finite, the stack
+// not growing after the first chunk, every line answered.
+TEST_P(FirmwareSoak, RandomOperatorSoak) {
+  const char* env = std::getenv("STRIDER_SOAK_SECONDS");
+  const double seconds = env != nullptr ? std::atof(env) : 20.0;
+  ASSERT_GT(seconds, 0.0);
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(300000, kSettleTimeoutUs));
+  const auto limits = r.pulse_limits();
+  std::mt19937 rng(4242u + uint32_t(GetParam().size()));
+  const uint64_t start_us = r.mega().now_us();
+  const uint64_t end_us = start_us + uint64_t(seconds * 1e6);
+  const uint64_t chunk_us = 60000000;
+  uint32_t stack_after_first_chunk = 0;
+  int outside = 0, sent = 0;
+  while (r.mega().now_us() < end_us) {
+    const uint64_t chunk_end = std::min(end_us, r.mega().now_us() + chunk_us);
+    while (r.mega().now_us() < chunk_end) {
+      r.mega().send(1, strider_test::random_operator_command([&] { return uint32_t(rng()); }));
+      ++sent;
+      ASSERT_TRUE(r.run_for(200000 + rng() % 600000)) << "simulation stopped at " << r.mega().now_us() << " us";
+    }
+    for (const auto& c : r.mega().pulse_log()) {
+      if (c.width_us == 0.0) continue;
+      auto it = limits.find(c.channel);
+      const bool ok = std::isfinite(c.width_us) && it != limits.end() && c.width_us >= it->second.first - 0.51 &&
+                      c.width_us <= it->second.second + 0.51;
+      if (!ok && ++outside <= 5)
+        ADD_FAILURE() << "channel " << c.channel << " at " << c.time_us << " us: " << c.width_us << " us";
+    }
+    r.mega().clear_pulse_log();
+    r.mega().clear_i2c_log();
+    ASSERT_EQ(r.mega().unexpected_resets(), 0) << "at " << r.mega().now_us() << " us";
+    ASSERT_EQ(r.mega().stack_overflow_us(), 0u);
+    if (stack_after_first_chunk == 0) stack_after_first_chunk = r.mega().stack_peak_bytes();
+  }
+  EXPECT_EQ(outside, 0);
+  auto st = r.status();
+  EXPECT_EQ(st["overruns"], "0") << "tick_max_us " << st["tick_max_us"];
+  // Stable: a few bytes of interrupt nesting at most beyond the first chunk's depth.
+  EXPECT_LE(r.mega().stack_peak_bytes(), stack_after_first_chunk + 32u);
+  EXPECT_LE(r.mega().stack_peak_bytes(), 1024u);
+  int answered = 0;
+  for (const auto& l : r.lines()) {
+    answered += l.rfind("ok", 0) == 0 || l.rfind("err", 0) == 0;
+    std::string token;  // no NaN or infinity reaches a reply
+    for (char ch : l + " ") {
+      if (ch == ' ' || ch == '=' || ch == ',') {
+        EXPECT_TRUE(token != "nan" && token != "-nan" && token != "inf" && token != "-inf") << l;
+        token.clear();
+      } else {
+        token.push_back(ch);
+      }
+    }
+  }
+  EXPECT_GT(answered, sent / 2);
+  std::printf("%s: soak %.0f s simulated, %d inputs, stack peak %u bytes, tick_max_us %s\n", GetParam().c_str(),
+              double(r.mega().now_us() - start_us) * 1e-6, sent, r.mega().stack_peak_bytes(),
+              st["tick_max_us"].c_str());
+}
+
 std::string param_name(const ::testing::TestParamInfo<std::string>& p) { return p.param; }
 
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareWalk,
@@ -622,6 +690,8 @@ INSTANTIATE_TEST_SUITE_P(Models, FirmwareWalk,
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareFuzz,
                          ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
 INSTANTIATE_TEST_SUITE_P(Models, FirmwarePersistence,
+                         ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
+INSTANTIATE_TEST_SUITE_P(Models, FirmwareSoak,
                          ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareReset,
                          ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
