@@ -41,6 +41,7 @@ Loaded load(const FakeStore& store) {
   Loaded l;
   Settings s;
   l.status = strider::load_settings(store, &s, &l.record);
+  EXPECT_EQ(l.record.load_status, l.status);
   l.trim0 = s.trim_decideg[0];
   if (l.status != SettingsStatus::kOk) {
     EXPECT_EQ(s.trim_decideg[0], 0) << "defaults";

@@ -52,18 +52,19 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   //! goes to the other slot.
   Controller(Sink& sink, Store& store, const Settings& loaded, SettingsStatus load_status,
              const SettingsRecord& record = SettingsRecord())
-      : sink_(sink), store_(store), settings_(loaded), cal_(loaded), load_status_(load_status), record_(record), cmd_{0, 0, 0},
+      : sink_(sink), store_(store), settings_(loaded), cal_(loaded), record_(record), cmd_{0, 0, 0},
         out_{0, 0, 0}, mode_(RobotMode::kStanding), avoid_clear_mm_(0) {
+    record_.load_status = load_status;
     apply_loaded();
   }
   //! The same from the settings the store gave (settings_store.h).
   Controller(Sink& sink, Store& store, const LoadedSettings& loaded)
-      : Controller(sink, store, loaded.settings, loaded.status, loaded.record) {}
+      : Controller(sink, store, loaded.settings, loaded.record.load_status, loaded.record) {}
   //! The same in zeroed storage (zeroed_storage.h): only the non-zero
   //! members written.
   Controller(ZeroedStorage z, Sink& sink, Store& store, const LoadedSettings& loaded)
       : controller_detail::ParserSlot<kOwnParser>(z), sink_(sink), store_(store), settings_(loaded.settings),
-        cal_(loaded.settings), load_status_(loaded.status), record_(loaded.record), deadman_(z), avoid_(z) {
+        cal_(loaded.settings), record_(loaded.record), deadman_(z), avoid_(z) {
     apply_loaded();
   }
 
@@ -122,7 +123,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   const Twist& command() const { return cmd_; }      //!< operator's velocity
   const Twist& output() const { return out_; }       //!< after avoidance
   const Settings& settings() const { return settings_; }
-  SettingsStatus load_status() const { return load_status_; }
+  SettingsStatus load_status() const { return record_.load_status; }
   //! The record the settings in force came from, or the last one saved.
   const SettingsRecord& settings_record() const { return record_; }
   uint8_t speed_pct() const { return speed_pct_; }
@@ -284,7 +285,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     w.field_text(FlashText{text::kAvoid}, settings_.avoid_enabled ? to_flash(avoid_.state()) : FlashText{text::kOff});
     w.field_text(FlashText{text::kSonar}, flash_name(text::kSonarStatusNames, 4, uint8_t(sonar_.status)));
     if (sonar_.status == SonarStatus::kOk && sonar_.distance_mm != kSonarFarMm) w.field(FlashText{text::kDistMm}, sonar_.distance_mm);
-    w.field(FlashText{text::kDeadmanMs}, settings_.deadman_ms).field_text(FlashText{text::kEeprom}, to_flash(load_status_));
+    w.field(FlashText{text::kDeadmanMs}, settings_.deadman_ms).field_text(FlashText{text::kEeprom}, to_flash(record_.load_status));
     sink_.write_status(w);
   }
 
@@ -292,8 +293,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   Store& store_;
   Settings settings_;
   Calibration cal_;
-  SettingsStatus load_status_;
-  SettingsRecord record_;
+  SettingsRecord record_;  // and how the settings loaded at start-up
   // Both constructors: the loaded settings into the deadman, the speed and the sink.
   void apply_loaded() {
     deadman_.set_timeout(settings_.deadman_ms);

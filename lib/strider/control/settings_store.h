@@ -29,11 +29,14 @@ static_assert(kSettingsRecordBytes <= kSettingsSlotBytes && kSettingsSingleRecor
               "a record fits its slot");
 
 //! Which record the settings in force came from (load_settings()), or the
-//! last one written (save_settings()): where the next save goes.
+//! last one written (save_settings()): where the next save goes. Six bytes
+//! without padding (a host's copies compare byte for byte).
 struct SettingsRecord {
   uint16_t seq = 0;                //!< its sequence number (0 for a version-1 record)
   uint8_t slot = kNoSettingsSlot;  //!< 0 or 1; kNoSettingsSlot: none (defaults)
   uint8_t version = 0;             //!< its layout: kSettingsVersion or kSettingsSingleRecordVersion
+  //! How the load went: kOk, or why the defaults are in force (the slot that says most).
+  SettingsStatus load_status = SettingsStatus::kEmpty;
   //! At load: what the other slot held (kOk: an older record; kEmpty;
   //! kCorrupt, e.g. a save cut short; kOldVersion; kInvalid).
   SettingsStatus other = SettingsStatus::kEmpty;
@@ -41,6 +44,7 @@ struct SettingsRecord {
   uint8_t next_slot() const { return slot == 0 ? 1 : 0; }
   uint16_t next_seq() const { return uint16_t(seq + 1); }
 };
+static_assert(sizeof(SettingsRecord) == 6, "SettingsRecord: no padding");
 
 constexpr uint16_t settings_slot_address(uint16_t base, uint8_t slot) {
   return uint16_t(base + slot * kSettingsSlotBytes);
@@ -55,13 +59,14 @@ constexpr bool settings_record_newer(uint8_t va, uint16_t sa, uint8_t vb, uint16
 }
 
 //! Loads the newest valid record of the two slots at base into *out and
-//! says which in *record. *out always holds usable settings afterwards: the
+//! says which in *record (and the returned status in its load_status). *out always holds usable settings afterwards: the
 //! record on kOk, the factory defaults otherwise, with the reason of the
 //! slot that says most (invalid, old_version, corrupt, empty in that order).
 //! A record whose CRC is fine but whose values are out of range counts as
 //! no record: the older one is taken instead.
 template <typename Store>
-SettingsStatus load_settings(const Store& store, Settings* out, SettingsRecord* record, uint16_t base = 0) {
+STRIDER_NOINLINE SettingsStatus load_settings(const Store& store, Settings* out, SettingsRecord* record,
+                                              uint16_t base = 0) {
   *record = SettingsRecord();
   SettingsStatus result = SettingsStatus::kNoSpace;
   if (uint32_t(base) + kSettingsStoreBytes <= store.size()) {
@@ -84,6 +89,7 @@ SettingsStatus load_settings(const Store& store, Settings* out, SettingsRecord* 
       if (best.slot == kNoSettingsSlot) break;
       read_record_payload(store, settings_slot_address(base, best.slot), best.version, out);
       if (settings_valid(*out)) {
+        best.load_status = SettingsStatus::kOk;
         best.other = status[1 - best.slot];
         *record = best;
         return SettingsStatus::kOk;
@@ -94,6 +100,7 @@ SettingsStatus load_settings(const Store& store, Settings* out, SettingsRecord* 
     result = uint8_t(status[0]) > uint8_t(status[1]) ? status[0] : status[1];
   }
   set_default_settings(out);
+  record->load_status = result;
   return result;
 }
 
@@ -104,16 +111,16 @@ SettingsStatus load_settings(const Store& store, Settings* out, uint16_t base = 
   return load_settings(store, out, &record, base);
 }
 
-//! What load_settings() gave, with its status and record: handed to a
+//! What load_settings() gave, with its record and status: handed to a
 //! constructor as a temporary, so that no copy of the settings stays in RAM
 //! after start-up.
 struct LoadedSettings {
   Settings settings;
-  SettingsRecord record;  // before status: filled by status's initializer
-  SettingsStatus status;
+  SettingsRecord record;
   template <typename Store>
-  explicit LoadedSettings(const Store& store, uint16_t base = 0)
-      : status(load_settings(store, &settings, &record, base)) {}
+  explicit LoadedSettings(const Store& store, uint16_t base = 0) {
+    load_settings(store, &settings, &record, base);
+  }
 };
 
 //! Writes s into the slot that does not hold *record (the record in force,
