@@ -1,8 +1,9 @@
 // VirtualMega: an ATmega2560 at 16 MHz on libsimavr with what a Strider robot
 // wires to it: PCA9685 boards on TWI, the HC-05 on a UART, the HC-SR04 on
-// PE5 (trigger) / PE4 (echo, INT4), EEPROM kept in a file, and a reset
-// counter. Time only moves inside run_until_us()/run_for_us(), so a physics
-// simulator can advance the firmware in lock-step with its own steps.
+// PE5 (trigger) / PE4 (echo, INT4), EEPROM kept in a file, a reset
+// counter, and power cuts (at once or at the N-th EEPROM write). Time only
+// moves inside run_until_us()/run_for_us(), so a physics simulator can
+// advance the firmware in lock-step with its own steps.
 #ifndef STRIDER_TOOLS_VBENCH_VIRTUAL_MEGA_H
 #define STRIDER_TOOLS_VBENCH_VIRTUAL_MEGA_H
 
