@@ -61,12 +61,15 @@ uint16_t map_one(uint8_t b) {
 
 int main() {
   strider::Settings s;
+  strider::SettingsRecord record;
   strider::load_settings(g_store, &s);
+  strider::load_settings(g_store, &s, &record);
   strider::save_settings(g_store, s);
+  strider::save_settings(g_store, s, &record);
   strider::Calibration cal(s);
   cal.start(s);
   cal.set_trim(1, 20);
-  cal.save(g_store, s);
+  cal.save(g_store, s, &record);
   g_timing.configure(s.pca_osc_hz, s.pwm_hz);
   char buf[strider::kMaxReplyBytes];
   for (uint8_t b = 0; b < 200; ++b) {
@@ -81,7 +84,8 @@ int main() {
   }
   g_sink = uint16_t(frame<float>(s) + frame<strider::Fixed>(s));
   NullSink sink;
-  strider::Controller<NullSink, strider::ArrayByteStore<512> > ctl(sink, g_store, s, strider::SettingsStatus::kOk);
+  strider::Controller<NullSink, strider::ArrayByteStore<512> > ctl(sink, g_store, s, strider::SettingsStatus::kOk,
+                                                                     record);
   for (uint8_t b = 0; b < 255; ++b) {
     strider::ReplyWriter w(buf, sizeof buf);
     if (ctl.on_byte(b, b, w) || ctl.tick(b, g_sonar.reading(b), w)) g_sink = w.length();

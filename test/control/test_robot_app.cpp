@@ -388,6 +388,41 @@ TEST(RobotAppTiming, RecordsOverruns) {
   EXPECT_EQ(r.app->tick_max_us(), 25000u);
 }
 
+// The boot notice names the record the settings came from (docs/protocol.md):
+// its slot and sequence number, the single record of earlier firmware, a
+// damaged other slot, or the defaults.
+TEST(RobotAppEeprom, BootNoticeNamesTheRecord) {
+  Rig<float> r(strider::kSprawl8);
+  auto reboot = [&r]() {
+    delete r.app;
+    r.lines = Lines();
+    r.app = new Rig<float>::App(r.model, r.out, r.store);
+    EXPECT_TRUE(r.app->begin(r.now_us, r.lines));
+    const auto boot = r.lines.on(1);
+    return boot.size() == 2 ? boot[1] : std::string("no boot notice");
+  };
+  r.send(1, "cal start\ncal trim 0 5\ncal save\n");
+  EXPECT_EQ(reboot(), "info eeprom ok slot=0 seq=1");
+  r.send(1, "speed 80\nsave\n");
+  EXPECT_EQ(reboot(), "info eeprom ok slot=1 seq=2");
+  r.store.bytes[strider::kSettingsSlotBytes + 30] ^= 0x01;  // slot 1 damaged: slot 0 in force
+  EXPECT_EQ(reboot(), "info eeprom ok slot=0 seq=1 other=corrupt");
+  r.send(1, "save\n");  // into slot 1 again: the damage is repaired
+  EXPECT_EQ(reboot(), "info eeprom ok slot=1 seq=2");
+  r.store.bytes[0] ^= 0x01;
+  r.store.bytes[strider::kSettingsSlotBytes] ^= 0x01;
+  EXPECT_EQ(reboot(), "info eeprom corrupt, defaults");
+  // The single record of firmware before the slots (layout version 1).
+  r.store.erase();
+  uint8_t rec[4 + strider::kSettingsPayloadBytes + 2] = {'S', 'T', 1, strider::kSettingsPayloadBytes};
+  strider::encode_settings(strider::default_settings(), rec + 4);
+  const uint16_t crc = strider::crc16_ccitt(rec, sizeof rec - 2);
+  rec[sizeof rec - 2] = uint8_t(crc);
+  rec[sizeof rec - 1] = uint8_t(crc >> 8);
+  std::memcpy(r.store.bytes, rec, sizeof rec);
+  EXPECT_EQ(reboot(), "info eeprom ok version=1");
+}
+
 }  // namespace
 
 namespace {

@@ -1,6 +1,6 @@
 // Settings record: CRC known answers, save/load round trip, every single-bit
-// corruption detected, empty store and old versions -> defaults + status,
-// failed writes, and calibration save/abort.
+// corruption detected, empty store and unknown versions -> defaults + status,
+// failed writes, and calibration save/abort. The two slots: test_settings_slots.cpp.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -112,10 +112,10 @@ TEST(SettingsStore, RandomMultiByteCorruptionDetected) {
   }
 }
 
-TEST(SettingsStore, OldVersionGivesDefaults) {
+TEST(SettingsStore, UnknownVersionGivesDefaults) {
   FakeStore store;
   ASSERT_EQ(strider::save_settings(store, sample_settings()), SettingsStatus::kOk);
-  store.bytes[2] = strider::kSettingsVersion - 1;  // an older layout, with a matching CRC
+  store.bytes[2] = strider::kSettingsVersion + 1;  // a layout this firmware does not know, with a matching CRC
   const uint16_t crc_at = strider::kSettingsRecordBytes - 2;
   const uint16_t crc = strider::crc16_ccitt(store.bytes, crc_at);
   store.bytes[crc_at] = uint8_t(crc);
@@ -136,7 +136,9 @@ TEST(SettingsStore, ValidCrcButOutOfRangeIsInvalid) {
   rec[1] = 'T';
   rec[2] = strider::kSettingsVersion;
   rec[3] = strider::kSettingsPayloadBytes;
-  strider::encode_settings(bad, rec + 4);
+  rec[4] = 1;  // sequence number 1
+  rec[5] = 0;
+  strider::encode_settings(bad, rec + 6);
   const uint16_t crc = strider::crc16_ccitt(rec, sizeof rec - 2);
   rec[sizeof rec - 2] = uint8_t(crc);
   rec[sizeof rec - 1] = uint8_t(crc >> 8);
@@ -164,6 +166,8 @@ TEST(Calibration, AbortRestoresSaveKeeps) {
   FakeStore store;
   Settings saved = sample_settings();  // the caller's settings in force (the controller's)
   ASSERT_EQ(strider::save_settings(store, saved), SettingsStatus::kOk);
+  strider::SettingsRecord record;  // the record in force, as the controller keeps it
+  ASSERT_EQ(strider::load_settings(store, &saved, &record), SettingsStatus::kOk);
   strider::Calibration cal(saved);
   EXPECT_EQ(cal.set_trim(0, 10), strider::CalStatus::kNotActive);
   cal.start(saved);
@@ -179,7 +183,9 @@ TEST(Calibration, AbortRestoresSaveKeeps) {
   cal.start(saved);
   ASSERT_EQ(cal.set_trim(5, -45), strider::CalStatus::kOk);
   ASSERT_EQ(cal.set_oscillator(26500000), strider::CalStatus::kOk);
-  EXPECT_EQ(cal.save(store, saved), strider::CalStatus::kOk);
+  EXPECT_EQ(cal.save(store, saved, &record), strider::CalStatus::kOk);
+  EXPECT_EQ(record.slot, 1);  // the first record (slot 0) kept
+  EXPECT_EQ(record.seq, 2);
   EXPECT_FALSE(cal.active());
   Settings back{};
   ASSERT_EQ(strider::load_settings(store, &back), SettingsStatus::kOk);
@@ -195,7 +201,7 @@ TEST(Calibration, AbortRestoresSaveKeeps) {
   store.fail_at_write = store.writes;  // next save fails: calibration stays active, live kept
   cal.start(saved);
   cal.set_trim(2, 7);
-  EXPECT_EQ(cal.save(store, saved), strider::CalStatus::kStoreFailed);
+  EXPECT_EQ(cal.save(store, saved, &record), strider::CalStatus::kStoreFailed);
   EXPECT_TRUE(cal.active());
   EXPECT_EQ(cal.live().trim_decideg[2], 7);
 }

@@ -1,7 +1,8 @@
 // The virtual Mega's peripherals against the bare-metal probe firmware
 // (probe_firmware.cpp): UART pacing and buffering, TWI addressing and the
-// PCA9685 decode, HC-SR04 echo timing, EEPROM persistence, resets, the LED,
-// and the vbench executable with a script and with a pseudo-terminal.
+// PCA9685 decode, HC-SR04 echo timing, EEPROM persistence, power cuts during
+// EEPROM writes, resets, the LED, and the vbench executable with a script
+// and with a pseudo-terminal.
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -231,6 +232,56 @@ TEST_F(Probe, EepromSurvivesInAFile) {
   std::remove(path.c_str());
 }
 
+TEST_F(Probe, PowerCutAtAnEepromWriteKeepsTheWritesBeforeIt) {
+  EXPECT_EQ(command("e 0010 5A"), "ok");
+  EXPECT_EQ(mega.eeprom_writes(), 1u);
+  ASSERT_EQ(mega.eeprom_write_log().size(), 1u);
+  EXPECT_EQ(mega.eeprom_write_log()[0].address, 0x10);
+  EXPECT_EQ(mega.eeprom_write_log()[0].value, 0x5A);
+  // The second write from now: the first is made, the power fails as the second begins.
+  EXPECT_EQ(command("e 0030 11"), "ok");
+  mega.cut_power_after_eeprom_writes(1);
+  EXPECT_TRUE(mega.eeprom_cut_armed());
+  EXPECT_EQ(command("e 0020 AA"), "ok");
+  mega.send(1, "e 0021 BB\n");
+  EXPECT_EQ(next_line(1, 200000), "boot 01");  // a power-on reset: MCUSR.PORF
+  EXPECT_FALSE(mega.eeprom_cut_armed());
+  ASSERT_EQ(mega.power_cut_log().size(), 1u);
+  EXPECT_EQ(mega.power_cut_log()[0].eeprom_write, 3);
+  EXPECT_EQ(mega.power_cut_log()[0].address, 0x21);
+  EXPECT_EQ(mega.eeprom_writes(), 3u);
+  EXPECT_EQ(command("E 0020"), "ee AA");
+  EXPECT_EQ(command("E 0021"), "ee FF");  // never written
+  // The byte being written erased (the erase of an erase-and-write done).
+  mega.cut_power_after_eeprom_writes(0, strider_vmega::TornByte::kErased);
+  mega.send(1, "e 0030 22\n");
+  EXPECT_EQ(next_line(1, 200000), "boot 01");
+  EXPECT_EQ(command("E 0030"), "ee FF");
+  EXPECT_EQ(command("E 0010"), "ee 5A");
+  // Disarmed, a write goes through.
+  mega.cut_power_after_eeprom_writes(0);
+  mega.cancel_eeprom_cut();
+  EXPECT_EQ(command("e 0030 22"), "ok");
+  EXPECT_EQ(command("E 0030"), "ee 22");
+  EXPECT_EQ(mega.power_cut_log().size(), 2u);
+  EXPECT_EQ(mega.unexpected_resets(), 0);
+  EXPECT_EQ(mega.external_resets(), 0);
+}
+
+TEST_F(Probe, PowerCutRestartsTheBoardsToo) {
+  bring_up("40");
+  ASSERT_EQ(command("w 40 06 00 00 33 01"), "ok");
+  EXPECT_GT(mega.pulse_us(0), 0.0);
+  EXPECT_EQ(command("e 0040 77"), "ok");
+  mega.power_cut();
+  EXPECT_EQ(next_line(1, 200000), "boot 01");
+  EXPECT_EQ(mega.pulse_us(0), 0.0);  // unlike a reset of the MCU alone
+  EXPECT_TRUE(mega.board(0).sleeping());
+  EXPECT_EQ(command("E 0040"), "ee 77");
+  ASSERT_EQ(mega.power_cut_log().size(), 1u);
+  EXPECT_EQ(mega.power_cut_log()[0].eeprom_write, -1);
+}
+
 TEST_F(Probe, WatchdogResetIsCounted) {
   mega.send(1, "d\n");
   EXPECT_EQ(next_line(1, 200000), "boot 08");  // MCUSR.WDRF
@@ -280,6 +331,33 @@ TEST(VbenchExe, RunsAScriptAndPrintsReplies) {
   EXPECT_NE(out.find(" uart1: ack"), std::string::npos) << out;
   EXPECT_NE(out.find(" uart1: echo 17"), std::string::npos) << out;  // 300 mm: 1749 us
   EXPECT_NE(out.find("# sonar triggers 1"), std::string::npos) << out;
+}
+
+TEST(VbenchExe, EepromCutOptionAndDirective) {
+  const std::string script = temp_path("cut.vb");
+  {
+    std::ofstream s(script);
+    s << "at 0.1 send e 0010 5A\\n\nat 0.15 send e 0011 5B\\n\nat 0.3 send E 0010\\n\n"
+         "at 0.35 eeprom_cut 0 erased\nat 0.35 send e 0010 00\\n\nat 0.5 send E 0010\\n\n"
+         "at 0.6 power_cut\n";
+  }
+  const std::string cmd = std::string(STRIDER_VBENCH_EXE) + " --elf " + STRIDER_VBENCH_PROBE_ELF +
+                          " --script " + script + " --duration 0.8 --log --eeprom-cut 1";
+  FILE* p = popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string out;
+  char buf[256];
+  while (std::fgets(buf, sizeof buf, p)) out += buf;
+  EXPECT_EQ(pclose(p), 0);
+  std::remove(script.c_str());
+  // --eeprom-cut 1: the first write made, the second cut.
+  EXPECT_NE(out.find("power cut: EEPROM write 1 (address 0x011) not made"), std::string::npos) << out;
+  EXPECT_NE(out.find(" uart1: ee 5A"), std::string::npos) << out;
+  // The directive: the next write cut, its byte erased.
+  EXPECT_NE(out.find("power cut: EEPROM write 1 (address 0x010) not made"), std::string::npos) << out;
+  EXPECT_NE(out.find(" uart1: ee FF"), std::string::npos) << out;
+  EXPECT_NE(out.find("0.600 power cut\n"), std::string::npos) << out;
+  EXPECT_NE(out.find("# eeprom writes 1, power cuts 3"), std::string::npos) << out;
 }
 
 TEST(VbenchExe, PseudoTerminalBridgesUart1) {

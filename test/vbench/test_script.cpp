@@ -31,6 +31,27 @@ TEST(VbenchScript, ParsesDirectivesAndSortsByTime) {
   EXPECT_EQ(ev[4].time_us, 4000000u);
 }
 
+TEST(VbenchScript, PowerCutDirectives) {
+  std::vector<ScriptEvent> ev;
+  std::string err;
+  ASSERT_TRUE(strider_vmega::parse_script("at 1 eeprom_cut 12\nat 2 eeprom_cut 0 erased\nat 3 power_cut\n", &ev, &err))
+      << err;
+  ASSERT_EQ(ev.size(), 3u);
+  EXPECT_EQ(ev[0].kind, ScriptEvent::Kind::kEepromCut);
+  EXPECT_EQ(ev[0].eeprom_writes, 12u);
+  EXPECT_FALSE(ev[0].torn_erased);
+  EXPECT_EQ(ev[1].eeprom_writes, 0u);
+  EXPECT_TRUE(ev[1].torn_erased);
+  EXPECT_EQ(ev[2].kind, ScriptEvent::Kind::kPowerCut);
+  EXPECT_EQ(ev[2].time_us, 3000000u);
+  uint64_t n = 0;
+  bool erased = false;
+  EXPECT_TRUE(strider_vmega::parse_eeprom_cut("7:erased", &n, &erased, &err));
+  EXPECT_EQ(n, 7u);
+  EXPECT_TRUE(erased);
+  for (const char* bad : {"", "-1", "1.5", "x", "3:zero"}) EXPECT_FALSE(strider_vmega::parse_eeprom_cut(bad, &n, &erased, &err)) << bad;
+}
+
 TEST(VbenchScript, TextIsVerbatimWithEscapes) {
   ScriptEvent ev;
   bool has = false;
@@ -44,7 +65,9 @@ TEST(VbenchScript, TextIsVerbatimWithEscapes) {
 
 TEST(VbenchScript, RejectsBadLines) {
   const char* bad[] = {"at x send F", "at 1 fly", "at 1 range -4", "at 1 range", "at 1 send",
-                       "at 1 send \\q", "at 1 send \\x4", "at 1 reset now", "at -1 reset"};
+                       "at 1 send \\q", "at 1 send \\x4", "at 1 reset now", "at -1 reset",
+                       "at 1 eeprom_cut", "at 1 eeprom_cut -2", "at 1 eeprom_cut 3 zeroed", "at 1 eeprom_cut 3 erased x",
+                       "at 1 power_cut now"};
   for (const char* line : bad) {
     ScriptEvent ev;
     bool has = false;

@@ -115,6 +115,15 @@ bool parse_script_line(const std::string& raw, ScriptEvent* event, bool* has_eve
     }
   } else if (word == "reset") {
     ev.kind = ScriptEvent::Kind::kReset;
+  } else if (word == "power_cut") {
+    ev.kind = ScriptEvent::Kind::kPowerCut;
+  } else if (word == "eeprom_cut") {
+    ev.kind = ScriptEvent::Kind::kEepromCut;
+    std::string n = take_word(&rest);
+    const std::string mode = take_word(&rest);
+    if (mode == "erased") n += ":erased";
+    else if (!mode.empty()) n += ":" + mode;
+    if (!parse_eeprom_cut(n, &ev.eeprom_writes, &ev.torn_erased, error)) return false;
   } else {
     *error = "unknown directive `" + word + "`";
     return false;
@@ -150,11 +159,33 @@ bool parse_script(const std::string& text, std::vector<ScriptEvent>* events, std
   return true;
 }
 
+bool parse_eeprom_cut(const std::string& text, uint64_t* writes, bool* erased, std::string* error) {
+  const size_t colon = text.find(':');
+  const std::string n = text.substr(0, colon);
+  const std::string mode = colon == std::string::npos ? std::string() : text.substr(colon + 1);
+  double v = -1;
+  if (!parse_number(n, &v) || v < 0 || v != std::floor(v) || v > 1e15) {
+    *error = "eeprom_cut needs a whole number of EEPROM writes >= 0";
+    return false;
+  }
+  if (!mode.empty() && mode != "erased") {
+    *error = "eeprom_cut: `erased` or nothing after the number";
+    return false;
+  }
+  *writes = uint64_t(v);
+  *erased = mode == "erased";
+  return true;
+}
+
 void apply_event(const ScriptEvent& event, VirtualMega& mega) {
   switch (event.kind) {
     case ScriptEvent::Kind::kSend: mega.send(event.uart, event.text); break;
     case ScriptEvent::Kind::kRange: mega.set_range_mm(event.range_mm); break;
     case ScriptEvent::Kind::kReset: mega.reset(); break;
+    case ScriptEvent::Kind::kPowerCut: mega.power_cut(); break;
+    case ScriptEvent::Kind::kEepromCut:
+      mega.cut_power_after_eeprom_writes(event.eeprom_writes, event.torn_erased ? TornByte::kErased : TornByte::kOld);
+      break;
   }
 }
 

@@ -4,6 +4,10 @@
 //   at T range MM      HC-SR04 sees an obstacle at MM millimetres
 //   at T range none    no echo at all (the echo line stays low)
 //   at T reset         external reset (RESET pin)
+//   at T power_cut     the power fails and comes back at once (EEPROM kept)
+//   at T eeprom_cut N [erased]  the power fails as the firmware starts its
+//                      (N+1)-th EEPROM byte write from T: N writes kept, that
+//                      byte left as it was (or erased, 0xFF)
 // Without `at T` a directive applies at once (commands piped into vbench).
 #ifndef STRIDER_TOOLS_VBENCH_SCRIPT_H
 #define STRIDER_TOOLS_VBENCH_SCRIPT_H
@@ -17,13 +21,15 @@ namespace strider_vmega {
 class VirtualMega;
 
 struct ScriptEvent {
-  enum class Kind { kSend, kRange, kReset };
+  enum class Kind { kSend, kRange, kReset, kPowerCut, kEepromCut };
   bool immediate = false;  // no `at T`
   uint64_t time_us = 0;
   Kind kind = Kind::kSend;
   int uart = 1;
   std::string text;        // kSend: the bytes, escapes resolved
   double range_mm = -1;    // kRange: negative = no echo
+  uint64_t eeprom_writes = 0;  // kEepromCut: writes kept before the cut
+  bool torn_erased = false;    // kEepromCut: the interrupted byte erased (0xFF)
   int line = 0;            // source line, for messages
 };
 
@@ -37,6 +43,9 @@ bool parse_script_line(const std::string& line, ScriptEvent* event, bool* has_ev
 //! Parses a whole script; events keep their order of appearance and are
 //! stable-sorted by time.
 bool parse_script(const std::string& text, std::vector<ScriptEvent>* events, std::string* error);
+
+//! Parses `N` or `N:erased` (an EEPROM cut: writes kept, the torn byte).
+bool parse_eeprom_cut(const std::string& text, uint64_t* writes, bool* erased, std::string* error);
 
 //! Applies an event to the Mega now.
 void apply_event(const ScriptEvent& event, VirtualMega& mega);

@@ -1,6 +1,7 @@
 // vbench: runs a firmware ELF on the virtual Mega (see docs/vbench.md).
 //   vbench --elf F [--eeprom FILE] [--script FILE] [--duration S] [--pty]
 //          [--realtime] [--stdin] [--osc HZ] [--pulses CSV] [--log]
+//          [--eeprom-cut N[:erased]]
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -34,8 +35,10 @@ void usage() {
   std::fprintf(stderr,
                "usage: vbench --elf FIRMWARE.elf [--eeprom FILE] [--script FILE] [--duration S]\n"
                "              [--pty] [--realtime] [--stdin] [--osc HZ] [--pulses CSV] [--log] [--i2c]\n"
+               "              [--eeprom-cut N[:erased]]\n"
                "  --eeprom FILE  EEPROM image loaded at start (if present) and saved at the end\n"
                "  --script FILE  timed directives: at T send TEXT | at T range MM|none | at T reset\n"
+               "                 | at T power_cut | at T eeprom_cut N [erased]\n"
                "  --duration S   simulated seconds (default 10; with --pty or --stdin: until stopped)\n"
                "  --pty          bridge UART1 to a new pseudo-terminal (path on the first stdout line)\n"
                "  --realtime     pace simulated time to the wall clock (implied by --pty)\n"
@@ -43,7 +46,9 @@ void usage() {
                "  --osc HZ       PCA9685 oscillator frequency (default 25e6)\n"
                "  --pulses CSV   write every pulse-width change: time_us,channel,width_us\n"
                "  --log          print pulse changes, resets and an I2C summary\n"
-               "  --i2c          print every I2C transaction\n");
+               "  --i2c          print every I2C transaction\n"
+               "  --eeprom-cut N[:erased]  the power fails as the firmware starts its (N+1)-th EEPROM\n"
+               "                 byte write (N kept; that byte as it was, or erased) and comes back\n");
 }
 
 std::string seconds(uint64_t us) {
@@ -139,6 +144,8 @@ int main(int argc, char** argv) {
   std::string script_path, pulses_path;
   double duration_s = -1;
   bool use_pty = false, realtime = false, use_stdin = false, log = false, log_i2c = false;
+  bool eeprom_cut = false, eeprom_cut_erased = false;
+  uint64_t eeprom_cut_writes = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](const char* name) -> std::string {
@@ -159,6 +166,14 @@ int main(int argc, char** argv) {
     else if (a == "--pulses") pulses_path = value("--pulses");
     else if (a == "--log") log = true;
     else if (a == "--i2c") log_i2c = true;
+    else if (a == "--eeprom-cut") {
+      std::string why;
+      if (!strider_vmega::parse_eeprom_cut(value("--eeprom-cut"), &eeprom_cut_writes, &eeprom_cut_erased, &why)) {
+        std::fprintf(stderr, "vbench: --eeprom-cut: %s\n", why.c_str());
+        return 2;
+      }
+      eeprom_cut = true;
+    }
     else if (a == "-h" || a == "--help") {
       usage();
       return 0;
@@ -211,6 +226,9 @@ int main(int argc, char** argv) {
     std::printf("%s\n", pty.path.c_str());
     std::fflush(stdout);
   }
+  if (eeprom_cut)
+    mega.cut_power_after_eeprom_writes(eeprom_cut_writes, eeprom_cut_erased ? strider_vmega::TornByte::kErased
+                                                                             : strider_vmega::TornByte::kOld);
   LinePrinter printer;
   mega.set_output_callback([&](int uart, const strider_vmega::UartByte& b) {
     printer.add(uart, b);
@@ -232,6 +250,7 @@ int main(int argc, char** argv) {
   std::string stdin_buf;
   bool stdin_open = use_stdin;
   int resets_seen = 0;
+  size_t cuts_printed = 0;
   const uint64_t end_us = uint64_t(duration_s * 1e6);
   const uint64_t step_us = 1000;
   const auto wall0 = std::chrono::steady_clock::now();
@@ -280,6 +299,16 @@ int main(int argc, char** argv) {
       std::printf("%s reset (%d unexpected, %d external)\n", seconds(mega.now_us()).c_str(),
                   mega.unexpected_resets(), mega.external_resets());
     resets_seen = resets;
+    for (; cuts_printed < mega.power_cut_log().size(); ++cuts_printed) {
+      const auto& c = mega.power_cut_log()[cuts_printed];
+      printer.flush(c.time_us);  // a line cut short by the power
+      if (c.eeprom_write >= 0)
+        std::printf("%s power cut: EEPROM write %lld (address 0x%03x) not made\n", seconds(c.time_us).c_str(),
+                    static_cast<long long>(c.eeprom_write), c.address);
+      else
+        std::printf("%s power cut\n", seconds(c.time_us).c_str());
+      std::fflush(stdout);
+    }
     const auto& plog = mega.pulse_log();
     for (; pulses_written < plog.size(); ++pulses_written) {
       const auto& c = plog[pulses_written];
@@ -320,6 +349,8 @@ int main(int argc, char** argv) {
     std::printf("# sonar triggers %d, resets %d unexpected %d external, led toggles %d, stack peak %u bytes\n",
                 mega.sonar_triggers(), mega.unexpected_resets(), mega.external_resets(), mega.led_toggles(),
                 mega.stack_peak_bytes());
+    std::printf("# eeprom writes %llu, power cuts %zu\n", static_cast<unsigned long long>(mega.eeprom_writes()),
+                mega.power_cut_log().size());
     if (mega.stack_overflow_us() != 0)
       std::printf("# STACK OVERFLOW: the stack reached .bss (%u bytes static) at %s s\n", mega.static_ram_bytes(),
                   seconds(mega.stack_overflow_us()).c_str());

@@ -127,6 +127,7 @@ bool VirtualMega::load(const Options& options, std::string* error) {
   s.echo_irq = avr_io_getirq(s.avr, AVR_IOCTL_IOPORT_GETIRQ('E'), 4);
   avr_irq_register_notify(avr_io_getirq(s.avr, AVR_IOCTL_IOPORT_GETIRQ('B'), 7), Impl::on_led, &s);
   s.range_mm = options.sonar_range_mm;
+  s.hook_eeprom();
 
   if (!options.eeprom_path.empty()) {
     std::ifstream probe(options.eeprom_path, std::ios::binary);
@@ -162,6 +163,7 @@ RunStatus VirtualMega::run_until_us(uint64_t t_us) {
       ++s.unexpected_resets;
       s.after_reset();
     }
+    if (s.power_cut_pending) s.power_cycle();
     s.process_due();
     if (state == cpu_Done) return RunStatus::kStopped;
     if (state == cpu_Crashed || state == cpu_Stopped) return RunStatus::kCrashed;

@@ -1,8 +1,9 @@
 // VirtualMega: an ATmega2560 at 16 MHz on libsimavr with what a Strider robot
 // wires to it: PCA9685 boards on TWI, the HC-05 on a UART, the HC-SR04 on
-// PE5 (trigger) / PE4 (echo, INT4), EEPROM kept in a file, and a reset
-// counter. Time only moves inside run_until_us()/run_for_us(), so a physics
-// simulator can advance the firmware in lock-step with its own steps.
+// PE5 (trigger) / PE4 (echo, INT4), EEPROM kept in a file, a reset
+// counter, and power cuts (at once or at the N-th EEPROM write). Time only
+// moves inside run_until_us()/run_for_us(), so a physics simulator can
+// advance the firmware in lock-step with its own steps.
 #ifndef STRIDER_TOOLS_VBENCH_VIRTUAL_MEGA_H
 #define STRIDER_TOOLS_VBENCH_VIRTUAL_MEGA_H
 
@@ -68,6 +69,27 @@ struct I2cFrame {
 struct UartByte {
   uint64_t time_us;
   uint8_t value;
+};
+
+//! An EEPROM byte the firmware programmed (a write operation: avr-libc's
+//! eeprom_update_byte() skips a byte that already holds its value).
+struct EepromWrite {
+  uint64_t time_us;
+  uint16_t address;
+  uint8_t value;
+};
+
+//! What the byte whose write a power cut interrupts holds afterwards.
+enum class TornByte {
+  kOld,     //!< its old value: the power failed before the write began
+  kErased,  //!< 0xFF: the power failed between the erase and the write of an erase-and-write
+};
+
+//! A power cut: when, and the EEPROM write it interrupted.
+struct PowerCut {
+  uint64_t time_us;
+  int64_t eeprom_write;  //!< index of the interrupted write (as eeprom_writes() counts), -1 = none
+  uint16_t address;      //!< its address
 };
 
 enum class RunStatus {
@@ -137,6 +159,28 @@ class VirtualMega {
   void set_eeprom(const std::vector<uint8_t>& bytes);
   bool load_eeprom(const std::string& path, std::string* error);
   bool save_eeprom(const std::string& path, std::string* error) const;
+
+  // EEPROM writes and power cuts.
+  //! EEPROM byte writes since load (the first has index 0).
+  uint64_t eeprom_writes() const;
+  //! Every EEPROM write since load (or the last clear).
+  const std::vector<EepromWrite>& eeprom_write_log() const;
+  void clear_eeprom_write_log();
+  //! Arms a power cut during an EEPROM write: the power fails when the
+  //! firmware starts its (n+1)-th EEPROM byte write from now (n = 0: the
+  //! next one). The n writes before it are kept, that byte holds what
+  //! `torn` says, and the Mega powers up again at once, as power_cut() does.
+  void cut_power_after_eeprom_writes(uint64_t n, TornByte torn = TornByte::kOld);
+  //! Disarms an armed cut (none fired yet).
+  void cancel_eeprom_cut();
+  bool eeprom_cut_armed() const;
+  //! The power fails and comes back at once: the MCU starts from its
+  //! power-on reset (MCUSR = PORF, SRAM garbage), the PCA9685 boards from
+  //! their power-on state (asleep, outputs off), bytes queued for the UARTs
+  //! are lost; the EEPROM keeps what was written.
+  void power_cut();
+  //! Power cuts so far (armed or immediate).
+  const std::vector<PowerCut>& power_cut_log() const;
 
   // Resets.
   //! External reset (the RESET pin): counted separately from the others.

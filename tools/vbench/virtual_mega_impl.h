@@ -1,7 +1,8 @@
 // VirtualMega's implementation state (see virtual_mega.h), shared by its
 // parts: virtual_mega.cpp (loading, running, the public interface),
-// vmega_uart.cpp (the two UARTs), vmega_twi.cpp (the PCA9685 boards on TWI)
-// and vmega_sonar.cpp (the HC-SR04 and the LED pin).
+// vmega_uart.cpp (the two UARTs), vmega_twi.cpp (the PCA9685 boards on TWI),
+// vmega_sonar.cpp (the HC-SR04 and the LED pin) and vmega_eeprom.cpp (EEPROM
+// writes and power cuts).
 #ifndef STRIDER_VBENCH_VIRTUAL_MEGA_IMPL_H
 #define STRIDER_VBENCH_VIRTUAL_MEGA_IMPL_H
 
@@ -165,6 +166,20 @@ struct VirtualMega::Impl {
   // run slows to a crawl. Edge-style handling of level mode avoids it (no
   // Strider firmware uses low-level interrupts).
   void relax_level_interrupts();
+
+  // --- EEPROM writes, power cuts (vmega_eeprom.cpp) --------------------------
+  avr_io_write_t eecr_write = nullptr;  // simavr's EEPROM control handler, wrapped
+  void* eecr_param = nullptr;
+  uint64_t eeprom_writes = 0;
+  std::vector<EepromWrite> eeprom_log;
+  int64_t cut_at_write = -1;  // the power fails as this write begins; -1 = not armed
+  TornByte cut_torn = TornByte::kOld;
+  bool power_cut_pending = false;  // cut after the current instruction
+  std::vector<PowerCut> power_cuts;
+  void hook_eeprom();
+  static void on_eecr_write(avr_t* avr, avr_io_addr_t addr, uint8_t v, void* param);
+  //! Performs a pending cut between instructions (run_until_us()).
+  void power_cycle();
 
   // --- reset ----------------------------------------------------------------
   void after_reset() {

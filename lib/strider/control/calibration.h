@@ -52,17 +52,18 @@ class Calibration {
     return CalStatus::kOk;
   }
 
-  //! Writes the live values (with the other settings taken from `others`);
-  //! live() is then what was saved, for the caller to keep as its settings.
-  //! On a store failure calibration stays active.
+  //! Writes the live values (with the other settings taken from `others`)
+  //! after *record, the record in force (save_settings()); live() is then
+  //! what was saved, for the caller to keep as its settings. On a store
+  //! failure calibration stays active.
   template <typename Store>
-  CalStatus save(Store& store, const Settings& others) {
+  CalStatus save(Store& store, const Settings& others, SettingsRecord* record) {
     if (!active_) return CalStatus::kNotActive;
     Settings s = others;
     s.pca_osc_hz = live_.pca_osc_hz;
     s.pwm_hz = live_.pwm_hz;
     for (uint8_t i = 0; i < kMaxServoJoints; ++i) s.trim_decideg[i] = live_.trim_decideg[i];
-    if (save_settings(store, s) != SettingsStatus::kOk) return CalStatus::kStoreFailed;
+    if (save_settings(store, s, record) != SettingsStatus::kOk) return CalStatus::kStoreFailed;
     live_ = s;
     active_ = false;
     return CalStatus::kOk;

@@ -48,19 +48,23 @@ struct ParserSlot<false> {
 template <typename Sink, typename Store, bool kOwnParser = true>
 class Controller : private controller_detail::ParserSlot<kOwnParser> {
  public:
-  Controller(Sink& sink, Store& store, const Settings& loaded, SettingsStatus load_status)
-      : sink_(sink), store_(store), settings_(loaded), cal_(loaded), load_status_(load_status), cmd_{0, 0, 0},
+  //! record: where `loaded` came from (load_settings()); the next save
+  //! goes to the other slot.
+  Controller(Sink& sink, Store& store, const Settings& loaded, SettingsStatus load_status,
+             const SettingsRecord& record = SettingsRecord())
+      : sink_(sink), store_(store), settings_(loaded), cal_(loaded), record_(record), cmd_{0, 0, 0},
         out_{0, 0, 0}, mode_(RobotMode::kStanding), avoid_clear_mm_(0) {
+    record_.load_status = load_status;
     apply_loaded();
   }
   //! The same from the settings the store gave (settings_store.h).
   Controller(Sink& sink, Store& store, const LoadedSettings& loaded)
-      : Controller(sink, store, loaded.settings, loaded.status) {}
+      : Controller(sink, store, loaded.settings, loaded.record.load_status, loaded.record) {}
   //! The same in zeroed storage (zeroed_storage.h): only the non-zero
   //! members written.
   Controller(ZeroedStorage z, Sink& sink, Store& store, const LoadedSettings& loaded)
       : controller_detail::ParserSlot<kOwnParser>(z), sink_(sink), store_(store), settings_(loaded.settings),
-        cal_(loaded.settings), load_status_(loaded.status), deadman_(z), avoid_(z) {
+        cal_(loaded.settings), record_(loaded.record), deadman_(z), avoid_(z) {
     apply_loaded();
   }
 
@@ -119,7 +123,9 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   const Twist& command() const { return cmd_; }      //!< operator's velocity
   const Twist& output() const { return out_; }       //!< after avoidance
   const Settings& settings() const { return settings_; }
-  SettingsStatus load_status() const { return load_status_; }
+  SettingsStatus load_status() const { return record_.load_status; }
+  //! The record the settings in force came from, or the last one saved.
+  const SettingsRecord& settings_record() const { return record_; }
   uint8_t speed_pct() const { return speed_pct_; }
 
  private:
@@ -242,7 +248,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
         return;
       case CommandKind::kCalSave: {
         if (!cal_.active()) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
-        if (cal_.save(store_, settings_) != CalStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
+        if (cal_.save(store_, settings_, &record_) != CalStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
         settings_ = cal_.live();  // what was saved
         mode_ = RobotMode::kStanding;
         w.text(FlashText{text::kOkCalSaved});
@@ -258,7 +264,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
       case CommandKind::kSave: {
         Settings s = settings_;
         s.speed_pct = speed_pct_;
-        if (save_settings(store_, s) != SettingsStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
+        if (save_settings(store_, s, &record_) != SettingsStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
         settings_ = s;
         w.text(FlashText{text::kOkSaved});
         return;
@@ -279,7 +285,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     w.field_text(FlashText{text::kAvoid}, settings_.avoid_enabled ? to_flash(avoid_.state()) : FlashText{text::kOff});
     w.field_text(FlashText{text::kSonar}, flash_name(text::kSonarStatusNames, 4, uint8_t(sonar_.status)));
     if (sonar_.status == SonarStatus::kOk && sonar_.distance_mm != kSonarFarMm) w.field(FlashText{text::kDistMm}, sonar_.distance_mm);
-    w.field(FlashText{text::kDeadmanMs}, settings_.deadman_ms).field_text(FlashText{text::kEeprom}, to_flash(load_status_));
+    w.field(FlashText{text::kDeadmanMs}, settings_.deadman_ms).field_text(FlashText{text::kEeprom}, to_flash(record_.load_status));
     sink_.write_status(w);
   }
 
@@ -287,7 +293,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   Store& store_;
   Settings settings_;
   Calibration cal_;
-  SettingsStatus load_status_;
+  SettingsRecord record_;  // and how the settings loaded at start-up
   // Both constructors: the loaded settings into the deadman, the speed and the sink.
   void apply_loaded() {
     deadman_.set_timeout(settings_.deadman_ms);

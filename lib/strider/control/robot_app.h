@@ -41,6 +41,10 @@ constexpr char kJoints[] STRIDER_PROGMEM = "joints";
 constexpr char kBoards[] STRIDER_PROGMEM = "boards";
 constexpr char kInfoEeprom[] STRIDER_PROGMEM = "info eeprom ";
 constexpr char kDefaults[] STRIDER_PROGMEM = ", defaults";
+constexpr char kSlot[] STRIDER_PROGMEM = "slot";
+constexpr char kSeq[] STRIDER_PROGMEM = "seq";
+constexpr char kOther[] STRIDER_PROGMEM = "other";
+constexpr char kVersion[] STRIDER_PROGMEM = "version";
 constexpr char kErrModel[] STRIDER_PROGMEM = "err 30 model does not fit the firmware";
 constexpr char kGait[] STRIDER_PROGMEM = "gait";
 constexpr char kState[] STRIDER_PROGMEM = "state";
@@ -308,8 +312,25 @@ class RobotApp {
     link.send_line(kAllPorts, buf);
     ReplyWriter e(buf, sizeof line.buf);
     e.text(FlashText{app_text::kInfoEeprom}).text(to_flash(load_status()));
-    if (load_status() != SettingsStatus::kOk) e.text(FlashText{app_text::kDefaults});
+    if (load_status() != SettingsStatus::kOk) {
+      e.text(FlashText{app_text::kDefaults});
+    } else {
+      describe_record(e, controller_.settings_record());
+    }
     link.send_line(kAllPorts, buf);
+  }
+
+  //! Which record the settings came from: ` slot=1 seq=7`, or ` version=1`
+  //! (the single record before the slots); ` other=corrupt` (old_version,
+  //! invalid) when the other slot holds neither a record nor erased bytes.
+  static void describe_record(ReplyWriter& w, const SettingsRecord& r) {
+    if (r.version != kSettingsVersion) {
+      w.field(FlashText{app_text::kVersion}, r.version);
+    } else {
+      w.field(FlashText{app_text::kSlot}, r.slot).field(FlashText{app_text::kSeq}, r.seq);
+    }
+    if (r.other != SettingsStatus::kOk && r.other != SettingsStatus::kEmpty)
+      w.field_text(FlashText{app_text::kOther}, to_flash(r.other));
   }
 
   //! The tick's link and controller part: partial lines time out, deadman and

@@ -13,7 +13,10 @@ namespace strider {
 
 constexpr uint8_t kMaxServoJoints = 18;     //!< hexapod18 has the most joints
 constexpr int16_t kMaxTrimDecideg = 300;    //!< |trim| <= 30.0 deg
-constexpr uint8_t kSettingsVersion = 1;     //!< bump when the layout changes
+//! Layout version of the stored record (settings_record.h): 2 = a slot
+//! record with a sequence number; 1 was the single record before. Bump when
+//! the layout changes.
+constexpr uint8_t kSettingsVersion = 2;
 
 //! Settings record (values, not bytes; see encode/decode for the layout).
 struct Settings {

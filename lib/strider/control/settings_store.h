@@ -1,110 +1,156 @@
-//! Settings persistence: one versioned, CRC-checked record in a ByteStore
-//! (the Mega's EEPROM). Layout at the base address:
-//!   'S' 'T'  version  payload_len  payload[payload_len]  crc16_lo crc16_hi
-//! The CRC (CRC-16/CCITT-FALSE, crc.h) covers everything before it.
-//! A load that fails for any reason yields the factory defaults and says why.
+//! Settings persistence: two record slots in a ByteStore (the Mega's
+//! EEPROM), each record versioned, numbered and CRC-checked
+//! (settings_record.h). Slot 0 is at the base address, slot 1 kSettingsSlotBytes
+//! after it.
+//!
+//! A save writes the slot that does not hold the record in force, with the
+//! next sequence number; a load takes the valid record with the newest
+//! sequence number (serial-number arithmetic: 0 follows 65535). A save cut
+//! short by a reset or a power cut at any byte therefore leaves the record
+//! before it loadable, and the next boot has either that one or the new one.
+//! The single record of firmware before the slots (layout version 1, at the
+//! base, where slot 0 is) still loads; being older than any slot record, the
+//! next save goes to slot 1 and keeps it, and the save after that replaces it.
+//! A load that finds no valid record yields the factory defaults and says why.
 #ifndef STRIDER_CONTROL_SETTINGS_STORE_H
 #define STRIDER_CONTROL_SETTINGS_STORE_H
 
 #include <stdint.h>
 
-#include "crc.h"
-#include "reply.h"
-#include "settings.h"
+#include "settings_record.h"
 
 namespace strider {
 
-enum class SettingsStatus : uint8_t {
-  kOk = 0,           //!< record loaded
-  kEmpty = 1,        //!< erased store (all 0xFF): defaults
-  kCorrupt = 2,      //!< bad magic, length or CRC: defaults
-  kOldVersion = 3,   //!< record of another layout version: defaults
-  kInvalid = 4,      //!< CRC fine but a value out of range: defaults
-  kWriteFailed = 5,  //!< save: the store rejected a write or read back differently
-  kNoSpace = 6       //!< save/load: the record does not fit the store
-};
+constexpr uint8_t kSettingsSlots = 2;
+constexpr uint16_t kSettingsSlotBytes = 64;  //!< slot i at base + i * kSettingsSlotBytes
+constexpr uint16_t kSettingsStoreBytes = kSettingsSlots * kSettingsSlotBytes;
+constexpr uint8_t kNoSettingsSlot = 0xFF;
+static_assert(kSettingsRecordBytes <= kSettingsSlotBytes && kSettingsSingleRecordBytes <= kSettingsSlotBytes,
+              "a record fits its slot");
 
-inline const char* to_string(SettingsStatus s) {
-  switch (s) {
-    case SettingsStatus::kOk: return "ok";
-    case SettingsStatus::kEmpty: return "empty";
-    case SettingsStatus::kCorrupt: return "corrupt";
-    case SettingsStatus::kOldVersion: return "old_version";
-    case SettingsStatus::kInvalid: return "invalid";
-    case SettingsStatus::kWriteFailed: return "write_failed";
-    case SettingsStatus::kNoSpace: return "no_space";
-  }
-  return "unknown";
+//! Which record the settings in force came from (load_settings()), or the
+//! last one written (save_settings()): where the next save goes. Six bytes
+//! without padding (a host's copies compare byte for byte).
+struct SettingsRecord {
+  uint16_t seq = 0;                //!< its sequence number (0 for a version-1 record)
+  uint8_t slot = kNoSettingsSlot;  //!< 0 or 1; kNoSettingsSlot: none (defaults)
+  uint8_t version = 0;             //!< its layout: kSettingsVersion or kSettingsSingleRecordVersion
+  //! How the load went: kOk, or why the defaults are in force (the slot that says most).
+  SettingsStatus load_status = SettingsStatus::kEmpty;
+  //! At load: what the other slot held (kOk: an older record; kEmpty;
+  //! kCorrupt, e.g. a save cut short; kOldVersion; kInvalid).
+  SettingsStatus other = SettingsStatus::kEmpty;
+
+  uint8_t next_slot() const { return slot == 0 ? 1 : 0; }
+  uint16_t next_seq() const { return uint16_t(seq + 1); }
+};
+static_assert(sizeof(SettingsRecord) == 6, "SettingsRecord: no padding");
+
+constexpr uint16_t settings_slot_address(uint16_t base, uint8_t slot) {
+  return uint16_t(base + slot * kSettingsSlotBytes);
 }
 
-constexpr char kSettingsStatusNames[] STRIDER_PROGMEM =
-    "ok\0empty\0corrupt\0old_version\0invalid\0write_failed\0no_space";
-//! to_string() with the text in flash (for replies on the AVR).
-inline FlashText to_flash(SettingsStatus s) { return flash_name(kSettingsStatusNames, 7, uint8_t(s)); }
+//! True when record (version va, seq sa) is newer than (vb, sb): the
+//! current layout is newer than a version-1 record; between two numbered
+//! records, sa follows sb by less than half the sequence space (so 0
+//! follows 65535).
+constexpr bool settings_record_newer(uint8_t va, uint16_t sa, uint8_t vb, uint16_t sb) {
+  return va != vb ? va == kSettingsVersion : int16_t(uint16_t(sa - sb)) > 0;
+}
 
-constexpr uint8_t kSettingsMagic0 = 'S';
-constexpr uint8_t kSettingsMagic1 = 'T';
-constexpr uint8_t kSettingsHeaderBytes = 4;
-constexpr uint16_t kSettingsRecordBytes = kSettingsHeaderBytes + kSettingsPayloadBytes + 2;
+//! Loads the newest valid record of the two slots at base into *out and
+//! says which in *record (and the returned status in its load_status). *out always holds usable settings afterwards: the
+//! record on kOk, the factory defaults otherwise, with the reason of the
+//! slot that says most (invalid, old_version, corrupt, empty in that order).
+//! A record whose CRC is fine but whose values are out of range counts as
+//! no record: the older one is taken instead.
+template <typename Store>
+STRIDER_NOINLINE SettingsStatus load_settings(const Store& store, Settings* out, SettingsRecord* record,
+                                              uint16_t base = 0) {
+  *record = SettingsRecord();
+  SettingsStatus result = SettingsStatus::kNoSpace;
+  if (uint32_t(base) + kSettingsStoreBytes <= store.size()) {
+    SettingsStatus status[kSettingsSlots] = {SettingsStatus::kEmpty, SettingsStatus::kEmpty};
+    // The newest record; one whose values fail is marked and the search repeated.
+    for (uint8_t attempt = 0; attempt < kSettingsSlots; ++attempt) {
+      SettingsRecord best;
+      for (uint8_t i = 0; i < kSettingsSlots; ++i) {
+        if (attempt != 0 && status[i] != SettingsStatus::kOk) continue;
+        uint8_t version = 0;
+        uint16_t seq = 0;
+        status[i] = check_record(store, settings_slot_address(base, i), i == 0, &version, &seq);
+        if (status[i] == SettingsStatus::kOk &&
+            (best.slot == kNoSettingsSlot || settings_record_newer(version, seq, best.version, best.seq))) {
+          best.slot = i;
+          best.version = version;
+          best.seq = seq;
+        }
+      }
+      if (best.slot == kNoSettingsSlot) break;
+      read_record_payload(store, settings_slot_address(base, best.slot), best.version, out);
+      if (settings_valid(*out)) {
+        best.load_status = SettingsStatus::kOk;
+        best.other = status[1 - best.slot];
+        *record = best;
+        return SettingsStatus::kOk;
+      }
+      status[best.slot] = SettingsStatus::kInvalid;
+    }
+    // The statuses but kOk are numbered empty < corrupt < old_version < invalid.
+    result = uint8_t(status[0]) > uint8_t(status[1]) ? status[0] : status[1];
+  }
+  set_default_settings(out);
+  record->load_status = result;
+  return result;
+}
 
-//! Loads the record at base into *out. *out always holds usable settings
-//! afterwards: the record on kOk, the factory defaults otherwise.
+//! load_settings() for a caller that does not save afterwards.
 template <typename Store>
 SettingsStatus load_settings(const Store& store, Settings* out, uint16_t base = 0) {
-  set_default_settings(out);
-  if (uint32_t(base) + kSettingsRecordBytes > store.size()) return SettingsStatus::kNoSpace;
-  uint8_t rec[kSettingsRecordBytes];
-  bool erased = true;
-  for (uint16_t i = 0; i < kSettingsRecordBytes; ++i) {
-    rec[i] = store.read(uint16_t(base + i));
-    erased = erased && rec[i] == 0xFF;
+  SettingsRecord record;
+  return load_settings(store, out, &record, base);
+}
+
+//! What load_settings() gave, with its record and status: handed to a
+//! constructor as a temporary, so that no copy of the settings stays in RAM
+//! after start-up.
+struct LoadedSettings {
+  Settings settings;
+  SettingsRecord record;
+  template <typename Store>
+  explicit LoadedSettings(const Store& store, uint16_t base = 0) {
+    load_settings(store, &settings, &record, base);
   }
-  if (erased) return SettingsStatus::kEmpty;
-  const uint16_t crc_at = kSettingsRecordBytes - 2;
-  const uint16_t crc = uint16_t(rec[crc_at] | (uint16_t(rec[crc_at + 1]) << 8));
-  if (rec[0] != kSettingsMagic0 || rec[1] != kSettingsMagic1) return SettingsStatus::kCorrupt;
-  // A different version may have a different length: check version before length and CRC,
-  // but only trust the version byte once the magic matched.
-  if (rec[2] != kSettingsVersion) return SettingsStatus::kOldVersion;
-  if (rec[3] != kSettingsPayloadBytes) return SettingsStatus::kCorrupt;
-  if (crc16_ccitt(rec, crc_at) != crc) return SettingsStatus::kCorrupt;
-  Settings s;
-  if (sizeof(Settings) != kSettingsPayloadBytes) s = *out;  // a host's padding zeroed (set_default_settings)
-  decode_settings(rec + kSettingsHeaderBytes, &s);
+};
+
+//! Writes s into the slot that does not hold *record (the record in force,
+//! from load_settings() or the last save) with the next sequence number;
+//! *record is then the new one. Refuses invalid settings (kInvalid). On a
+//! failed write *record is unchanged and still names a valid record: the
+//! next save writes the same slot again.
+template <typename Store>
+STRIDER_NOINLINE SettingsStatus save_settings(Store& store, const Settings& s, SettingsRecord* record,
+                                              uint16_t base = 0) {
   if (!settings_valid(s)) return SettingsStatus::kInvalid;
-  *out = s;
+  if (uint32_t(base) + kSettingsStoreBytes > store.size()) return SettingsStatus::kNoSpace;
+  const uint8_t slot = record->next_slot();
+  const uint16_t seq = record->next_seq();
+  const SettingsStatus st = write_record(store, settings_slot_address(base, slot), s, seq);
+  if (st != SettingsStatus::kOk) return st;
+  record->seq = seq;
+  record->slot = slot;
+  record->version = kSettingsVersion;
   return SettingsStatus::kOk;
 }
 
-//! What load_settings() gave, with its status: handed to a constructor as a
-//! temporary, so that no copy of the settings stays in RAM after start-up.
-struct LoadedSettings {
-  Settings settings;
-  SettingsStatus status;
-  template <typename Store>
-  explicit LoadedSettings(const Store& store, uint16_t base = 0) : status(load_settings(store, &settings, base)) {}
-};
-
-//! Writes s at base and reads it back. Refuses invalid settings (kInvalid).
+//! save_settings() after the newest valid record in the store, which is
+//! looked up first (for a caller that keeps no SettingsRecord).
 template <typename Store>
 SettingsStatus save_settings(Store& store, const Settings& s, uint16_t base = 0) {
-  if (!settings_valid(s)) return SettingsStatus::kInvalid;
-  if (uint32_t(base) + kSettingsRecordBytes > store.size()) return SettingsStatus::kNoSpace;
-  uint8_t rec[kSettingsRecordBytes];
-  rec[0] = kSettingsMagic0;
-  rec[1] = kSettingsMagic1;
-  rec[2] = kSettingsVersion;
-  rec[3] = kSettingsPayloadBytes;
-  encode_settings(s, rec + kSettingsHeaderBytes);
-  const uint16_t crc_at = kSettingsRecordBytes - 2;
-  const uint16_t crc = crc16_ccitt(rec, crc_at);
-  rec[crc_at] = uint8_t(crc);
-  rec[crc_at + 1] = uint8_t(crc >> 8);
-  for (uint16_t i = 0; i < kSettingsRecordBytes; ++i) {
-    const uint16_t addr = uint16_t(base + i);
-    if (!store.write(addr, rec[i]) || store.read(addr) != rec[i]) return SettingsStatus::kWriteFailed;
-  }
-  return SettingsStatus::kOk;
+  Settings scratch;
+  SettingsRecord record;
+  if (load_settings(store, &scratch, &record, base) == SettingsStatus::kNoSpace) return SettingsStatus::kNoSpace;
+  return save_settings(store, s, &record, base);
 }
 
 }  // namespace strider

@@ -1,0 +1,155 @@
+//! One settings record in a ByteStore (the Mega's EEPROM), in either layout:
+//!   version 2, a slot:  'S' 'T' 2 payload_len seq_lo seq_hi payload crc_lo crc_hi  (62 bytes)
+//!   version 1, the single record of firmware before the slots, at the base:
+//!                       'S' 'T' 1 payload_len payload crc_lo crc_hi                 (60 bytes)
+//! The CRC (CRC-16/CCITT-FALSE, crc.h) covers everything before it. The
+//! record is checked and written byte by byte: no copy of it is kept in RAM.
+#ifndef STRIDER_CONTROL_SETTINGS_RECORD_H
+#define STRIDER_CONTROL_SETTINGS_RECORD_H
+
+#include <stdint.h>
+
+#include "crc.h"
+#include "reply.h"
+#include "settings.h"
+
+namespace strider {
+
+enum class SettingsStatus : uint8_t {
+  kOk = 0,           //!< record loaded
+  kEmpty = 1,        //!< erased store (all 0xFF): defaults
+  kCorrupt = 2,      //!< bad magic, length or CRC (a save cut short, a worn cell): defaults
+  kOldVersion = 3,   //!< record of a layout version this firmware does not know: defaults
+  kInvalid = 4,      //!< CRC fine but a value out of range: defaults
+  kWriteFailed = 5,  //!< save: the store rejected a write or read back differently
+  kNoSpace = 6       //!< save/load: the records do not fit the store
+};
+
+inline const char* to_string(SettingsStatus s) {
+  switch (s) {
+    case SettingsStatus::kOk: return "ok";
+    case SettingsStatus::kEmpty: return "empty";
+    case SettingsStatus::kCorrupt: return "corrupt";
+    case SettingsStatus::kOldVersion: return "old_version";
+    case SettingsStatus::kInvalid: return "invalid";
+    case SettingsStatus::kWriteFailed: return "write_failed";
+    case SettingsStatus::kNoSpace: return "no_space";
+  }
+  return "unknown";
+}
+
+constexpr char kSettingsStatusNames[] STRIDER_PROGMEM =
+    "ok\0empty\0corrupt\0old_version\0invalid\0write_failed\0no_space";
+//! to_string() with the text in flash (for replies on the AVR).
+inline FlashText to_flash(SettingsStatus s) { return flash_name(kSettingsStatusNames, 7, uint8_t(s)); }
+
+constexpr uint8_t kSettingsMagic0 = 'S';
+constexpr uint8_t kSettingsMagic1 = 'T';
+constexpr uint8_t kSettingsSingleRecordVersion = 1;  //!< the layout without a sequence number
+constexpr uint8_t kSettingsHeaderBytes = 4;          //!< magic, version, payload length
+constexpr uint8_t kSettingsSeqBytes = 2;
+constexpr uint8_t kErasedByte = 0xFF;
+//! Bytes of a record of the current layout (version kSettingsVersion).
+constexpr uint16_t kSettingsRecordBytes = kSettingsHeaderBytes + kSettingsSeqBytes + kSettingsPayloadBytes + 2;
+//! Bytes of a version-1 record.
+constexpr uint16_t kSettingsSingleRecordBytes = kSettingsHeaderBytes + kSettingsPayloadBytes + 2;
+
+//! Where a record's payload starts, by layout version.
+constexpr uint8_t settings_payload_offset(uint8_t version) {
+  return version == kSettingsSingleRecordVersion ? kSettingsHeaderBytes : kSettingsHeaderBytes + kSettingsSeqBytes;
+}
+
+namespace detail {
+template <typename Store>
+uint16_t read_u16(const Store& store, uint16_t at) {
+  return uint16_t(store.read(at) | (uint16_t(store.read(uint16_t(at + 1))) << 8));
+}
+template <typename Store>
+bool all_erased(const Store& store, uint16_t at, uint16_t n) {
+  for (uint16_t i = 0; i < n; ++i)
+    if (store.read(uint16_t(at + i)) != kErasedByte) return false;
+  return true;
+}
+//! Writes one byte and reads it back (a worn cell is reported, not trusted).
+template <typename Store>
+bool put_byte(Store& store, uint16_t at, uint8_t v) {
+  return store.write(at, v) && store.read(at) == v;
+}
+}  // namespace detail
+
+//! Checks the record at `at` by reading it byte by byte: kOk with its
+//! layout *version and *seq (0 for version 1); kEmpty when every byte of a
+//! record's length is erased; kOldVersion for a version this firmware does
+//! not know; kCorrupt otherwise. A version-1 record counts only where
+//! single_ok (the first slot: where the firmware before the slots wrote it).
+template <typename Store>
+STRIDER_NOINLINE SettingsStatus check_record(const Store& store, uint16_t at, bool single_ok, uint8_t* version,
+                                             uint16_t* seq) {
+  uint8_t head[kSettingsHeaderBytes + kSettingsSeqBytes];
+  for (uint8_t i = 0; i < sizeof head; ++i) head[i] = store.read(uint16_t(at + i));
+  if (head[0] != kSettingsMagic0 || head[1] != kSettingsMagic1)
+    return detail::all_erased(store, at, kSettingsRecordBytes) ? SettingsStatus::kEmpty : SettingsStatus::kCorrupt;
+  // Another version may have another length: the version before length and
+  // CRC, trusted only once the magic matched.
+  const uint8_t v = head[2];
+  if (v == kSettingsSingleRecordVersion && !single_ok) return SettingsStatus::kCorrupt;
+  if (v != kSettingsVersion && v != kSettingsSingleRecordVersion) return SettingsStatus::kOldVersion;
+  if (head[3] != kSettingsPayloadBytes) return SettingsStatus::kCorrupt;
+  const uint8_t crc_at = uint8_t(settings_payload_offset(v) + kSettingsPayloadBytes);
+  uint16_t crc = kCrc16Init;
+  for (uint8_t i = 0; i < crc_at; ++i) crc = crc16_ccitt_update(crc, store.read(uint16_t(at + i)));
+  if (crc != detail::read_u16(store, uint16_t(at + crc_at))) return SettingsStatus::kCorrupt;
+  *version = v;
+  *seq = v == kSettingsSingleRecordVersion ? 0 : uint16_t(head[4] | (uint16_t(head[5]) << 8));
+  return SettingsStatus::kOk;
+}
+
+//! Decodes the payload of a record check_record() accepted (no range check).
+//! Where a Settings' bytes are its payload (the AVR) they are read straight
+//! into *s; elsewhere through a copy on the stack.
+template <typename Store>
+void read_record_payload(const Store& store, uint16_t at, uint8_t version, Settings* s) {
+  uint8_t copy[kSettingsBytesArePayload ? 1 : kSettingsPayloadBytes];
+  uint8_t* bytes = kSettingsBytesArePayload ? reinterpret_cast<uint8_t*>(s) : copy;
+  const uint16_t from = uint16_t(at + settings_payload_offset(version));
+  for (uint8_t i = 0; i < kSettingsPayloadBytes; ++i) bytes[i] = store.read(uint16_t(from + i));
+  if (!kSettingsBytesArePayload) {
+    __builtin_memset(s, 0, sizeof *s);  // a host's padding too: whole copies compare byte for byte
+    decode_settings(copy, s);
+  }
+}
+
+//! Writes s as a record of the current layout with sequence number seq at
+//! `at`, each byte read back. The first byte is made erased first and
+//! written last: until the final byte is in, the place holds no record (its
+//! magic is wrong), so a write cut short at any byte never leaves a record
+//! that mixes two saves; only a complete one has its magic. kOk or
+//! kWriteFailed.
+template <typename Store>
+SettingsStatus write_record(Store& store, uint16_t at, const Settings& s, uint16_t seq) {
+  uint8_t copy[kSettingsBytesArePayload ? 1 : kSettingsPayloadBytes];
+  const uint8_t* payload = reinterpret_cast<const uint8_t*>(&s);
+  if (!kSettingsBytesArePayload) {
+    encode_settings(s, copy);
+    payload = copy;
+  }
+  if (!detail::put_byte(store, at, kErasedByte)) return SettingsStatus::kWriteFailed;
+  uint16_t crc = crc16_ccitt_update(kCrc16Init, kSettingsMagic0);
+  uint16_t addr = uint16_t(at + 1);
+  const uint8_t header[kSettingsHeaderBytes - 1 + kSettingsSeqBytes] = {kSettingsMagic1, kSettingsVersion,
+                                                                        kSettingsPayloadBytes, uint8_t(seq),
+                                                                        uint8_t(seq >> 8)};
+  for (uint8_t i = 0; i < sizeof header + kSettingsPayloadBytes; ++i) {
+    const uint8_t b = i < sizeof header ? header[i] : payload[i - sizeof header];
+    crc = crc16_ccitt_update(crc, b);
+    if (!detail::put_byte(store, addr++, b)) return SettingsStatus::kWriteFailed;
+  }
+  if (!detail::put_byte(store, addr, uint8_t(crc)) || !detail::put_byte(store, uint16_t(addr + 1), uint8_t(crc >> 8)) ||
+      !detail::put_byte(store, at, kSettingsMagic0))
+    return SettingsStatus::kWriteFailed;
+  return SettingsStatus::kOk;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_SETTINGS_RECORD_H
