@@ -3,7 +3,13 @@
 //   at T send0 TEXT    the same to UART0 (USB)
 //   at T range MM      HC-SR04 sees an obstacle at MM millimetres
 //   at T range none    no echo at all (the echo line stays low)
+//   at T range stuck   the echo line rises after the next ping and stays high
 //   at T reset         external reset (RESET pin)
+//   at T board A off|on|detach|attach
+//                      PCA9685 at address A (0x40): supply off / on again
+//                      (power-on state), bus wires loose / back (keeps its outputs)
+//   at T bus stuck|free  SDA held low (no START or STOP completes) / released
+//   at T hang          the MCU hangs (interrupts off, spinning) until a watchdog reset
 // Without `at T` a directive applies at once (commands piped into vbench).
 #ifndef STRIDER_TOOLS_VBENCH_SCRIPT_H
 #define STRIDER_TOOLS_VBENCH_SCRIPT_H
@@ -17,13 +23,17 @@ namespace strider_vmega {
 class VirtualMega;
 
 struct ScriptEvent {
-  enum class Kind { kSend, kRange, kReset };
+  enum class Kind { kSend, kRange, kReset, kEchoStuck, kBoard, kBus, kHang };
+  enum class BoardAction { kOff, kOn, kDetach, kAttach };
   bool immediate = false;  // no `at T`
   uint64_t time_us = 0;
   Kind kind = Kind::kSend;
   int uart = 1;
   std::string text;        // kSend: the bytes, escapes resolved
   double range_mm = -1;    // kRange: negative = no echo
+  int board_address = 0;   // kBoard: 7-bit I2C address
+  BoardAction board_action = BoardAction::kOff;
+  bool bus_stuck = false;  // kBus
   int line = 0;            // source line, for messages
 };
 

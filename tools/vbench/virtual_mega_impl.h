@@ -18,6 +18,7 @@
 #include "sim_cycle_timers.h"
 #include "sim_elf.h"
 #include "sim_irq.h"
+#include "avr_twi.h"
 #include "virtual_mega.h"
 
 namespace strider_vmega {
@@ -44,6 +45,7 @@ struct VirtualMega::Impl {
   avr_t* avr = nullptr;
   elf_firmware_t* fw = nullptr;
   std::vector<Pca9685> boards;
+  std::vector<bool> attached;  // board i's bus wires connected (set_board_attached)
   std::vector<double> last_width;
   std::vector<PulseChange> pulse_log;
   std::vector<I2cTransaction> i2c_log;
@@ -152,11 +154,25 @@ struct VirtualMega::Impl {
   }
   void flush_pending_stop();
   void update_pulses();
+  bool reachable(size_t i) const { return boards[i].powered() && attached[i]; }
+  // The bus held low: TWCR's writes pass through twcr_write(), which keeps
+  // back the ones that ask the TWI to act while it is stuck.
+  avr_twi_t* twi = nullptr;
+  avr_io_write_t twi_write = nullptr;  // simavr's own TWCR handler
+  void* twi_write_param = nullptr;
+  bool bus_stuck = false;
+  void hook_twcr();
+  static void twcr_write(avr_t* avr, avr_io_addr_t addr, uint8_t v, void* param);
+  void release_bus();
 
   // --- HC-SR04 --------------------------------------------------------------
   avr_irq_t* echo_irq = nullptr;
+  bool echo_stuck = false;  // the next echo rises and stays high
+  bool echo_high = false;
   static void on_trigger(avr_irq_t*, uint32_t value, void* param);
   void trigger_edge(bool high);
+  void set_echo(bool high);
+  void unstick_echo();  // a stuck echo falls, the sensor measures again
   bool led_level = false;
   static void on_led(avr_irq_t*, uint32_t value, void* param);
 
