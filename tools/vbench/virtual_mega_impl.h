@@ -77,6 +77,7 @@ struct VirtualMega::Impl {
   uint64_t min_trigger_interval_cycles = 0;
 
   uint16_t lowest_sp = 0xFFFF;
+  bool sp_half_written = false;  // OUT SPH done, OUT SPL not yet
   uint16_t static_ram_end = 0;    // first byte after .data + .bss
   uint64_t stack_overflow_us = 0;  // when the stack first grew into .bss
   int unexpected_resets = 0;
@@ -189,6 +190,7 @@ struct VirtualMega::Impl {
     // queues did not. Cycle timers may be gone: re-arm ours.
     end_transaction(false);
     pending_stop.clear();
+    sp_half_written = false;
     for (Uart& p : uart) {
       p.xoff = false;
     }
