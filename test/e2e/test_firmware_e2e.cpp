@@ -748,6 +748,25 @@ TEST_P(FirmwareBoards, StuckBusAtBootRecovers) {
   EXPECT_EQ(r.mega().unexpected_resets(), 0) << r.transcript(from);
 }
 
+// The MCU hangs during start-up, before the servo boards are set up: the
+// watchdog runs from the first line of setup(), so the board resets, says
+// so, and starts.
+TEST_P(FirmwareBoards, HangDuringStartUpEndsInAWatchdogReset) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.load(&error)) << error;
+  // In setup(): the serial ports are set up, the servo boards not yet.
+  while (r.mega().baud(0) == 0 && r.mega().now_us() < 100000) ASSERT_EQ(r.mega().run_for_us(20), RunStatus::kOk);
+  ASSERT_TRUE(r.mega().i2c_log().empty());
+  r.mega().hang();
+  ASSERT_TRUE(r.wait_ready(&error)) << error << r.transcript();
+  EXPECT_EQ(r.mega().unexpected_resets(), 1);
+  EXPECT_LT(r.mega().now_us(), 1000000u);
+  EXPECT_TRUE(r.any_line_since(0, "info reset watchdog")) << r.transcript();
+  ASSERT_TRUE(stand_settled(r));
+  expect_standing(r, nullptr, "after the watchdog reset");
+}
+
 // hexapod18 drives two boards, 0x40 and 0x41; the second one missing.
 TEST(FirmwareBoardsHexapod, SecondBoardMissing) {
   Robot r("hexapod18");
