@@ -73,8 +73,29 @@ void Pca9685Output::fail(uint8_t b) {
 }
 
 void Pca9685Output::service(uint32_t now_ms) {
-  if (faulted_ == 0 || int32_t(now_ms - next_probe_ms_) < 0) return;
-  next_probe_ms_ = now_ms + kProbeMs;
+  if (int32_t(now_ms - next_check_ms_) >= 0) {
+    next_check_ms_ = now_ms + kCheckMs;
+    check();
+  }
+  if (faulted_ != 0 && int32_t(now_ms - next_probe_ms_) >= 0) {
+    next_probe_ms_ = now_ms + kProbeMs;
+    probe();
+  }
+}
+
+void Pca9685Output::check() {
+  for (uint8_t b = 0; b < boards_; ++b) {
+    if (faulted_ & strider::board_bit(b)) continue;
+    uint8_t mode1 = 0, prescale = 0;
+    if (pca9685_bus::read_mode(b, &mode1, &prescale) && mode1 == pca9685_bus::kMode1Running &&
+        prescale == running_[b])
+      continue;
+    fail(b);  // silent, or reset behind the firmware's back (asleep: its outputs are off)
+    if (bus_stuck_) return;
+  }
+}
+
+void Pca9685Output::probe() {
   for (uint8_t b = 0; b < boards_; ++b) {
     if (!(faulted_ & strider::board_bit(b))) continue;
     const bool there = pca9685_bus::probe(b);  // not counted: a missing board is probed for ever

@@ -6,8 +6,10 @@
 // re-read: the timing is cached in lib/strider/control/pca9685_timing.h).
 //
 // Faults: a board whose transfer fails (no ACK: missing, unpowered, a loose
-// wire; or a time-out: the bus held low) is taken as faulted and gets no
-// more frames; service() probes it every kProbeMs and, once it answers,
+// wire; or a time-out: the bus held low), or whose MODE1 or prescale is no
+// longer what the firmware set (it lost its supply for a moment and reset;
+// read every kCheckMs, also while no frame goes to it), is taken as faulted
+// and gets no more frames; service() probes it every kProbeMs and, once it answers,
 // sets it up again if it lost its registers (asleep or at another
 // prescale: prescale, mode, every output off) or reads back what it
 // drives if it kept them. report() tells RobotApp (control/servo_boards.h),
@@ -25,6 +27,7 @@ class Pca9685Output {
   static constexpr uint8_t kMaxChannels = strider::kMaxPcaBoards * strider::kPcaChannelsPerBoard;
   static constexpr uint16_t kFullOff = strider::kPcaFullOff;
   static constexpr uint16_t kProbeMs = 100;  //!< a faulted board is probed this often [ms]
+  static constexpr uint16_t kCheckMs = 250;  //!< a working board's MODE1 and prescale are read this often [ms]
 
   //! The shadow is the caller's: `channels` entries (at most kMaxChannels),
   //! 16 per board its model uses, so that a one-board robot keeps no shadow
@@ -52,8 +55,9 @@ class Pca9685Output {
   //! Sends the changed channels to the boards that answer.
   void flush();
 
-  //! Probes the faulted boards (every kProbeMs) and takes back one that
-  //! answers. Call once per tick, before the frame.
+  //! Checks the working boards (every kCheckMs), probes the faulted ones
+  //! (every kProbeMs) and takes back one that answers. Call once per tick,
+  //! before the frame.
   void service(uint32_t now_ms);
   //! The boards' state for RobotApp::servo_boards(); clears `restored`.
   strider::ServoBoardReport report();
@@ -70,6 +74,10 @@ class Pca9685Output {
   uint8_t all_boards() const { return uint8_t((1u << boards_) - 1u); }
   //! A transfer to board b failed: b (every board, when the bus timed out) is faulted.
   void fail(uint8_t b);
+  //! Whether the working boards still run as set (MODE1, prescale); faults the others.
+  void check();
+  //! Probes the faulted boards and takes back the ones that answer.
+  void probe();
   //! Board b answers again: set up anew or read back; false if that failed.
   bool take_back(uint8_t b);
   //! Reads board b's outputs into the shadow (they are what it drives).
@@ -88,6 +96,7 @@ class Pca9685Output {
   uint8_t prescale_ = 0;  // what every board should run at (0: not yet set)
   uint8_t running_[strider::kMaxPcaBoards] = {};  // the prescale board b runs at (0: asleep, unknown)
   uint32_t next_probe_ms_ = 0;
+  uint32_t next_check_ms_ = 0;
 };
 
 #endif

@@ -357,6 +357,20 @@ TYPED_TEST(RobotAppTest, ServoBoardFaultStopsTheWalkUntilTheBoardIsBack) {
   for (const auto& j : r.max_jump) EXPECT_LE(j.second, 2) << "channel " << int(j.first) << " jumped";
   r.send(1, "walk 80\n");
   EXPECT_EQ(r.lines.on(1).back().rfind("ok move", 0), 0u) << r.lines.on(1).back();
+
+  // Lost and back between two reports (a short power cut the driver found
+  // and mended at once): both notices, and its legs on again.
+  r.collect();
+  for (const auto& t : r.ticks) outputs[t.first] = t.first < 16 ? strider::kPcaFullOff : t.second;
+  rep.restored = strider::board_bit(0);
+  from = r.lines.sent.size();
+  r.app->servo_boards(rep, r.now_us, r.lines);
+  ASSERT_EQ(r.lines.sent.size(), from + 2);
+  EXPECT_EQ(r.lines.sent[from].second, "info fault pca9685 0x40");
+  EXPECT_EQ(r.lines.sent[from + 1].second, "info pca9685 0x40 restored");
+  EXPECT_EQ(r.app->controller().mode(), strider::RobotMode::kStanding);
+  r.run_ms(2000);
+  for (const auto& e : expected) EXPECT_NEAR(r.ticks[e.first], e.second, 1) << "channel " << int(e.first);
 }
 
 // A warm start: the boards kept the pulses of the run before (an MCU reset

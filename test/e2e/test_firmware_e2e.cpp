@@ -840,6 +840,30 @@ TEST(FirmwareBoardsHexapod, BoardLosesPowerMidWalkAndComesBack) {
               "within %.0f ms\n", detect_ms, restore_ms, driven_ms);
 }
 
+// Board 0x41's supply drops for 30 ms while the robot stands: no frame goes
+// to it (nothing moves), and it answers again at once, but asleep with its
+// outputs off. The firmware's periodic check of MODE1 finds it, sets it up
+// again and switches its legs on.
+TEST(FirmwareBoardsHexapod, PowerGlitchWhileStandingIsFound) {
+  Robot r("hexapod18");
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(stand_settled(r));
+  const size_t from = r.mark();
+  const uint64_t cut = r.mega().now_us();
+  r.mega().set_board_power(1, false);
+  r.run_for(30000);
+  r.mega().set_board_power(1, true);
+  EXPECT_EQ(r.mega().pulse_us(16), 0.0);  // limp
+  ASSERT_FALSE(r.wait_for_line(is_line("info fault pca9685 0x41"), 500000).empty()) << r.transcript(from);
+  ASSERT_FALSE(r.wait_for_line(is_line("info pca9685 0x41 restored"), 300000).empty()) << r.transcript(from);
+  std::printf("hexapod18: a 30 ms power cut of board 0x41 while standing found and the board set up again "
+              "after %.0f ms\n", double(r.mega().now_us() - cut) / 1000.0);
+  ASSERT_TRUE(stand_settled(r));
+  expect_standing(r, nullptr, "after the power glitch");
+  EXPECT_EQ(r.status()["pca9685"], "ok");
+}
+
 // Board 0x41's bus wires come loose mid-walk and back: it keeps its supply
 // and its registers, so its servos hold their pulses throughout; the
 // firmware reads them back and moves its legs on from there.

@@ -180,8 +180,9 @@ class RobotApp {
   //! and the failed transfers (`i2c_errors`).
   template <typename Link>
   STRIDER_NOINLINE void servo_boards(const ServoBoardReport& r, uint32_t now_us, Link& link) {
-    const uint8_t lost = uint8_t(r.faulted & ~boards_faulted_);
-    const uint8_t back = uint8_t(boards_faulted_ & ~r.faulted);
+    // A board may have failed and come back since the last report: both notices.
+    const uint8_t lost = uint8_t((r.faulted | r.restored) & ~boards_faulted_);
+    const uint8_t back = uint8_t((boards_faulted_ | r.restored) & ~r.faulted);
     for (uint8_t b = 0; b < kMaxPcaBoards; ++b)
       if (lost & board_bit(b)) board_notice(FlashText{app_text::kInfoFaultPca}, b, FlashText{app_text::kNothing}, link);
     if (r.bus_stuck && !bus_stuck_) notice(FlashText{app_text::kInfoFaultI2c}, link);
