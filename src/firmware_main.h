@@ -127,6 +127,12 @@ __attribute__((noinline)) void make_app() {
   new (&g_app_storage.app) App(strider::kZeroedStorage, kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
 }
 uint32_t g_next_tick_us = 0;
+// The servo boards' check runs once per period, this long after the frame
+// (and not when the next tick is due): the frame's transfers are sent at
+// their time, in one burst, and never share the bus with it.
+constexpr uint32_t kBoardsAfterFrameUs = 6000;
+bool g_boards_due = false;
+uint32_t g_boards_at_us = 0;
 uint32_t g_led_ms = 0;
 
 // Before anything else runs (.init3: the stack pointer and the zero register
@@ -246,8 +252,6 @@ void loop() {
   run_sonar();
   if (int32_t(now_us - g_next_tick_us) >= 0) {
     const uint32_t start_us = micros();
-    g_servos.service(start_us / 1000u);  // a faulted board probed, one that answers taken back
-    g_app.servo_boards(g_servos.report(), start_us, g_link);
     g_app.tick(start_us, g_link);
     const uint32_t took = micros() - start_us;
     g_app.record_tick_time(took);
@@ -258,6 +262,15 @@ void loop() {
       g_app.record_missed_ticks(uint16_t(missed > 0xFFFF ? 0xFFFF : missed));
       g_next_tick_us += missed * strider::kTickPeriodUs;
     }
+    g_boards_due = true;
+    g_boards_at_us = micros() + kBoardsAfterFrameUs;
+  }
+  // The servo boards between frames: working boards read, a faulted one
+  // probed, one that answers taken back; RobotApp hears of it.
+  if (g_boards_due && int32_t(now_us - g_boards_at_us) >= 0 && int32_t(g_next_tick_us - now_us) > 0) {
+    g_boards_due = false;
+    g_servos.service(now_us / 1000u);
+    g_app.servo_boards(g_servos.report(), now_us, g_link);
   }
   const uint32_t now_ms = now_us / 1000u;
   if (now_ms - g_led_ms >= 500u) {  // heartbeat: the loop is alive

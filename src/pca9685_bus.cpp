@@ -103,9 +103,16 @@ bool set_prescale(uint8_t b, uint8_t prescale) {
 
 bool probe(uint8_t b) { return b < strider::kMaxPcaBoards && note(g_boards[b].detected()); }
 
+// One transfer from PRE_SCALE on: auto-increment rolls over from it to MODE1
+// and MODE2 (datasheet 7.3, table 4's remark). A board without
+// auto-increment (its power-on state) sends PRE_SCALE three times, which
+// no MODE2 this firmware sets matches: such a board is not running.
 bool read_mode(uint8_t b, uint8_t* mode1, uint8_t* prescale) {
-  return b < strider::kMaxPcaBoards && read_registers(b, PCA9685_MODE1, mode1, 1) &&
-         read_registers(b, PCA9685_PRESCALE, prescale, 1);
+  uint8_t r[3];
+  if (b >= strider::kMaxPcaBoards || !read_registers(b, PCA9685_PRESCALE, r, sizeof r)) return false;
+  *prescale = r[0];
+  *mode1 = r[2] == MODE2_OUTDRV ? r[1] : uint8_t(0);
+  return true;
 }
 
 bool read_outputs(uint8_t b, uint16_t* off) {

@@ -39,7 +39,8 @@ bool set_prescale(uint8_t board, uint8_t prescale);
 //! Whether board b acknowledges its address.
 bool probe(uint8_t board);
 
-//! Board b's MODE1 and PRE_SCALE. False if it did not answer.
+//! Board b's MODE1 (0 unless MODE2 is the firmware's) and PRE_SCALE, in
+//! one transfer. False if it did not answer.
 bool read_mode(uint8_t board, uint8_t* mode1, uint8_t* prescale);
 
 //! The OFF word of each of board b's 16 outputs (off[16]): kFullOff for one

@@ -296,6 +296,40 @@ TYPED_TEST(RobotAppTest, StatusLineVerbatim) {
             "overruns=1 tick_max_us=21000");
 }
 
+// The status line with every field at its widest the robot can show at
+// once (walking, turning and strafing at the limits, a faulted board on
+// each address, every counter at its top, a stack probe) fits the reply
+// buffer: nothing is cut off.
+TEST(RobotAppStatus, LongestStatusLineFits) {
+  Rig<float> r(strider::kHexapod18);
+  r.run_ms(5000);
+  r.app->set_stack_probe([]() { return uint16_t(1023); });
+  r.app->record_tick_time(999999);
+  r.app->record_missed_ticks(65535);
+  strider::ServoBoardReport rep;
+  rep.errors = 65535;
+  r.app->servo_boards(rep, r.now_us, r.lines);
+  r.send(1, "deadman 60000\nspeed 100\ngait ripple\nvel -499.9 -499.9 -359.9\n");
+  r.run_ms(3000);
+  const auto status = [&]() {
+    const size_t from = r.lines.sent.size();
+    r.send(1, "status\n");
+    EXPECT_EQ(r.lines.sent.size(), from + 1);
+    const std::string line = r.lines.sent.back().second;
+    EXPECT_NE(line.find(" stack_peak=1023"), std::string::npos) << line;  // the last field, whole
+    EXPECT_LT(line.size() + 1, size_t(strider::kMaxReplyBytes)) << line;
+    return line;
+  };
+  const std::string walking = status();
+  EXPECT_NE(walking.find("mode=walking"), std::string::npos) << walking;
+  rep.faulted = 3;
+  r.app->servo_boards(rep, r.now_us, r.lines);  // stops the walk
+  const std::string faulted = status();
+  EXPECT_NE(faulted.find(" pca9685=0x40,0x41 i2c_errors=65535 "), std::string::npos) << faulted;
+  std::printf("walking: %zu bytes, both boards faulted: %zu bytes (buffer %u)\n", walking.size(), faulted.size(),
+              unsigned(strider::kMaxReplyBytes));
+}
+
 // A servo board stops answering mid-walk (RobotApp::servo_boards(), from the
 // firmware's driver): one notice, the walk stops, walking is refused with
 // err 31 and `status` names the board; back in its power-on state, its legs
