@@ -127,9 +127,9 @@ __attribute__((noinline)) void make_app() {
   new (&g_app_storage.app) App(strider::kZeroedStorage, kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
 }
 uint32_t g_next_tick_us = 0;
-// The servo boards' check runs once per period, this long after the frame
-// (and not when the next tick is due): the frame's transfers are sent at
-// their time, in one burst, and never share the bus with it.
+// The servo boards' check runs once per period, this long after the frame:
+// the frame's transfers are sent at their time, in one burst, and do not
+// share the bus with it (unless a tick ran past 14 ms: then it runs late).
 constexpr uint32_t kBoardsAfterFrameUs = 6000;
 bool g_boards_due = false;
 uint32_t g_boards_at_us = 0;
@@ -262,12 +262,14 @@ void loop() {
       g_app.record_missed_ticks(uint16_t(missed > 0xFFFF ? 0xFFFF : missed));
       g_next_tick_us += missed * strider::kTickPeriodUs;
     }
-    g_boards_due = true;
-    g_boards_at_us = micros() + kBoardsAfterFrameUs;
+    if (!g_boards_due) {
+      g_boards_due = true;
+      g_boards_at_us = micros() + kBoardsAfterFrameUs;
+    }
   }
   // The servo boards between frames: working boards read, a faulted one
   // probed, one that answers taken back; RobotApp hears of it.
-  if (g_boards_due && int32_t(now_us - g_boards_at_us) >= 0 && int32_t(g_next_tick_us - now_us) > 0) {
+  if (g_boards_due && int32_t(now_us - g_boards_at_us) >= 0) {
     g_boards_due = false;
     g_servos.service(now_us / 1000u);
     g_app.servo_boards(g_servos.report(), now_us, g_link);
