@@ -11,7 +11,9 @@
 //! the servos do not all draw their start-up current at once and brown out
 //! the supply (ANCHORS: the most common complaint). A servo's first pulse
 //! cannot be interpolated (its position is unknown): that is what the
-//! staging is for.
+//! staging is for. An output that already holds a pulse (adopt_outputs():
+//! after an MCU reset the boards ran through, or a board that came back)
+//! is not switched off: its leg moves on from that pulse at its turn.
 #ifndef STRIDER_CONTROL_SERVO_STAGE_H
 #define STRIDER_CONTROL_SERVO_STAGE_H
 
@@ -178,7 +180,11 @@ class ServoStage {
       const uint16_t w = ch < channels ? words[ch] : kPcaFullOff;
       // The limits' ticks are known when the tick map holds every joint
       // (every built-in model); otherwise nothing is taken as held.
-      const bool inside = fast_ && w < kPcaFullOff && w >= tick_map_.joint(k).lo_ticks && w <= tick_map_.joint(k).hi_ticks;
+      bool inside = false;
+      if (fast_ && w < kPcaFullOff) {
+        const ServoTickJoint<S> j = tick_map_.joint(k);
+        inside = w >= j.lo_ticks && w <= j.hi_ticks;
+      }
       if (inside) {
         ticks_[k] = w;
         ++held;
@@ -187,7 +193,9 @@ class ServoStage {
         out.relax(ch);
       }
     }
-    relax_pending_ = false;  // what is on stays on, the rest was switched off above
+    // Every board (a warm start): this replaces the relax of configure().
+    // Some boards: a relax asked for meanwhile still applies to all.
+    if (board_mask == 0xFF) relax_pending_ = false;
     return held;
   }
 
