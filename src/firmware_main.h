@@ -127,6 +127,12 @@ __attribute__((noinline)) void make_app() {
   new (&g_app_storage.app) App(strider::kZeroedStorage, kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
 }
 uint32_t g_next_tick_us = 0;
+// The servo boards' check runs once per period, this long after the frame:
+// the frame's transfers are sent at their time, in one burst, and do not
+// share the bus with it (unless a tick ran past 14 ms: then it runs late).
+constexpr uint32_t kBoardsAfterFrameUs = 6000;
+bool g_boards_due = false;
+uint32_t g_boards_at_us = 0;
 uint32_t g_led_ms = 0;
 
 // Before anything else runs (.init3: the stack pointer and the zero register
@@ -160,13 +166,35 @@ uint16_t stack_peak() {
 
 constexpr char kInfoWatchdog[] PROGMEM = "info reset watchdog";
 constexpr char kInfoBrownOut[] PROGMEM = "info reset brown-out";
-constexpr char kInfoNoBoard[] PROGMEM = "info pca9685 not answering";
+constexpr char kInfoExternal[] PROGMEM = "info reset external";
 
 void notice(const char* flash_text) {
   char buf[32];
   strncpy_P(buf, flash_text, sizeof buf - 1);
   buf[sizeof buf - 1] = 0;
   g_link.send_line(strider::kAllPorts, buf);
+}
+
+// The reset's cause, once, from the flags early_init() saved: the most
+// telling one when several are set. Nothing for a power-up, nor when a
+// bootloader cleared MCUSR before the firmware ran (docs/reliability.md).
+void report_reset_cause() {
+  const uint8_t f = g_reset_flags;
+  if (f & _BV(WDRF)) notice(kInfoWatchdog);
+  else if (f & _BV(BORF)) notice(kInfoBrownOut);
+  else if ((f & _BV(EXTRF)) && !(f & _BV(PORF))) notice(kInfoExternal);
+}
+
+// The prescale the servo stage will set (configure_servo_pwm() with the
+// loaded settings): boards found running at it after an MCU reset keep
+// their pulses. 0 after a power-up: the boards' registers are not trusted,
+// every output starts off.
+uint8_t warm_prescale() {
+  if (g_reset_flags & _BV(PORF)) return 0;
+  strider::Pca9685Timing timing;  // 25 MHz, 50 Hz unless the settings' oscillator is accepted
+  const strider::Settings& s = g_app.controller().settings();
+  timing.configure(s.pca_osc_hz, s.pwm_hz);
+  return timing.prescale();
 }
 
 void read_links(uint32_t now_us) {
@@ -194,18 +222,25 @@ static_assert(pins::kHeartbeatLed == 13, "the LED on D13 = PB7 (the port bits be
 void serialEventRun() {}
 
 void setup() {
+  // The watchdog before anything can hang: a bus held low (before Wire's
+  // time-out is set), a library that blocks. Start-up takes about 20 ms
+  // (the velocity limits come from a table, STRIDER_VELOCITY_SEARCH 0); a
+  // reply that waits for a full ring feeds it (serial_link.h).
+  wdt_enable(WDTO_500MS);
   make_app();
   DDRB |= _BV(PB7);
   Serial.begin(pins::kUsbBaud);
   Serial1.begin(g_app.controller().settings().baud);
   hcsr04::begin();
-  const bool boards_ok = g_servos.begin(kBoards);
-  if (g_reset_flags & _BV(WDRF)) notice(kInfoWatchdog);
-  if (g_reset_flags & _BV(BORF)) notice(kInfoBrownOut);
-  if (!boards_ok) notice(kInfoNoBoard);
+  report_reset_cause();
+  // After an MCU reset the boards may still run the last frame (the robot
+  // stands on it): held() outputs keep their pulses and the robot stands up
+  // from them. After a power-up, every output starts off.
+  g_servos.begin(kBoards, warm_prescale());
   g_app.set_stack_probe(stack_peak);
-  g_app.begin(micros(), g_link);  // the velocity-limit search runs here, before the watchdog
-  wdt_enable(WDTO_500MS);
+  wdt_reset();
+  g_app.begin(micros(), g_link, g_servos.held() != 0 ? g_servos.outputs() : nullptr, g_servos.channels());
+  wdt_reset();
   g_next_tick_us = micros();
 }
 
@@ -227,6 +262,17 @@ void loop() {
       g_app.record_missed_ticks(uint16_t(missed > 0xFFFF ? 0xFFFF : missed));
       g_next_tick_us += missed * strider::kTickPeriodUs;
     }
+    if (!g_boards_due) {
+      g_boards_due = true;
+      g_boards_at_us = micros() + kBoardsAfterFrameUs;
+    }
+  }
+  // The servo boards between frames: working boards read, a faulted one
+  // probed, one that answers taken back; RobotApp hears of it.
+  if (g_boards_due && int32_t(now_us - g_boards_at_us) >= 0) {
+    g_boards_due = false;
+    g_servos.service(now_us / 1000u);
+    g_app.servo_boards(g_servos.report(), now_us, g_link);
   }
   const uint32_t now_ms = now_us / 1000u;
   if (now_ms - g_led_ms >= 500u) {  // heartbeat: the loop is alive

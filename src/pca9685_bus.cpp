@@ -21,6 +21,12 @@
 // So the firmware keeps one Adafruit_I2CDevice per board and writes the
 // registers the library's begin()/setPWMFreq() write, in an order that never
 // lets a board run at another frequency.
+//
+// Faults: Wire's time-out is on (kTimeoutUs), so a bus held low (a slave
+// holding SDA, a short) fails a transfer within milliseconds instead of
+// hanging the loop until the watchdog resets the board (and again after the
+// reset); Wire then resets the TWI. A board that does not answer fails its
+// transfers at once (no ACK). Pca9685Output decides what follows.
 #include "control/channel_map.h"  // before Arduino.h (its min/max macros)
 
 #include <Adafruit_I2CDevice.h>
@@ -36,58 +42,109 @@ namespace {
 
 static_assert(strider::kPcaFirstAddress == PCA9685_I2C_ADDRESS, "the first board at the library's default address");
 static_assert(1 + 4 * kMaxBurstChannels - 2 <= 32, "a burst fits Adafruit_I2CDevice's 32-byte transfer on the AVR");
+static_assert(kMode1Running == (MODE1_AI | MODE1_ALLCAL), "MODE1 while running: auto-increment, all-call");
+
+// A transfer's longest wait for the bus [us]: the longest transfer (32
+// bytes, 0.72 ms at 400 kHz) with room for clock stretching; three of them
+// are still within a tick of the 20 ms period.
+constexpr uint32_t kTimeoutUs = 2000;
 
 Adafruit_I2CDevice g_boards[strider::kMaxPcaBoards] = {
     Adafruit_I2CDevice(PCA9685_I2C_ADDRESS, &Wire),
     Adafruit_I2CDevice(PCA9685_I2C_ADDRESS + 1, &Wire)};
 
-// MODE1 while the firmware runs: register auto-increment, answers the
-// all-call address (the power-on default), oscillator on.
-constexpr uint8_t kMode1Awake = MODE1_AI | MODE1_ALLCAL;
+bool g_timed_out = false;
+
+// Whether the transfer that just returned `ok` failed by a time-out.
+bool note(bool ok) {
+  if (!ok && Wire.getWireTimeoutFlag()) {
+    Wire.clearWireTimeoutFlag();
+    g_timed_out = true;
+  }
+  return ok;
+}
 
 bool write_register(uint8_t board, uint8_t reg, uint8_t value) {
-  return g_boards[board].write(&value, 1, true, &reg, 1);
+  return note(g_boards[board].write(&value, 1, true, &reg, 1));
+}
+
+bool read_registers(uint8_t board, uint8_t reg, uint8_t* to, uint8_t n) {
+  return note(g_boards[board].write_then_read(&reg, 1, to, n));
 }
 
 }  // namespace
 
-bool begin(uint8_t boards) {
-  if (boards > strider::kMaxPcaBoards) boards = strider::kMaxPcaBoards;
-  bool ok = true;
-  for (uint8_t b = 0; b < boards; ++b) {
-    ok = g_boards[b].begin() && ok;  // Wire.begin(), then is the board there?
-    // Asleep first: a board that kept running through an MCU reset stops its
-    // pulses here rather than emitting the old frame at another frequency.
-    ok = write_register(b, PCA9685_MODE1, kMode1Awake | MODE1_SLEEP) && ok;
-    ok = write_register(b, PCA9685_MODE2, MODE2_OUTDRV) && ok;  // totem-pole outputs for servo lines
-    static const uint8_t kAllFullOff[4] = {0x00, 0x00, 0x00, 0x10};  // ALL_LED_OFF_H bit 4
-    const uint8_t reg = PCA9685_ALLLED_ON_L;
-    ok = g_boards[b].write(kAllFullOff, sizeof kAllFullOff, true, &reg, 1) && ok;
-  }
-  g_boards[0].setSpeed(pins::kI2cClockHz);  // one bus: Wire.setClock()
-  return ok;
+void begin() {
+  for (uint8_t b = 0; b < strider::kMaxPcaBoards; ++b) g_boards[b].begin(false);  // Wire.begin(), no transfer
+  Wire.setClock(pins::kI2cClockHz);        // after Wire.begin(), which sets 100 kHz
+  Wire.setWireTimeout(kTimeoutUs, true);  // true: Wire resets the TWI after a time-out
 }
 
-void set_prescale(uint8_t boards, uint8_t prescale) {
-  if (boards > strider::kMaxPcaBoards) boards = strider::kMaxPcaBoards;
-  // MODE1 is known (begin() wrote it): writes only, nothing read back.
-  for (uint8_t b = 0; b < boards; ++b) {
-    write_register(b, PCA9685_MODE1, kMode1Awake | MODE1_SLEEP);  // PRE_SCALE is writable only asleep
-    write_register(b, PCA9685_PRESCALE, prescale);
-    write_register(b, PCA9685_MODE1, kMode1Awake);
-    delayMicroseconds(500);  // oscillator start-up (datasheet 7.3.1.1: 500 us)
-    write_register(b, PCA9685_MODE1, kMode1Awake | MODE1_RESTART);
-  }
+bool init_board(uint8_t b) {
+  if (b >= strider::kMaxPcaBoards) return false;
+  // Asleep first: a board that kept running through an MCU reset stops its
+  // pulses here rather than emitting the old frame at another frequency.
+  if (!write_register(b, PCA9685_MODE1, kMode1Running | MODE1_SLEEP)) return false;
+  if (!write_register(b, PCA9685_MODE2, MODE2_OUTDRV)) return false;  // totem-pole outputs for servo lines
+  static const uint8_t kAllFullOff[4] = {0x00, 0x00, 0x00, 0x10};  // ALL_LED_OFF_H bit 4
+  const uint8_t reg = PCA9685_ALLLED_ON_L;
+  return note(g_boards[b].write(kAllFullOff, sizeof kAllFullOff, true, &reg, 1));
 }
 
-// From the first channel's OFF_L on: its ON word is 0 since begin() (as
+bool set_prescale(uint8_t b, uint8_t prescale) {
+  if (b >= strider::kMaxPcaBoards) return false;
+  // MODE1 is known (init_board() wrote it): writes only, nothing read back.
+  if (!write_register(b, PCA9685_MODE1, kMode1Running | MODE1_SLEEP) ||  // PRE_SCALE is writable only asleep
+      !write_register(b, PCA9685_PRESCALE, prescale) || !write_register(b, PCA9685_MODE1, kMode1Running))
+    return false;
+  delayMicroseconds(500);  // oscillator start-up (datasheet 7.3.1.1: 500 us)
+  return write_register(b, PCA9685_MODE1, kMode1Running | MODE1_RESTART);
+}
+
+bool probe(uint8_t b) { return b < strider::kMaxPcaBoards && note(g_boards[b].detected()); }
+
+// One transfer from PRE_SCALE on: auto-increment rolls over from it to MODE1
+// and MODE2 (datasheet 7.3, table 4's remark). A board without
+// auto-increment (its power-on state) sends PRE_SCALE three times, which
+// no MODE2 this firmware sets matches: such a board is not running.
+bool read_mode(uint8_t b, uint8_t* mode1, uint8_t* prescale) {
+  uint8_t r[3];
+  if (b >= strider::kMaxPcaBoards || !read_registers(b, PCA9685_PRESCALE, r, sizeof r)) return false;
+  *prescale = r[0];
+  *mode1 = r[2] == MODE2_OUTDRV ? r[1] : uint8_t(0);
+  return true;
+}
+
+bool read_outputs(uint8_t b, uint16_t* off) {
+  if (b >= strider::kMaxPcaBoards) return false;
+  // Eight channels per transfer (32 bytes, Wire's buffer), from LED0_ON_L.
+  uint8_t words[4 * kMaxBurstChannels];
+  for (uint8_t first = 0; first < strider::kPcaChannelsPerBoard; first += kMaxBurstChannels) {
+    if (!read_registers(b, uint8_t(PCA9685_LED0_ON_L + 4 * first), words, sizeof words)) return false;
+    for (uint8_t i = 0; i < kMaxBurstChannels; ++i) {
+      const uint8_t* w = words + 4 * i;
+      const uint16_t on = uint16_t(w[0] | (w[1] << 8));
+      const uint16_t v = uint16_t(w[2] | (w[3] << 8));
+      off[first + i] = on == 0 && !(v & kFullOff) ? uint16_t(v & 0x0FFF) : kFullOff;
+    }
+  }
+  return true;
+}
+
+// From the first channel's OFF_L on: its ON word is 0 since init_board() (as
 // every channel's, and the burst writes 0 to the ones it crosses), and the
 // two bytes saved per transfer keep 18 channels within 1.8 ms of a 400 kHz
 // bus and 8 within one transfer.
 bool write_channels(uint8_t board, uint8_t first, const uint8_t* words, uint8_t count) {
   if (board >= strider::kMaxPcaBoards || count == 0 || count > kMaxBurstChannels) return false;
   const uint8_t reg = uint8_t(PCA9685_LED0_OFF_L + 4 * first);
-  return g_boards[board].write(words + 2, size_t(4) * count - 2, true, &reg, 1);
+  return note(g_boards[board].write(words + 2, size_t(4) * count - 2, true, &reg, 1));
+}
+
+bool timed_out() {
+  const bool t = g_timed_out;
+  g_timed_out = false;
+  return t;
 }
 
 }  // namespace pca9685_bus

@@ -3,9 +3,9 @@
 // CR LF (what the phone terminal apps expect).
 //
 // What does not fit the core's 64-byte transmit buffer waits in a ring and is
-// handed over by poll() as the buffer drains. The Bluetooth ring has 192
-// bytes: a 235-byte status line takes 0.25 s at 9600 baud, and written
-// blocking it would stall twelve control ticks. The USB ring has 32 (RAM):
+// handed over by poll() as the buffer drains. The Bluetooth ring has 224
+// bytes: a 270-byte status line (with the servo boards' fields) takes 0.28 s
+// at 9600 baud, and written blocking it would stall fourteen control ticks. The USB ring has 32 (RAM):
 // at 115200 baud the longest line (237 bytes) waits at most about 12 ms for
 // the UART, within the 20 ms tick period. Only a ring that is full makes send_line()
 // wait; that wait keeps the watchdog fed, since the UART always empties the
@@ -71,7 +71,7 @@ class SerialLink {
   };
 
   char usb_buf_[32];         // 115200 baud: a long line waits <= ~12 ms for the UART
-  char bluetooth_buf_[192];  // with the UART's 64: the longest reply (status) at 9600 baud
+  char bluetooth_buf_[224];  // with the UART's 64: the status reply at 9600 baud
   Ring usb_{usb_buf_, sizeof usb_buf_};
   Ring bluetooth_{bluetooth_buf_, sizeof bluetooth_buf_};
 };

@@ -49,9 +49,10 @@ struct Rig {
   std::map<uint8_t, int> max_jump;    // largest change between writes per channel
   std::map<uint8_t, std::pair<uint16_t, uint16_t>> range;  // lowest, highest written per channel
 
-  explicit Rig(const strider::RobotModel& m) : model(m) {
+  //! held: what the boards drive at start-up (a warm start, RobotApp::begin()).
+  explicit Rig(const strider::RobotModel& m, const uint16_t* held = nullptr, uint8_t channels = 0) : model(m) {
     app = new App(model, out, store);
-    EXPECT_TRUE(app->begin(now_us, lines));
+    EXPECT_TRUE(app->begin(now_us, lines, held, channels));
   }
   ~Rig() { delete app; }
 
@@ -291,7 +292,160 @@ TYPED_TEST(RobotAppTest, StatusLineVerbatim) {
   EXPECT_EQ(r.lines.sent[from].first, 1);
   EXPECT_EQ(r.lines.sent[from].second,
             "ok status mode=walking speed=50 vx=30.0 vy=-20.0 wz=10.0 avoid=forward sonar=none deadman_ms=0 eeprom=empty "
-            "walk_vx=30.0 walk_vy=-20.0 walk_wz=10.0 gait=crawl state=walking ik=clamped servos=on overruns=1 tick_max_us=21000");
+            "walk_vx=30.0 walk_vy=-20.0 walk_wz=10.0 gait=crawl state=walking ik=clamped servos=on pca9685=ok i2c_errors=0 "
+            "overruns=1 tick_max_us=21000");
+}
+
+// The status line with every field at its widest the robot can show at
+// once (walking, turning and strafing at the limits, a faulted board on
+// each address, every counter at its top, a stack probe) fits the reply
+// buffer: nothing is cut off.
+TEST(RobotAppStatus, LongestStatusLineFits) {
+  Rig<float> r(strider::kHexapod18);
+  r.run_ms(5000);
+  r.app->set_stack_probe([]() { return uint16_t(1023); });
+  r.app->record_tick_time(999999);
+  r.app->record_missed_ticks(65535);
+  strider::ServoBoardReport rep;
+  rep.errors = 65535;
+  r.app->servo_boards(rep, r.now_us, r.lines);
+  r.send(1, "deadman 60000\nspeed 100\ngait ripple\nvel -499.9 -499.9 -359.9\n");
+  r.run_ms(3000);
+  const auto status = [&]() {
+    const size_t from = r.lines.sent.size();
+    r.send(1, "status\n");
+    EXPECT_EQ(r.lines.sent.size(), from + 1);
+    const std::string line = r.lines.sent.back().second;
+    EXPECT_NE(line.find(" stack_peak=1023"), std::string::npos) << line;  // the last field, whole
+    EXPECT_LT(line.size() + 1, size_t(strider::kMaxReplyBytes)) << line;
+    return line;
+  };
+  const std::string walking = status();
+  EXPECT_NE(walking.find("mode=walking"), std::string::npos) << walking;
+  rep.faulted = 3;
+  r.app->servo_boards(rep, r.now_us, r.lines);  // stops the walk
+  const std::string faulted = status();
+  EXPECT_NE(faulted.find(" pca9685=0x40,0x41 i2c_errors=65535 "), std::string::npos) << faulted;
+  std::printf("walking: %zu bytes, both boards faulted: %zu bytes (buffer %u)\n", walking.size(), faulted.size(),
+              unsigned(strider::kMaxReplyBytes));
+}
+
+// A servo board stops answering mid-walk (RobotApp::servo_boards(), from the
+// firmware's driver): one notice, the walk stops, walking is refused with
+// err 31 and `status` names the board; back in its power-on state, its legs
+// get their first pulses again one at a time (a quarter second apart) and
+// walking is allowed once they all have.
+TYPED_TEST(RobotAppTest, ServoBoardFaultStopsTheWalkUntilTheBoardIsBack) {
+  using S = TypeParam;
+  const strider::RobotModel& m = strider::kHexapod18;
+  Rig<S> r(m);
+  r.run_ms(5000);
+  r.send(1, "deadman 0\nwalk 80\n");
+  r.run_ms(1000);
+  ASSERT_EQ(r.app->controller().mode(), strider::RobotMode::kWalking);
+  strider::ServoBoardReport rep;
+  rep.faulted = strider::board_bit(1);
+  rep.errors = 1;
+  size_t from = r.lines.sent.size();
+  r.app->servo_boards(rep, r.now_us, r.lines);
+  r.app->servo_boards(rep, r.now_us, r.lines);  // the same again: no second notice
+  ASSERT_EQ(r.lines.sent.size(), from + 1);
+  EXPECT_EQ(r.lines.sent[from].first, strider::kAllPorts);
+  EXPECT_EQ(r.lines.sent[from].second, "info fault pca9685 0x41");
+  EXPECT_EQ(r.app->controller().mode(), strider::RobotMode::kStanding);
+  r.run_ms(2000);
+  EXPECT_EQ(r.app->motion().walker().engine().state(), strider::GaitState::kStanding);
+  from = r.lines.sent.size();
+  r.send(1, "walk 80\nF\nstop\nstatus\n");
+  ASSERT_EQ(r.lines.sent.size(), from + 4);
+  EXPECT_EQ(r.lines.sent[from].second, "err 31 servo fault");
+  EXPECT_EQ(r.lines.sent[from + 1].second, "ok rc F");  // the line's echo; the button itself was refused
+  EXPECT_EQ(r.lines.sent[from + 2].second, "ok stop");
+  EXPECT_NE(r.lines.sent[from + 3].second.find(" servos=on pca9685=0x41 i2c_errors=1 "), std::string::npos)
+      << r.lines.sent[from + 3].second;
+  EXPECT_EQ(r.app->controller().command().vx, 0);
+
+  // Back in its power-on state: its outputs are off, the others hold theirs.
+  std::vector<uint16_t> outputs(32, strider::kPcaFullOff);
+  for (const auto& t : r.ticks)
+    if (t.first < 16) outputs[t.first] = t.second;
+  rep.faulted = 0;
+  rep.restored = strider::board_bit(1);
+  rep.outputs = outputs.data();
+  rep.channels = 32;
+  from = r.lines.sent.size();
+  r.app->servo_boards(rep, r.now_us, r.lines);
+  ASSERT_EQ(r.lines.sent.size(), from + 1);
+  EXPECT_EQ(r.lines.sent[from].second, "info pca9685 0x41 restored");
+  EXPECT_EQ(r.out.relaxed.size(), 9u);  // the second board's joints: off, as the board is
+  r.collect();
+  r.max_jump.clear();
+  r.run_ms(700);  // legs 0-2 (first board) switched on again from their pulses, legs 3-5 not yet
+  for (const auto& t : r.ticks) EXPECT_LT(t.first, 16) << "channel " << int(t.first) << " too early";
+  r.send(1, "walk 80\n");
+  EXPECT_EQ(r.lines.on(1).back(), "err 31 servo fault");
+  r.run_ms(1000);
+  EXPECT_EQ(r.ticks.size(), m.joint_count());
+  const auto expected = expected_standing<S>(m, r.app->servos().timing());
+  for (const auto& e : expected) EXPECT_NEAR(r.ticks[e.first], e.second, 1) << "channel " << int(e.first);
+  for (const auto& j : r.max_jump) EXPECT_LE(j.second, 2) << "channel " << int(j.first) << " jumped";
+  r.send(1, "walk 80\n");
+  EXPECT_EQ(r.lines.on(1).back().rfind("ok move", 0), 0u) << r.lines.on(1).back();
+
+  // Lost and back between two reports (a short power cut the driver found
+  // and mended at once): both notices, and its legs on again.
+  r.collect();
+  for (const auto& t : r.ticks) outputs[t.first] = t.first < 16 ? strider::kPcaFullOff : t.second;
+  rep.restored = strider::board_bit(0);
+  from = r.lines.sent.size();
+  r.app->servo_boards(rep, r.now_us, r.lines);
+  ASSERT_EQ(r.lines.sent.size(), from + 2);
+  EXPECT_EQ(r.lines.sent[from].second, "info fault pca9685 0x40");
+  EXPECT_EQ(r.lines.sent[from + 1].second, "info pca9685 0x40 restored");
+  EXPECT_EQ(r.app->controller().mode(), strider::RobotMode::kStanding);
+  r.run_ms(2000);
+  for (const auto& e : expected) EXPECT_NEAR(r.ticks[e.first], e.second, 1) << "channel " << int(e.first);
+}
+
+// A warm start: the boards kept the pulses of the run before (an MCU reset
+// mid-walk). Every joint whose pulse is within its limits keeps it: no
+// relax, the walker starts standing (not sitting: no leg is pulled up),
+// and each leg moves from where it is to the standing pose at its soft-start
+// turn, slew-limited. A pulse outside its joint's limits is switched off.
+TYPED_TEST(RobotAppTest, WarmStartHoldsThePulsesTheBoardsKept) {
+  using S = TypeParam;
+  for (const strider::RobotModel* m : {&strider::kHexapod18, &strider::kSprawl8}) {
+    SCOPED_TRACE(m->name);
+    Rig<S> before(*m);
+    before.run_ms(5000);
+    before.send(1, "deadman 0\nwalk 80\n");
+    before.run_ms(1300);
+    ASSERT_EQ(before.app->controller().mode(), strider::RobotMode::kWalking);
+    std::vector<uint16_t> outputs(32, strider::kPcaFullOff);
+    for (const auto& t : before.ticks) outputs[t.first] = t.second;
+    const uint8_t bad = strider::joint_channel(*m, 0, 0);
+    outputs[bad] = 4000;  // beyond any joint's limits
+
+    Rig<S> r(*m, outputs.data(), 32);
+    const auto boot = r.lines.on(1);
+    ASSERT_EQ(boot.size(), 3u);
+    EXPECT_EQ(boot[2], "info servos held joints=" + std::to_string(m->joint_count() - 1));
+    EXPECT_EQ(r.out.relaxed, std::vector<uint8_t>{bad});
+    EXPECT_EQ(r.app->motion().walker().engine().state(), strider::GaitState::kStanding);
+    r.out.relaxed.clear();
+    for (uint8_t ch = 0; ch < 32; ++ch)
+      if (ch != bad && outputs[ch] != strider::kPcaFullOff) r.ticks[ch] = outputs[ch];
+    r.run_ms(strider::kSoftStartStepMs * m->leg_count + 3000);
+    EXPECT_TRUE(r.out.relaxed.empty());
+    EXPECT_EQ(r.app->motion().walker().engine().state(), strider::GaitState::kStanding);
+    const auto expected = expected_standing<S>(*m, r.app->servos().timing());
+    for (const auto& e : expected) EXPECT_NEAR(r.ticks[e.first], e.second, 1) << "channel " << int(e.first);
+    for (uint8_t k = 0; k < m->joint_count(); ++k) {
+      const auto c = r.app->servos().channel(k);
+      const double us = strider::servo_speed_deg_s(m->servo[k % m->dof()]) * 0.02 * 2000.0 / 180.0;
+      EXPECT_LE(r.max_jump[c.channel], int(us * 4096.0 / 20000.0 * 1.02) + 1) << "channel " << int(c.channel);
+    }
+  }
 }
 
 TYPED_TEST(RobotAppTest, RefusedPoseAndGarbageChangeNothing) {

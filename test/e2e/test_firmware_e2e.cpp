@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <random>
 #include <sstream>
@@ -59,16 +60,19 @@ class Robot {
  public:
   explicit Robot(const std::string& model) : name_(model), model_(strider::find_robot(model.c_str())) {}
 
-  bool boot(std::string* error) {
+  bool boot(std::string* error) { return load(error) && wait_ready(error); }
+
+  // A fresh virtual Mega with the servo boards at `boards`, not yet run.
+  bool load(std::string* error, const std::vector<uint8_t>& boards = {0x40, 0x41}) {
     strider_vmega::Options o;
     o.elf_path = elf_path(name_);
     o.sonar_range_mm = 2000;  // open space ahead: avoidance lets the robot walk
+    o.pca_addresses = boards;
     if (!model_) {
       *error = "unknown model";
       return false;
     }
-    if (!mega_.load(o, error)) return false;
-    return wait_ready(error);
+    return mega_.load(o, error);
   }
 
   bool wait_ready(std::string* error) {
@@ -617,6 +621,313 @@ TEST_P(FirmwareReset, MidWalkResetSendsOnlyServoPulses) {
   EXPECT_EQ(r.mega().unexpected_resets(), 0) << r.transcript(from);
 }
 
+// --- Faults: servo boards, the bus, resets (docs/reliability.md) -------------
+
+// A predicate for wait_for_line(): exactly this line.
+std::function<bool(const std::string&)> is_line(const std::string& want) {
+  return [want](const std::string& l) { return l == want; };
+}
+
+// Walks forward at 60 mm/s for 1.5 s, the command repeated as a phone app
+// repeats a held button (the deadman); true when the robot walks.
+bool walk(Robot& r) {
+  for (int k = 0; k < 6; ++k) {
+    if (r.command("walk 60").rfind("ok move", 0) != 0) return false;
+    r.run_for(250000);
+  }
+  return r.status()["mode"] == "walking";
+}
+
+// Waits until every leg is switched on again (`servos=on`: the soft start
+// over, which takes a quarter second per leg) and the outputs are still.
+bool stand_settled(Robot& r) {
+  const uint64_t end = r.mega().now_us() + kSettleTimeoutUs;
+  while (r.status()["servos"] != "on")
+    if (r.mega().now_us() > end || !r.run_for(250000)) return false;
+  return r.settle(300000, kSettleTimeoutUs);
+}
+
+// Runs for `us` in 0.5 ms steps, sampling every joint's output; returns how
+// many samples found a joint without a pulse (the first one in *first).
+int samples_with_a_joint_off(Robot& r, uint64_t us, std::string* first) {
+  const auto limits = r.pulse_limits();
+  const uint64_t end = r.mega().now_us() + us;
+  int off = 0;
+  while (r.mega().now_us() < end) {
+    if (r.mega().run_for_us(500) != RunStatus::kOk) return -1;
+    for (const auto& l : limits)
+      if (r.mega().pulse_us(l.first) == 0.0) {
+        if (off++ == 0) *first = "channel " + std::to_string(l.first) + " at " + std::to_string(r.mega().now_us()) + " us";
+        break;
+      }
+  }
+  r.collect();
+  return off;
+}
+
+// Pulse changes since the log was cleared outside the joints' limits (0 = off is not counted).
+int pulses_outside_limits(Robot& r) {
+  const auto limits = r.pulse_limits();
+  int outside = 0;
+  for (const auto& c : r.mega().pulse_log()) {
+    auto it = limits.find(c.channel);
+    if (c.width_us == 0.0 || it == limits.end()) continue;
+    if ((c.width_us < it->second.first - 1.0 || c.width_us > it->second.second + 1.0) && ++outside <= 3)
+      ADD_FAILURE() << "channel " << c.channel << " at " << c.time_us << " us: " << c.width_us << " us";
+  }
+  return outside;
+}
+
+// The addresses `status` lists for every board the model uses: 0x40[,0x41].
+std::string all_boards(const strider::RobotModel& m) {
+  return strider::pca_board_count(m) == 2 ? "0x40,0x41" : "0x40";
+}
+
+class FirmwareBoards : public ::testing::TestWithParam<std::string> {};
+
+// No servo board answers at power-up: the firmware starts anyway, names each
+// missing board, reports them in `status` and refuses to walk.
+TEST_P(FirmwareBoards, NoBoardAtBoot) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.load(&error, {})) << error;
+  ASSERT_TRUE(r.wait_ready(&error)) << error << r.transcript();
+  EXPECT_FALSE(r.wait_for_line(is_line("info fault pca9685 0x40"), 500000).empty()) << r.transcript();
+  r.run_for(1000000);
+  auto st = r.status();
+  EXPECT_EQ(st["pca9685"], all_boards(r.model()));
+  EXPECT_GE(std::atoi(st["i2c_errors"].c_str()), 1);
+  EXPECT_EQ(r.command("walk 50"), "err 31 servo fault");
+  EXPECT_EQ(r.command("F"), "ok rc F");  // an RC button: refused without a reply of its own
+  st = r.status();
+  EXPECT_EQ(st["mode"], "standing");
+  EXPECT_EQ(st["vx"], "0.0");
+  EXPECT_EQ(r.mega().unexpected_resets(), 0) << r.transcript();
+}
+
+// The bus held low from power-up (a slave holding SDA): Wire's time-out ends
+// every transfer, so the firmware starts, reports the bus and the boards,
+// and answers; once the bus is free it takes the boards and stands up.
+TEST_P(FirmwareBoards, StuckBusAtBootRecovers) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.load(&error)) << error;
+  r.mega().set_bus_stuck(true);
+  const std::string ready = "info strider " + GetParam() + " ready";
+  EXPECT_FALSE(r.wait_for_line([&](const std::string& l) { return l.rfind(ready, 0) == 0; }, 1000000).empty())
+      << "no `" << ready << "` within 1 s of a stuck bus\n" << r.transcript();
+  EXPECT_FALSE(r.wait_for_line(is_line("info fault i2c timeout"), 1000000).empty()) << r.transcript();
+  r.run_for(1000000);
+  auto st = r.status();
+  EXPECT_EQ(st["pca9685"], all_boards(r.model())) << r.transcript();
+  EXPECT_EQ(r.command("walk 50"), "err 31 servo fault");
+  EXPECT_EQ(r.mega().unexpected_resets(), 0);
+  const uint64_t freed = r.mega().now_us();
+  r.mega().set_bus_stuck(false);
+  EXPECT_FALSE(r.wait_for_line(is_line("info pca9685 0x40 restored"), 300000).empty()) << r.transcript();
+  std::printf("%s: boards restored %.0f ms after the bus was freed\n", GetParam().c_str(),
+              double(r.mega().now_us() - freed) / 1000.0);
+  ASSERT_TRUE(stand_settled(r));
+  expect_standing(r, nullptr, "after the stuck bus");
+  EXPECT_EQ(r.mega().board(0).prescale(), strider::pca9685_prescale(strider::kPca9685NominalOscHz, 50));
+  st = r.status();
+  EXPECT_EQ(st["pca9685"], "ok");
+  EXPECT_GE(std::atoi(st["i2c_errors"].c_str()), 1);
+
+  // The bus stuck again mid-walk: the walk stops, nothing resets, and the
+  // boards, which kept running, go on from the pulses they hold.
+  ASSERT_TRUE(walk(r)) << r.transcript();
+  r.mega().clear_pulse_log();
+  size_t from = r.mark();
+  r.mega().set_bus_stuck(true);
+  EXPECT_FALSE(r.wait_for_line(is_line("info fault i2c timeout"), 300000).empty()) << r.transcript(from);
+  r.run_for(1500000);
+  EXPECT_EQ(r.status()["mode"], "standing");
+  r.mega().set_bus_stuck(false);
+  EXPECT_FALSE(r.wait_for_line(is_line("info pca9685 0x40 restored"), 300000).empty()) << r.transcript(from);
+  ASSERT_TRUE(stand_settled(r));
+  expect_standing(r, nullptr, "after the bus came back");
+  for (const auto& c : r.mega().pulse_log()) EXPECT_GT(c.width_us, 0.0) << "channel " << c.channel << " went off";
+  EXPECT_EQ(pulses_outside_limits(r), 0);
+  EXPECT_EQ(r.mega().unexpected_resets(), 0) << r.transcript(from);
+}
+
+// The MCU hangs during start-up, before the servo boards are set up: the
+// watchdog runs from the first line of setup(), so the board resets, says
+// so, and starts.
+TEST_P(FirmwareBoards, HangDuringStartUpEndsInAWatchdogReset) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.load(&error)) << error;
+  // In setup(): the serial ports are set up, the servo boards not yet.
+  while (r.mega().baud(0) == 0 && r.mega().now_us() < 100000) ASSERT_EQ(r.mega().run_for_us(20), RunStatus::kOk);
+  ASSERT_TRUE(r.mega().i2c_log().empty());
+  r.mega().hang();
+  ASSERT_TRUE(r.wait_ready(&error)) << error << r.transcript();
+  EXPECT_EQ(r.mega().unexpected_resets(), 1);
+  EXPECT_LT(r.mega().now_us(), 1000000u);
+  EXPECT_TRUE(r.any_line_since(0, "info reset watchdog")) << r.transcript();
+  ASSERT_TRUE(stand_settled(r));
+  expect_standing(r, nullptr, "after the watchdog reset");
+}
+
+// hexapod18 drives two boards, 0x40 and 0x41; the second one missing.
+TEST(FirmwareBoardsHexapod, SecondBoardMissing) {
+  Robot r("hexapod18");
+  std::string error;
+  ASSERT_TRUE(r.load(&error, {0x40})) << error;
+  ASSERT_TRUE(r.wait_ready(&error)) << error << r.transcript();
+  EXPECT_FALSE(r.wait_for_line(is_line("info fault pca9685 0x41"), 500000).empty()) << r.transcript();
+  ASSERT_TRUE(stand_settled(r));
+  EXPECT_FALSE(r.any_line_since(0, "info fault pca9685 0x40")) << r.transcript();
+  auto st = r.status();
+  EXPECT_EQ(st["pca9685"], "0x41");
+  EXPECT_GE(std::atoi(st["i2c_errors"].c_str()), 1);
+  EXPECT_EQ(r.command("walk 60"), "err 31 servo fault");
+  // The first board's legs stand.
+  const auto expected = r.expected_standing();
+  const double tol = kTickToleranceUs * r.mega().board(0).tick_us();
+  for (const auto& e : expected) {
+    if (e.first < 16) EXPECT_NEAR(r.mega().pulse_us(e.first), e.second, tol) << "channel " << e.first;
+  }
+}
+
+// Board 0x41 loses its supply mid-walk (its servos go limp) and gets it
+// back in its power-on state: the fault is reported within a frame or two,
+// the walk stops and stays refused, the board is set up again (prescale,
+// awake), its legs are switched on again and the robot stands and walks.
+TEST(FirmwareBoardsHexapod, BoardLosesPowerMidWalkAndComesBack) {
+  Robot r("hexapod18");
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(300000, kSettleTimeoutUs));
+  ASSERT_TRUE(walk(r)) << r.transcript();
+  size_t from = r.mark();
+  const uint64_t cut = r.mega().now_us();
+  r.mega().set_board_power(1, false);
+  ASSERT_FALSE(r.wait_for_line(is_line("info fault pca9685 0x41"), 200000).empty()) << r.transcript(from);
+  const double detect_ms = double(r.mega().now_us() - cut) / 1000.0;
+  r.run_for(1500000);  // the gait finishes its step and stands
+  auto st = r.status();
+  EXPECT_EQ(st["mode"], "standing") << r.transcript(from);
+  EXPECT_EQ(st["state"], "standing");
+  EXPECT_EQ(st["pca9685"], "0x41");
+  const int errors = std::atoi(st["i2c_errors"].c_str());
+  EXPECT_GE(errors, 1);
+  EXPECT_EQ(r.command("walk 60"), "err 31 servo fault");
+  // Stopped: the first board's legs hold still.
+  r.mega().clear_pulse_log();
+  r.run_for(500000);
+  for (const auto& c : r.mega().pulse_log()) EXPECT_GE(c.channel, 16) << "channel " << c.channel << " still moves";
+
+  from = r.mark();
+  const uint64_t back = r.mega().now_us();
+  r.mega().set_board_power(1, true);  // power-on state: asleep, every output off
+  ASSERT_FALSE(r.wait_for_line(is_line("info pca9685 0x41 restored"), 300000).empty()) << r.transcript(from);
+  const double restore_ms = double(r.mega().now_us() - back) / 1000.0;
+  EXPECT_FALSE(r.mega().board(1).sleeping());
+  EXPECT_EQ(r.mega().board(1).prescale(), strider::pca9685_prescale(strider::kPca9685NominalOscHz, 50));
+  r.mega().clear_pulse_log();
+  ASSERT_TRUE(stand_settled(r));
+  expect_standing(r, nullptr, "after the board came back");
+  EXPECT_EQ(pulses_outside_limits(r), 0);
+  double driven_ms = 0;
+  for (const auto& c : r.mega().pulse_log())
+    if (c.channel >= 16 && c.width_us > 0) driven_ms = std::max(driven_ms, double(c.time_us - back) / 1000.0);
+  st = r.status();
+  EXPECT_EQ(st["pca9685"], "ok");
+  EXPECT_EQ(std::atoi(st["i2c_errors"].c_str()), errors);  // probes of the missing board are not errors
+  EXPECT_EQ(st["servos"], "on");
+  ASSERT_TRUE(walk(r)) << r.transcript(from);
+  EXPECT_EQ(r.mega().unexpected_resets(), 0);
+  std::printf("hexapod18: board 0x41 off: reported after %.0f ms; on: restored after %.0f ms, its legs on "
+              "within %.0f ms\n", detect_ms, restore_ms, driven_ms);
+}
+
+// Board 0x41's supply drops for 30 ms while the robot stands: no frame goes
+// to it (nothing moves), and it answers again at once, but asleep with its
+// outputs off. The firmware's periodic check of MODE1 finds it, sets it up
+// again and switches its legs on.
+TEST(FirmwareBoardsHexapod, PowerGlitchWhileStandingIsFound) {
+  Robot r("hexapod18");
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(stand_settled(r));
+  const size_t from = r.mark();
+  const uint64_t cut = r.mega().now_us();
+  r.mega().set_board_power(1, false);
+  r.run_for(30000);
+  r.mega().set_board_power(1, true);
+  EXPECT_EQ(r.mega().pulse_us(16), 0.0);  // limp
+  ASSERT_FALSE(r.wait_for_line(is_line("info fault pca9685 0x41"), 500000).empty()) << r.transcript(from);
+  ASSERT_FALSE(r.wait_for_line(is_line("info pca9685 0x41 restored"), 300000).empty()) << r.transcript(from);
+  std::printf("hexapod18: a 30 ms power cut of board 0x41 while standing found and the board set up again "
+              "after %.0f ms\n", double(r.mega().now_us() - cut) / 1000.0);
+  ASSERT_TRUE(stand_settled(r));
+  expect_standing(r, nullptr, "after the power glitch");
+  EXPECT_EQ(r.status()["pca9685"], "ok");
+}
+
+// Board 0x41's bus wires come loose mid-walk and back: it keeps its supply
+// and its registers, so its servos hold their pulses throughout; the
+// firmware reads them back and moves its legs on from there.
+TEST(FirmwareBoardsHexapod, BoardWiresComeLooseAndBack) {
+  Robot r("hexapod18");
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(300000, kSettleTimeoutUs));
+  ASSERT_TRUE(walk(r)) << r.transcript();
+  r.mega().clear_pulse_log();
+  const size_t from = r.mark();
+  r.mega().set_board_attached(1, false);
+  ASSERT_FALSE(r.wait_for_line(is_line("info fault pca9685 0x41"), 200000).empty()) << r.transcript(from);
+  r.run_for(1500000);
+  EXPECT_EQ(r.status()["mode"], "standing");
+  r.mega().set_board_attached(1, true);
+  ASSERT_FALSE(r.wait_for_line(is_line("info pca9685 0x41 restored"), 300000).empty()) << r.transcript(from);
+  ASSERT_TRUE(stand_settled(r));
+  expect_standing(r, nullptr, "after the wires came back");
+  for (const auto& c : r.mega().pulse_log()) EXPECT_GT(c.width_us, 0.0) << "channel " << c.channel << " went off";
+  EXPECT_EQ(pulses_outside_limits(r), 0);
+  EXPECT_EQ(r.status()["pca9685"], "ok");
+}
+
+// A RESET mid-walk, then a hang that the watchdog ends: the boards kept
+// running, so the firmware keeps their pulses (no joint ever goes off, the
+// robot does not drop), says why it restarted, and stands up from the pose
+// they hold.
+TEST_P(FirmwareReset, WarmResetKeepsTheJointsOn) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(300000, kSettleTimeoutUs));
+  ASSERT_TRUE(walk(r)) << r.transcript();
+  const std::string held = "info servos held joints=" + std::to_string(r.model().joint_count());
+  r.mega().clear_pulse_log();
+  size_t from = r.mark();
+  r.mega().reset();
+  std::string first;
+  EXPECT_EQ(samples_with_a_joint_off(r, 1000000, &first), 0) << "after the reset, first: " << first;
+  EXPECT_TRUE(r.any_line_since(from, "info reset external")) << r.transcript(from);
+  EXPECT_TRUE(r.any_line_since(from, held)) << r.transcript(from);
+  ASSERT_TRUE(stand_settled(r));
+  EXPECT_EQ(samples_with_a_joint_off(r, 1000, &first), 0);
+  expect_standing(r, nullptr, "standing after the reset");
+  EXPECT_EQ(pulses_outside_limits(r), 0);
+
+  ASSERT_TRUE(walk(r)) << r.transcript(from);
+  r.mega().clear_pulse_log();
+  from = r.mark();
+  r.mega().hang();
+  EXPECT_EQ(samples_with_a_joint_off(r, 1500000, &first), 0) << "after the hang, first: " << first;
+  EXPECT_EQ(r.mega().unexpected_resets(), 1);
+  EXPECT_TRUE(r.any_line_since(from, "info reset watchdog")) << r.transcript(from);
+  EXPECT_TRUE(r.any_line_since(from, held)) << r.transcript(from);
+  ASSERT_TRUE(stand_settled(r));
+  expect_standing(r, nullptr, "standing after the watchdog reset");
+  EXPECT_EQ(pulses_outside_limits(r), 0);
+}
+
 // A soak: seeded random operator input (commands, RC keys, garbage), a line
 // every 0.5 s on average with the keys held, for STRIDER_SOAK_SECONDS of
 // simulated time (default 20 s in the test command; `tools/dev soak
@@ -698,5 +1009,7 @@ INSTANTIATE_TEST_SUITE_P(Models, FirmwareSoak,
                          ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareReset,
                          ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);
+// One board and float (sprawl8), two boards and fixed point (hexapod18).
+INSTANTIATE_TEST_SUITE_P(Models, FirmwareBoards, ::testing::Values("sprawl8", "hexapod18"), param_name);
 
 }  // namespace

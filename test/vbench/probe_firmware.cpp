@@ -11,6 +11,7 @@
 //   b MS            busy MS ms without reading the UART     -> done
 //   l 0|1           LED on PB7                              -> ok
 //   d               enable a 15 ms watchdog and hang
+//   W               enable a 60 ms watchdog that the main loop feeds   -> ok
 // At boot: "boot MCUSR" on UART1 and "boot0" on UART0 (115200 baud).
 #include <avr/eeprom.h>
 #include <avr/interrupt.h>
@@ -208,6 +209,10 @@ void command(const char* line) {
       wdt_enable(WDTO_15MS);
       for (;;) {
       }
+    case 'W':
+      wdt_enable(WDTO_60MS);
+      uart1_print("ok\n");
+      return;
     default:
       uart1_print("err\n");
   }
@@ -248,6 +253,7 @@ int main() {
   char line[160];
   uint8_t n = 0;
   for (;;) {
+    wdt_reset();
     if (!(UCSR1A & (1 << RXC1))) continue;
     const char c = char(UDR1);
     if (c == '\n' || c == '\r') {

@@ -302,6 +302,86 @@ TEST_F(Probe, PcaOutputsSurviveAnMcuReset) {
   EXPECT_EQ(mega.pulse_us(0), w);  // the board is a separate chip
 }
 
+TEST_F(Probe, ResetPinSetsExtrf) {
+  mega.reset();
+  EXPECT_EQ(next_line(1, 200000), "boot 02");  // MCUSR.EXTRF
+}
+
+// Fault injection: a board without power answers nothing and drives
+// nothing; powered again it is in its power-on state.
+TEST_F(Probe, BoardPowerOffAndOn) {
+  bring_up("41");
+  ASSERT_EQ(command("w 41 06 00 00 33 01"), "ok");
+  ASSERT_GT(mega.pulse_us(16), 0.0);
+  mega.set_board_power(1, false);
+  EXPECT_EQ(mega.pulse_us(16), 0.0);
+  EXPECT_EQ(mega.pulse_log().back().channel, 16);
+  EXPECT_EQ(mega.pulse_log().back().width_us, 0.0);
+  EXPECT_EQ(command("q 41"), "nack");
+  EXPECT_EQ(command("w 41 00 20"), "nack");
+  EXPECT_EQ(command("q 40"), "ack");  // the other board is still there
+  mega.set_board_power(1, true);
+  EXPECT_EQ(command("q 41"), "ack");
+  EXPECT_EQ(mega.board(1).reg(0x00), 0x11);  // asleep, ALLCALL
+  EXPECT_EQ(mega.board(1).prescale(), 0x1E);
+  EXPECT_EQ(mega.pulse_us(16), 0.0);
+}
+
+// A detached board (loose bus wire) answers nothing but keeps its outputs.
+TEST_F(Probe, BoardDetachedKeepsItsOutputs) {
+  bring_up("40");
+  ASSERT_EQ(command("w 40 06 00 00 33 01"), "ok");
+  const double w = mega.pulse_us(0);
+  mega.set_board_attached(0, false);
+  EXPECT_EQ(command("q 40"), "nack");
+  EXPECT_EQ(command("w 40 06 00 00 90 01"), "nack");
+  EXPECT_EQ(mega.pulse_us(0), w);
+  EXPECT_EQ(command("q 70"), "ack");  // ALLCALL: board 1 still answers
+  mega.set_board_attached(0, true);
+  EXPECT_EQ(command("q 40"), "ack");
+  EXPECT_EQ(mega.pulse_us(0), w);
+  EXPECT_EQ(mega.board(0).reg(0x00), 0x20);
+}
+
+// The bus held low: no START completes (the probe gives up polling TWINT),
+// nothing reaches the boards; released, transfers work again.
+TEST_F(Probe, StuckBusCompletesNoStart) {
+  mega.clear_i2c_log();
+  mega.set_bus_stuck(true);
+  EXPECT_TRUE(mega.bus_stuck());
+  EXPECT_EQ(command("q 40", 2000000), "nack");
+  EXPECT_TRUE(mega.i2c_log().empty());
+  mega.set_bus_stuck(false);
+  EXPECT_EQ(command("q 40"), "ack");
+  EXPECT_EQ(command("q 41"), "ack");
+  ASSERT_FALSE(mega.i2c_log().empty());
+  EXPECT_EQ(mega.i2c_log().back().address7, 0x41);
+}
+
+TEST_F(Probe, StuckEchoStaysHighUntilTheRangeChanges) {
+  mega.set_range_mm(500);
+  mega.set_echo_stuck();
+  EXPECT_EQ(command("s", 200000), "none");  // rose, never fell
+  EXPECT_EQ(command("s", 200000), "none");  // the module ignores triggers meanwhile
+  mega.set_range_mm(500);
+  unsigned width = 0;
+  ASSERT_EQ(std::sscanf(command("s", 200000).c_str(), "echo %u", &width), 1);
+  EXPECT_NEAR(double(width), 500 * 2 / 0.343, 10.0);
+}
+
+// A hung MCU: nothing answers; a running watchdog resets it.
+TEST_F(Probe, HangEndsInAWatchdogReset) {
+  mega.hang();
+  EXPECT_EQ(command("q 40", 300000), "<timeout>");
+  EXPECT_EQ(mega.unexpected_resets(), 0);
+  boot(options());
+  EXPECT_EQ(command("W"), "ok");
+  EXPECT_EQ(command("q 40"), "ack");  // fed by the main loop
+  mega.hang();
+  EXPECT_EQ(next_line(1, 200000), "boot 08");
+  EXPECT_EQ(mega.unexpected_resets(), 1);
+}
+
 TEST_F(Probe, LedPin) {
   EXPECT_FALSE(mega.pin_output('B', 7));
   EXPECT_EQ(command("l 1"), "ok");

@@ -63,11 +63,41 @@ TEST(VbenchScript, TextIsVerbatimWithEscapes) {
   EXPECT_TRUE(ev.immediate);
 }
 
+TEST(VbenchScript, FaultDirectives) {
+  const char* text =
+      "at 1 board 0x41 off\n"
+      "at 2 board 65 on\n"
+      "at 3 board 0x40 detach\n"
+      "at 4 board 0x40 attach\n"
+      "at 5 bus stuck\n"
+      "at 6 bus free\n"
+      "at 7 range stuck\n"
+      "at 8 hang\n";
+  std::vector<ScriptEvent> ev;
+  std::string err;
+  ASSERT_TRUE(strider_vmega::parse_script(text, &ev, &err)) << err;
+  ASSERT_EQ(ev.size(), 8u);
+  EXPECT_EQ(ev[0].kind, ScriptEvent::Kind::kBoard);
+  EXPECT_EQ(ev[0].board_address, 0x41);
+  EXPECT_EQ(ev[0].board_action, ScriptEvent::BoardAction::kOff);
+  EXPECT_EQ(ev[1].board_address, 0x41);
+  EXPECT_EQ(ev[1].board_action, ScriptEvent::BoardAction::kOn);
+  EXPECT_EQ(ev[2].board_action, ScriptEvent::BoardAction::kDetach);
+  EXPECT_EQ(ev[3].board_action, ScriptEvent::BoardAction::kAttach);
+  EXPECT_EQ(ev[4].kind, ScriptEvent::Kind::kBus);
+  EXPECT_TRUE(ev[4].bus_stuck);
+  EXPECT_FALSE(ev[5].bus_stuck);
+  EXPECT_EQ(ev[6].kind, ScriptEvent::Kind::kEchoStuck);
+  EXPECT_EQ(ev[7].kind, ScriptEvent::Kind::kHang);
+}
+
 TEST(VbenchScript, RejectsBadLines) {
   const char* bad[] = {"at x send F", "at 1 fly", "at 1 range -4", "at 1 range", "at 1 send",
                        "at 1 send \\q", "at 1 send \\x4", "at 1 reset now", "at -1 reset",
                        "at 1 eeprom_cut", "at 1 eeprom_cut -2", "at 1 eeprom_cut 3 zeroed", "at 1 eeprom_cut 3 erased x",
                        "at 1 power_cut now"};
+                       "at 1 board", "at 1 board 0x41", "at 1 board 0x41 sideways", "at 1 board 0x80 off",
+                       "at 1 board x off", "at 1 bus", "at 1 bus jammed", "at 1 hang now", "at 1 range stuck now"};
   for (const char* line : bad) {
     ScriptEvent ev;
     bool has = false;

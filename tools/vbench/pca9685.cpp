@@ -26,6 +26,11 @@ void Pca9685::power_on_reset() {
   woke_at_us_ = 0;
 }
 
+void Pca9685::set_powered(bool on) {
+  if (on && !powered_) power_on_reset();
+  powered_ = on;
+}
+
 uint8_t Pca9685::next_pointer(uint8_t r) {
   // Datasheet 7.3: past LED15_OFF_H (0x45) and past PRE_SCALE the pointer
   // rolls over to MODE1; ALL_LED_ON_L..PRE_SCALE is the other run.
@@ -129,7 +134,7 @@ bool Pca9685::any_output_active() const {
 }
 
 double Pca9685::pulse_us(int ch) const {
-  if (ch < 0 || ch >= kChannels || sleeping() || paused_) return 0.0;
+  if (ch < 0 || ch >= kChannels || !powered_ || sleeping() || paused_) return 0.0;
   const Output& o = out_[size_t(ch)];
   if (o.off & 0x1000) return 0.0;  // full off wins over full on
   if (o.on & 0x1000) return period_us();

@@ -42,6 +42,10 @@ class Pca9685 {
 
   //! Power-on (or software-reset) register values.
   void power_on_reset();
+  //! Supply on or off: an unpowered board drives no output and does not
+  //! answer on the bus; powered again, it starts from its power-on values.
+  void set_powered(bool on);
+  bool powered() const { return powered_; }
 
   // Bus side, called by the I2C glue between START and STOP.
   //! SLA+W acknowledged: the next byte written is the control register pointer.
@@ -70,8 +74,8 @@ class Pca9685 {
   //! Latched output registers of a channel (12-bit counts plus full bits).
   uint16_t on_word(int ch) const { return out_[size_t(ch)].on; }
   uint16_t off_word(int ch) const { return out_[size_t(ch)].off; }
-  //! High time of a channel's output [us]; 0 when off, full-off or asleep,
-  //! one period when full-on.
+  //! High time of a channel's output [us]; 0 when off, full-off, asleep or
+  //! unpowered, one period when full-on.
   double pulse_us(int ch) const;
   //! Times RESTART was written sooner than kOscillatorStartUs after waking.
   int early_restarts() const { return early_restarts_; }
@@ -98,6 +102,7 @@ class Pca9685 {
   bool pwm_written_ = false;  // a PWM register changed since the last STOP
   uint64_t woke_at_us_ = 0;
   int early_restarts_ = 0;
+  bool powered_ = true;
 };
 
 }  // namespace strider_vmega

@@ -109,8 +109,10 @@ bool parse_script_line(const std::string& raw, ScriptEvent* event, bool* has_eve
     const std::string v = take_word(&rest);
     if (v == "none") {
       ev.range_mm = -1;
+    } else if (v == "stuck") {
+      ev.kind = ScriptEvent::Kind::kEchoStuck;
     } else if (!parse_number(v, &ev.range_mm) || ev.range_mm < 0) {
-      *error = "range needs millimetres >= 0 or `none`";
+      *error = "range needs millimetres >= 0, `none` or `stuck`";
       return false;
     }
   } else if (word == "reset") {
@@ -124,6 +126,35 @@ bool parse_script_line(const std::string& raw, ScriptEvent* event, bool* has_eve
     if (mode == "erased") n += ":erased";
     else if (!mode.empty()) n += ":" + mode;
     if (!parse_eeprom_cut(n, &ev.eeprom_writes, &ev.torn_erased, error)) return false;
+  } else if (word == "hang") {
+    ev.kind = ScriptEvent::Kind::kHang;
+  } else if (word == "board") {
+    ev.kind = ScriptEvent::Kind::kBoard;
+    const std::string a = take_word(&rest);
+    char* end = nullptr;
+    const long addr = std::strtol(a.c_str(), &end, 0);
+    if (a.empty() || *end != 0 || addr < 0 || addr > 0x7F) {
+      *error = "board needs a 7-bit I2C address (0x40)";
+      return false;
+    }
+    ev.board_address = int(addr);
+    const std::string action = take_word(&rest);
+    if (action == "off") ev.board_action = ScriptEvent::BoardAction::kOff;
+    else if (action == "on") ev.board_action = ScriptEvent::BoardAction::kOn;
+    else if (action == "detach") ev.board_action = ScriptEvent::BoardAction::kDetach;
+    else if (action == "attach") ev.board_action = ScriptEvent::BoardAction::kAttach;
+    else {
+      *error = "board needs off, on, detach or attach";
+      return false;
+    }
+  } else if (word == "bus") {
+    ev.kind = ScriptEvent::Kind::kBus;
+    const std::string state = take_word(&rest);
+    if (state != "stuck" && state != "free") {
+      *error = "bus needs stuck or free";
+      return false;
+    }
+    ev.bus_stuck = state == "stuck";
   } else {
     *error = "unknown directive `" + word + "`";
     return false;
@@ -185,6 +216,20 @@ void apply_event(const ScriptEvent& event, VirtualMega& mega) {
     case ScriptEvent::Kind::kPowerCut: mega.power_cut(); break;
     case ScriptEvent::Kind::kEepromCut:
       mega.cut_power_after_eeprom_writes(event.eeprom_writes, event.torn_erased ? TornByte::kErased : TornByte::kOld);
+      break;
+    case ScriptEvent::Kind::kEchoStuck: mega.set_echo_stuck(); break;
+    case ScriptEvent::Kind::kHang: mega.hang(); break;
+    case ScriptEvent::Kind::kBus: mega.set_bus_stuck(event.bus_stuck); break;
+    case ScriptEvent::Kind::kBoard:
+      for (int i = 0; i < mega.board_count(); ++i) {
+        if (mega.board(i).address() != event.board_address) continue;
+        switch (event.board_action) {
+          case ScriptEvent::BoardAction::kOff: mega.set_board_power(i, false); break;
+          case ScriptEvent::BoardAction::kOn: mega.set_board_power(i, true); break;
+          case ScriptEvent::BoardAction::kDetach: mega.set_board_attached(i, false); break;
+          case ScriptEvent::BoardAction::kAttach: mega.set_board_attached(i, true); break;
+        }
+      }
       break;
   }
 }

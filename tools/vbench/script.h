@@ -3,11 +3,17 @@
 //   at T send0 TEXT    the same to UART0 (USB)
 //   at T range MM      HC-SR04 sees an obstacle at MM millimetres
 //   at T range none    no echo at all (the echo line stays low)
+//   at T range stuck   the echo line rises after the next ping and stays high
 //   at T reset         external reset (RESET pin)
 //   at T power_cut     the power fails and comes back at once (EEPROM kept)
 //   at T eeprom_cut N [erased]  the power fails as the firmware starts its
 //                      (N+1)-th EEPROM byte write from T: N writes kept, that
 //                      byte left as it was (or erased, 0xFF)
+//   at T board A off|on|detach|attach
+//                      PCA9685 at address A (0x40): supply off / on again
+//                      (power-on state), bus wires loose / back (keeps its outputs)
+//   at T bus stuck|free  SDA held low (no START or STOP completes) / released
+//   at T hang          the MCU hangs (interrupts off, spinning) until a watchdog reset
 // Without `at T` a directive applies at once (commands piped into vbench).
 #ifndef STRIDER_TOOLS_VBENCH_SCRIPT_H
 #define STRIDER_TOOLS_VBENCH_SCRIPT_H
@@ -21,7 +27,8 @@ namespace strider_vmega {
 class VirtualMega;
 
 struct ScriptEvent {
-  enum class Kind { kSend, kRange, kReset, kPowerCut, kEepromCut };
+  enum class Kind { kSend, kRange, kReset, kPowerCut, kEepromCut, kEchoStuck, kBoard, kBus, kHang };
+  enum class BoardAction { kOff, kOn, kDetach, kAttach };
   bool immediate = false;  // no `at T`
   uint64_t time_us = 0;
   Kind kind = Kind::kSend;
@@ -30,6 +37,9 @@ struct ScriptEvent {
   double range_mm = -1;    // kRange: negative = no echo
   uint64_t eeprom_writes = 0;  // kEepromCut: writes kept before the cut
   bool torn_erased = false;    // kEepromCut: the interrupted byte erased (0xFF)
+  int board_address = 0;   // kBoard: 7-bit I2C address
+  BoardAction board_action = BoardAction::kOff;
+  bool bus_stuck = false;  // kBus
   int line = 0;            // source line, for messages
 };
 

@@ -1,6 +1,6 @@
 // vbench: runs a firmware ELF on the virtual Mega (see docs/vbench.md).
 //   vbench --elf F [--eeprom FILE] [--script FILE] [--duration S] [--pty]
-//          [--realtime] [--stdin] [--osc HZ] [--pulses CSV] [--log]
+//          [--realtime] [--stdin] [--osc HZ] [--boards LIST] [--pulses CSV] [--log]
 //          [--eeprom-cut N[:erased]]
 #include <fcntl.h>
 #include <poll.h>
@@ -34,16 +34,18 @@ void on_signal(int) { g_stop = 1; }
 void usage() {
   std::fprintf(stderr,
                "usage: vbench --elf FIRMWARE.elf [--eeprom FILE] [--script FILE] [--duration S]\n"
-               "              [--pty] [--realtime] [--stdin] [--osc HZ] [--pulses CSV] [--log] [--i2c]\n"
+               "              [--pty] [--realtime] [--stdin] [--osc HZ] [--boards LIST] [--pulses CSV] [--log] [--i2c]\n"
                "              [--eeprom-cut N[:erased]]\n"
                "  --eeprom FILE  EEPROM image loaded at start (if present) and saved at the end\n"
-               "  --script FILE  timed directives: at T send TEXT | at T range MM|none | at T reset\n"
-               "                 | at T power_cut | at T eeprom_cut N [erased]\n"
+               "  --script FILE  timed directives: at T send TEXT | at T range MM|none|stuck | at T reset |\n"
+               "                 at T board ADDR off|on|detach|attach | at T bus stuck|free | at T hang |\n"
+               "                 at T power_cut | at T eeprom_cut N [erased]\n"
                "  --duration S   simulated seconds (default 10; with --pty or --stdin: until stopped)\n"
                "  --pty          bridge UART1 to a new pseudo-terminal (path on the first stdout line)\n"
                "  --realtime     pace simulated time to the wall clock (implied by --pty)\n"
                "  --stdin        read directives from stdin as they come (automatic for a pipe; implies --realtime)\n"
                "  --osc HZ       PCA9685 oscillator frequency (default 25e6)\n"
+               "  --boards LIST  PCA9685 boards on the bus: addresses, comma-separated (default 0x40,0x41), or none\n"
                "  --pulses CSV   write every pulse-width change: time_us,channel,width_us\n"
                "  --log          print pulse changes, resets and an I2C summary\n"
                "  --i2c          print every I2C transaction\n"
@@ -128,6 +130,21 @@ struct Pty {
   }
 };
 
+// "0x40,0x41", "0x40" or "none" -> 7-bit addresses; false on anything else.
+bool parse_boards(const std::string& list, std::vector<uint8_t>* out) {
+  out->clear();
+  if (list == "none") return true;
+  std::stringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    char* end = nullptr;
+    const long a = std::strtol(item.c_str(), &end, 0);
+    if (item.empty() || *end != 0 || a < 0 || a > 0x7F) return false;
+    out->push_back(uint8_t(a));
+  }
+  return !out->empty();
+}
+
 bool read_file(const std::string& path, std::string* text) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
@@ -163,6 +180,12 @@ int main(int argc, char** argv) {
     else if (a == "--realtime") realtime = true;
     else if (a == "--stdin") use_stdin = true;
     else if (a == "--osc") options.pca_osc_hz = std::atof(value("--osc").c_str());
+    else if (a == "--boards") {
+      if (!parse_boards(value("--boards"), &options.pca_addresses)) {
+        std::fprintf(stderr, "vbench: --boards takes addresses like 0x40,0x41 or none\n");
+        return 2;
+      }
+    }
     else if (a == "--pulses") pulses_path = value("--pulses");
     else if (a == "--log") log = true;
     else if (a == "--i2c") log_i2c = true;

@@ -19,6 +19,7 @@
 #include "avr_twi.h"
 #include "avr_uart.h"
 #include "sim_avr.h"
+#include "sim_core.h"
 #include "sim_cycle_timers.h"
 #include "sim_elf.h"
 #include "sim_io.h"
@@ -115,12 +116,14 @@ bool VirtualMega::load(const Options& options, std::string* error) {
     const double osc = i < options.pca_osc_per_board_hz.size() ? options.pca_osc_per_board_hz[i] : options.pca_osc_hz;
     s.boards.emplace_back(options.pca_addresses[i], osc);
   }
+  s.attached.assign(s.boards.size(), true);
   s.last_width.assign(s.boards.size() * Pca9685::kChannels, 0.0);
   static const char* twi_names[2] = {"8>vmega.twi.out", "32<vmega.twi.in"};
   s.twi_irq = avr_alloc_irq(&s.avr->irq_pool, 0, 2, twi_names);
   avr_irq_register_notify(s.twi_irq + TWI_IRQ_OUTPUT, Impl::on_twi, &s);
   avr_connect_irq(s.twi_irq + TWI_IRQ_INPUT, avr_io_getirq(s.avr, AVR_IOCTL_TWI_GETIRQ(0), TWI_IRQ_INPUT));
   avr_connect_irq(avr_io_getirq(s.avr, AVR_IOCTL_TWI_GETIRQ(0), TWI_IRQ_OUTPUT), s.twi_irq + TWI_IRQ_OUTPUT);
+  s.hook_twcr();
 
   // HC-SR04 on PE5 (trigger, D3) and PE4 (echo, D2 = INT4); LED on PB7 (D13).
   avr_irq_register_notify(avr_io_getirq(s.avr, AVR_IOCTL_IOPORT_GETIRQ('E'), 5), Impl::on_trigger, &s);
@@ -153,9 +156,17 @@ RunStatus VirtualMega::run_until_us(uint64_t t_us) {
   const avr_flashaddr_t reset_pc = s.avr->reset_pc;
   while (s.avr->cycle < target) {
     const avr_flashaddr_t pc_before = s.avr->pc;
+    const uint16_t op = uint16_t(s.avr->flash[pc_before] | (s.avr->flash[pc_before + 1] << 8));
     const int state = avr_run(s.avr);
+    // The stack pointer is written a byte at a time (OUT SPH, then OUT SPL):
+    // in between it can read 256 bytes off. Sampled only when whole.
+    if ((op & 0xF800) == 0xB800) {  // OUT A, Rr: A = op bits 10:9 and 3:0
+      const int a = ((op >> 5) & 0x30) | (op & 0x0F);
+      if (a == R_SPH - 32) s.sp_half_written = true;
+      else if (a == R_SPL - 32) s.sp_half_written = false;
+    }
     const uint16_t sp = uint16_t(s.avr->data[R_SPL] | (s.avr->data[R_SPH] << 8));
-    if (sp < s.lowest_sp) {
+    if (sp < s.lowest_sp && !s.sp_half_written) {
       s.lowest_sp = sp;
       if (sp < s.static_ram_end && s.stack_overflow_us == 0) s.stack_overflow_us = std::max<uint64_t>(1, s.now_us());
     }
@@ -234,8 +245,12 @@ std::vector<I2cFrame> VirtualMega::i2c_frames(uint64_t gap_us) const {
   return frames;
 }
 
-void VirtualMega::set_range_mm(double mm) { impl_->range_mm = mm < 0 ? -1 : mm; }
-void VirtualMega::set_no_echo() { impl_->range_mm = -1; }
+void VirtualMega::set_range_mm(double mm) {
+  impl_->range_mm = mm < 0 ? -1 : mm;
+  impl_->unstick_echo();
+}
+void VirtualMega::set_no_echo() { set_range_mm(-1); }
+void VirtualMega::set_echo_stuck() { impl_->echo_stuck = true; }
 int VirtualMega::sonar_triggers() const { return impl_->triggers; }
 int VirtualMega::sonar_short_triggers() const { return impl_->short_triggers; }
 double VirtualMega::sonar_min_trigger_width_us() const {
@@ -297,8 +312,22 @@ void VirtualMega::reset() {
   Impl& s = *impl_;
   if (!s.avr) return;
   avr_reset(s.avr);
+  avr_regbit_set(s.avr, s.avr->reset_flags.extrf);  // the RESET pin's flag in MCUSR
   ++s.external_resets;
   s.after_reset();
+}
+
+void VirtualMega::hang() {
+  Impl& s = *impl_;
+  if (!s.avr) return;
+  // `rjmp .-2` (0xCFFF) in the last word below the top of the flash: no
+  // firmware of this project reaches the boot section.
+  const avr_flashaddr_t at = (s.avr->flashend - 3) & ~avr_flashaddr_t(1);
+  s.avr->flash[at] = 0xFF;
+  s.avr->flash[at + 1] = 0xCF;
+  avr_sreg_set(s.avr, S_I, 0);  // cli
+  s.avr->state = cpu_Running;   // awake, if it was idling
+  s.avr->pc = at;
 }
 
 int VirtualMega::unexpected_resets() const { return impl_->unexpected_resets; }

@@ -137,6 +137,17 @@ class VirtualMega {
   //! Pulse width of a global channel [us], 0 = off/full-off/asleep.
   double pulse_us(int channel) const;
   std::vector<double> pulses_us() const;
+  // Servo-board faults (docs/vbench.md, "Fault injection").
+  //! Board i's supply: off, it drives no output and answers nothing; on
+  //! again, it answers in its power-on state (asleep, every output off).
+  void set_board_power(int i, bool on);
+  //! Board i's bus wires: detached, it answers nothing (a loose SDA or SCL
+  //! wire) but keeps driving its outputs from its registers.
+  void set_board_attached(int i, bool attached);
+  //! The bus held low (a slave holding SDA): no START or STOP the TWI asks
+  //! for completes, TWINT stays clear. Released, a pending one completes.
+  void set_bus_stuck(bool stuck);
+  bool bus_stuck() const;
   const std::vector<PulseChange>& pulse_log() const;
   void clear_pulse_log();
   const std::vector<I2cTransaction>& i2c_log() const;
@@ -147,6 +158,9 @@ class VirtualMega {
   // HC-SR04.
   void set_range_mm(double mm);
   void set_no_echo();
+  //! ECHO stuck high: it rises after the next trigger and never falls (until
+  //! set_range_mm() or set_no_echo()).
+  void set_echo_stuck();
   int sonar_triggers() const;       // accepted trigger pulses (>= 10 us)
   int sonar_short_triggers() const;  // pulses too short to trigger
   //! Shortest TRIG high time seen, accepted or not [us] (0 before the first).
@@ -183,8 +197,12 @@ class VirtualMega {
   const std::vector<PowerCut>& power_cut_log() const;
 
   // Resets.
-  //! External reset (the RESET pin): counted separately from the others.
+  //! External reset (the RESET pin, MCUSR.EXTRF): counted separately from
+  //! the others.
   void reset();
+  //! The MCU hangs: interrupts off, spinning in place (a loop at the top of
+  //! the flash, the unused boot section) until a running watchdog resets it.
+  void hang();
   //! Resets the host did not cause: watchdog, a jump to the reset vector.
   int unexpected_resets() const;
   int external_resets() const;

@@ -19,6 +19,7 @@
 #include "sim_cycle_timers.h"
 #include "sim_elf.h"
 #include "sim_irq.h"
+#include "avr_twi.h"
 #include "virtual_mega.h"
 
 namespace strider_vmega {
@@ -45,6 +46,7 @@ struct VirtualMega::Impl {
   avr_t* avr = nullptr;
   elf_firmware_t* fw = nullptr;
   std::vector<Pca9685> boards;
+  std::vector<bool> attached;  // board i's bus wires connected (set_board_attached)
   std::vector<double> last_width;
   std::vector<PulseChange> pulse_log;
   std::vector<I2cTransaction> i2c_log;
@@ -76,6 +78,7 @@ struct VirtualMega::Impl {
   uint64_t min_trigger_interval_cycles = 0;
 
   uint16_t lowest_sp = 0xFFFF;
+  bool sp_half_written = false;  // OUT SPH done, OUT SPL not yet
   uint16_t static_ram_end = 0;    // first byte after .data + .bss
   uint64_t stack_overflow_us = 0;  // when the stack first grew into .bss
   int unexpected_resets = 0;
@@ -153,11 +156,25 @@ struct VirtualMega::Impl {
   }
   void flush_pending_stop();
   void update_pulses();
+  bool reachable(size_t i) const { return boards[i].powered() && attached[i]; }
+  // The bus held low: TWCR's writes pass through twcr_write(), which keeps
+  // back the ones that ask the TWI to act while it is stuck.
+  avr_twi_t* twi = nullptr;
+  avr_io_write_t twi_write = nullptr;  // simavr's own TWCR handler
+  void* twi_write_param = nullptr;
+  bool bus_stuck = false;
+  void hook_twcr();
+  static void twcr_write(avr_t* avr, avr_io_addr_t addr, uint8_t v, void* param);
+  void release_bus();
 
   // --- HC-SR04 --------------------------------------------------------------
   avr_irq_t* echo_irq = nullptr;
+  bool echo_stuck = false;  // the next echo rises and stays high
+  bool echo_high = false;
   static void on_trigger(avr_irq_t*, uint32_t value, void* param);
   void trigger_edge(bool high);
+  void set_echo(bool high);
+  void unstick_echo();  // a stuck echo falls, the sensor measures again
   bool led_level = false;
   static void on_led(avr_irq_t*, uint32_t value, void* param);
 
@@ -188,6 +205,7 @@ struct VirtualMega::Impl {
     // queues did not. Cycle timers may be gone: re-arm ours.
     end_transaction(false);
     pending_stop.clear();
+    sp_half_written = false;
     for (Uart& p : uart) {
       p.xoff = false;
     }

@@ -32,16 +32,33 @@ void VirtualMega::Impl::trigger_edge(bool high) {
     if (min_trigger_interval_cycles == 0 || d < min_trigger_interval_cycles) min_trigger_interval_cycles = d;
   }
   last_trigger_cycle = avr->cycle;
+  const uint64_t rise = avr->cycle + uint64_t(options.sonar_echo_delay_us) * cycles_per_us();
+  if (echo_stuck) {  // rises and stays high; the module ignores triggers meanwhile
+    sonar_busy = true;
+    schedule(rise, [this] { if (echo_stuck) set_echo(true); });
+    return;
+  }
   if (range_mm < 0) return;  // no sensor / no echo: the line stays low
   const uint64_t width_us =
       range_mm > kMaxRangeMm ? kTimeoutEchoUs : uint64_t(range_mm * 2.0 / kSoundMmPerUs + 0.5);
-  const uint64_t rise = avr->cycle + uint64_t(options.sonar_echo_delay_us) * cycles_per_us();
   sonar_busy = true;
-  schedule(rise, [this] { avr_raise_irq(echo_irq, 1); });
+  schedule(rise, [this] { set_echo(true); });
   schedule(rise + width_us * cycles_per_us(), [this] {
-    avr_raise_irq(echo_irq, 0);
+    set_echo(false);
     sonar_busy = false;
   });
+}
+
+void VirtualMega::Impl::set_echo(bool high) {
+  echo_high = high;
+  avr_raise_irq(echo_irq, high ? 1 : 0);
+}
+
+void VirtualMega::Impl::unstick_echo() {
+  if (!echo_stuck) return;
+  echo_stuck = false;
+  if (avr && echo_high) set_echo(false);
+  sonar_busy = false;
 }
 
 void VirtualMega::Impl::on_led(avr_irq_t*, uint32_t value, void* param) {

@@ -53,7 +53,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   Controller(Sink& sink, Store& store, const Settings& loaded, SettingsStatus load_status,
              const SettingsRecord& record = SettingsRecord())
       : sink_(sink), store_(store), settings_(loaded), cal_(loaded), record_(record), cmd_{0, 0, 0},
-        out_{0, 0, 0}, mode_(RobotMode::kStanding), avoid_clear_mm_(0) {
+        out_{0, 0, 0}, mode_(RobotMode::kStanding), avoid_clear_mm_(0), servo_fault_(false) {
     record_.load_status = load_status;
     apply_loaded();
   }
@@ -115,6 +115,16 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     return false;
   }
 
+  //! The servos cannot walk (RobotApp: a servo board does not answer, or
+  //! its legs are being switched on again): a walk stops and the robot
+  //! stands; motion commands are refused with err 31 until cleared. Stop,
+  //! relax and everything else still work.
+  void set_servo_fault(bool fault) {
+    if (fault && !servo_fault_ && mode_ == RobotMode::kWalking) stop();
+    servo_fault_ = fault;
+  }
+  bool servo_fault() const { return servo_fault_; }
+
   //! How far the body walks sideways after the sensor sees the way clear:
   //! the robot's half-width with its feet (RobotApp sets it from the model).
   void set_avoid_clear_mm(uint16_t mm) { avoid_clear_mm_ = mm; }
@@ -153,8 +163,10 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
 
   void move(const Twist& t, ReplyWriter& w) {
     if (mode_ == RobotMode::kCalibrating) return fail(w, ControlError::kBusy, FlashText{text::kCalibrating});
+    const bool still = t.vx == 0 && t.vy == 0 && t.wz == 0;
+    if (servo_fault_ && !still) return fail(w, ControlError::kServoFault, FlashText{text::kServoFault});
     cmd_ = t;
-    if (t.vx == 0 && t.vy == 0 && t.wz == 0) {
+    if (still) {
       stop();
     } else {
       mode_ = RobotMode::kWalking;
@@ -310,6 +322,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   RobotMode mode_;
   uint16_t avoid_clear_mm_;
   uint8_t speed_pct_ = 50;
+  bool servo_fault_;
 };
 
 }  // namespace strider

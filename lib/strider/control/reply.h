@@ -34,12 +34,14 @@ inline FlashText flash_name(const char* names, uint8_t count, uint8_t index) {
   return FlashText{p};
 }
 
-constexpr uint8_t kMaxReplyBytes = 250;  //!< suggested buffer: longest reply (status, ~235 bytes) + NUL
+//! Suggested buffer: the longest reply (status, ~260 bytes walking with
+//! every field, up to ~300 with every number at its widest) + NUL.
+constexpr uint16_t kMaxReplyBytes = 320;
 
 class ReplyWriter {
  public:
   //! buf must hold capacity >= 1 bytes.
-  ReplyWriter(char* buf, uint8_t capacity) : buf_(buf), cap_(capacity), len_(0) { buf_[0] = 0; }
+  ReplyWriter(char* buf, uint16_t capacity) : buf_(buf), cap_(capacity), len_(0) { buf_[0] = 0; }
 
   ReplyWriter& text(const char* s) {
     while (*s) put(*s++);
@@ -116,19 +118,19 @@ class ReplyWriter {
   ReplyWriter& end_line() { return text("\r\n"); }
 
   const char* c_str() const { return buf_; }
-  uint8_t length() const { return len_; }
+  uint16_t length() const { return len_; }
   bool truncated() const { return truncated_; }
 
  private:
   void put(char c) {
-    if (uint16_t(len_) + 1 >= cap_) { truncated_ = true; return; }
+    if (len_ + 1u >= cap_) { truncated_ = true; return; }
     buf_[len_++] = c;
     buf_[len_] = 0;
   }
 
   char* buf_;
-  uint8_t cap_;
-  uint8_t len_;
+  uint16_t cap_;
+  uint16_t len_;
   bool truncated_ = false;
 };
 

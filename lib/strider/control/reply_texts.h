@@ -32,6 +32,7 @@ constexpr char kUnknownGait[] STRIDER_PROGMEM = "unknown gait";
 constexpr char kOkGait_[] STRIDER_PROGMEM = "ok gait ";
 constexpr char kPoseRefused[] STRIDER_PROGMEM = "pose refused";
 constexpr char kHeightRefused[] STRIDER_PROGMEM = "height refused";
+constexpr char kServoFault[] STRIDER_PROGMEM = "servo fault";
 constexpr char kOkAvoid_[] STRIDER_PROGMEM = "ok avoid ";
 constexpr char kOn[] STRIDER_PROGMEM = "on";
 constexpr char kOff[] STRIDER_PROGMEM = "off";

@@ -22,6 +22,7 @@
 
 #include "controller.h"
 #include "model_constants.h"
+#include "servo_boards.h"
 #include "servo_stage.h"
 #include "settings_store.h"
 #include "sonar_filter.h"
@@ -55,6 +56,15 @@ constexpr char kOff[] STRIDER_PROGMEM = "off";
 constexpr char kStarting[] STRIDER_PROGMEM = "starting";
 constexpr char kLimited[] STRIDER_PROGMEM = "limited";
 constexpr char kStackPeak[] STRIDER_PROGMEM = "stack_peak";
+constexpr char kPca9685[] STRIDER_PROGMEM = "pca9685";
+constexpr char kOk[] STRIDER_PROGMEM = "ok";
+constexpr char kI2cErrors[] STRIDER_PROGMEM = "i2c_errors";
+constexpr char kInfoFaultPca[] STRIDER_PROGMEM = "info fault pca9685 ";
+constexpr char kInfoFaultI2c[] STRIDER_PROGMEM = "info fault i2c timeout";
+constexpr char kInfoPca[] STRIDER_PROGMEM = "info pca9685 ";
+constexpr char kRestored[] STRIDER_PROGMEM = " restored";
+constexpr char kNothing[] STRIDER_PROGMEM = "";
+constexpr char kInfoHeld[] STRIDER_PROGMEM = "info servos held";
 constexpr char kWalkFmt[] STRIDER_PROGMEM = " walk_vx=" "\2" " walk_vy=" "\2" " walk_wz=" "\2";  // ReplyWriter::format()
 constexpr char kOverrunsFmt[] STRIDER_PROGMEM = " overruns=" "\1" " tick_max_us=" "\1";
 // The names of the gait engine's and the IK's states (to_string() in
@@ -115,7 +125,11 @@ class RobotApp {
         tick_max_us_(0),
         overruns_(0),
         stack_probe_(nullptr),
-        ok_(false) {}
+        ok_(false),
+        boards_faulted_(0),
+        bus_stuck_(false),
+        restoring_(false),
+        i2c_errors_(0) {}
   //! The same in zeroed storage (zeroed_storage.h: a firmware's global
   //! array in .bss, built in place): only the members whose default is not
   //! zero are written.
@@ -135,8 +149,13 @@ class RobotApp {
   //! Power-up: walker (sitting), servo map, boot notices; the soft start
   //! begins with the first tick. False (and an `err` notice) when the model
   //! does not fit. Takes the velocity-limit search's time (gait_config.h).
+  //! held (a warm start: an MCU reset the servo boards ran through): what
+  //! every output drives, `channels` OFF words (ServoStage::adopt_outputs());
+  //! the joints that hold a pulse keep it, the walker starts standing and
+  //! the soft start moves each leg from its pulses to the standing pose
+  //! (`info servos held joints=N`).
   template <typename Link>
-  bool begin(uint32_t now_us, Link& link) {
+  bool begin(uint32_t now_us, Link& link, const uint16_t* held = nullptr, uint8_t channels = 0) {
     // The walker's configuration needs the deepest stack of the whole
     // firmware: nothing else (no line buffer) is on the stack meanwhile,
     // and its copy of the model is gone before announce() runs.
@@ -146,9 +165,44 @@ class RobotApp {
     if (!ok_) return false;
     stage_.set_settings(controller_.settings());
     stage_.apply_pending(out_);
+    if (held != nullptr) hold(held, channels, link);
     stage_.begin_soft_start(now_us / 1000u);
     last_tick_us_ = now_us;
     return true;
+  }
+
+  //! The servo boards as their driver sees them (the caller owns the bus:
+  //! call it before each tick()). A board that stops answering (or none at
+  //! power-up) is reported once, `info fault pca9685 0x41`, and a bus that
+  //! hangs, `info fault i2c timeout`; the walk stops (the robot stands) and
+  //! walking is refused (err 31) until every board answers again. A board
+  //! that answers again is reported (`info pca9685 0x41 restored`); the
+  //! driver has set it up again if it had lost power, and its legs are
+  //! switched on one at a time (the soft start: each leg from the pulses its
+  //! outputs drive), walking allowed again once they all are. `status`
+  //! reports the boards (`pca9685=ok` or the addresses of the silent ones)
+  //! and the failed transfers (`i2c_errors`).
+  template <typename Link>
+  STRIDER_NOINLINE void servo_boards(const ServoBoardReport& r, uint32_t now_us, Link& link) {
+    // A board may have failed and come back since the last report: both notices.
+    const uint8_t lost = uint8_t((r.faulted | r.restored) & ~boards_faulted_);
+    const uint8_t back = uint8_t((boards_faulted_ | r.restored) & ~r.faulted);
+    for (uint8_t b = 0; b < kMaxPcaBoards; ++b)
+      if (lost & board_bit(b)) board_notice(FlashText{app_text::kInfoFaultPca}, b, FlashText{app_text::kNothing}, link);
+    if (r.bus_stuck && !bus_stuck_) notice(FlashText{app_text::kInfoFaultI2c}, link);
+    for (uint8_t b = 0; b < kMaxPcaBoards; ++b)
+      if (back & board_bit(b)) board_notice(FlashText{app_text::kInfoPca}, b, FlashText{app_text::kRestored}, link);
+    if (r.restored != 0 && r.outputs != nullptr) {
+      stage_.adopt_outputs(out_, r.outputs, r.channels, r.restored);
+      if (stage_.all_on() || stage_.starting()) {
+        stage_.restart_soft_start(now_us / 1000u);
+        restoring_ = true;
+      }
+    }
+    boards_faulted_ = r.faulted;
+    bus_stuck_ = r.bus_stuck;
+    i2c_errors_ = r.errors;
+    controller_.set_servo_fault(boards_faulted_ != 0 || restoring_);
   }
 
   //! Other gait parameters than the model's defaults (e.g. tuned ones), after
@@ -187,6 +241,10 @@ class RobotApp {
     last_tick_us_ = now_us;
     if (dt_us > 5 * kTickPeriodUs) dt_us = 5 * kTickPeriodUs;
     if (stage_.all_on() && motion_.sitting() && controller_.mode() != RobotMode::kRelaxed) motion_.stand_up();
+    if (restoring_ && !stage_.starting()) {  // a board's legs are on again
+      restoring_ = false;
+      controller_.set_servo_fault(boards_faulted_ != 0);
+    }
     S dt_s;
     to_seconds(dt_us, &dt_s);
     motion_.walker().tick(dt_s);
@@ -333,6 +391,38 @@ class RobotApp {
       w.field_text(FlashText{app_text::kOther}, to_flash(r.other));
   }
 
+  //! Warm start (begin()): the joints whose outputs hold a pulse keep it and
+  //! the walker stands, so that no leg drops to the sitting pose first.
+  template <typename Link>
+  STRIDER_NOINLINE void hold(const uint16_t* held, uint8_t channels, Link& link) {
+    const uint8_t n = stage_.adopt_outputs(out_, held, channels, 0xFF);
+    if (n == 0) return;
+    motion_.stand_now();
+    ReplyLine line;
+    line.w.text(FlashText{app_text::kInfoHeld}).field(FlashText{app_text::kJoints}, n);
+    link.send_line(kAllPorts, line.buf);
+  }
+
+  template <typename Link>
+  STRIDER_NOINLINE static void notice(FlashText text, Link& link) {
+    ReplyLine line;
+    line.w.text(text);
+    link.send_line(kAllPorts, line.buf);
+  }
+  //! `<head>0x41<tail>` for board b.
+  template <typename Link>
+  STRIDER_NOINLINE static void board_notice(FlashText head, uint8_t b, FlashText tail, Link& link) {
+    ReplyLine line;
+    write_board(line.w.text(head), b).text(tail);
+    link.send_line(kAllPorts, line.buf);
+  }
+  //! Board b's I2C address, `0x41`.
+  static ReplyWriter& write_board(ReplyWriter& w, uint8_t b) {
+    const uint8_t a = uint8_t(kPcaFirstAddress + b);
+    const char lo = char(a & 15u);
+    return w.ch('0').ch('x').ch(char('0' + (a >> 4))).ch(char(lo < 10 ? '0' + lo : 'a' + lo - 10));
+  }
+
   //! The tick's link and controller part: partial lines time out, deadman and
   //! avoidance. Not inlined: its reply buffer is off the stack again before
   //! the walker (the deepest call chain) runs.
@@ -374,6 +464,11 @@ class RobotApp {
         .field_text(FlashText{app_text::kIk}, app_text::to_flash(motion_.walker().worst_status()))
         .field_text(FlashText{app_text::kServos}, servos);
     if (stage_.last_status() != ServoStatus::kOk) w.field_text(FlashText{app_text::kServos}, FlashText{app_text::kLimited});
+    w.ch(' ').text(FlashText{app_text::kPca9685}).ch('=');
+    if (boards_faulted_ == 0) w.text(FlashText{app_text::kOk});
+    for (uint8_t b = 0, n = 0; b < kMaxPcaBoards; ++b)
+      if (boards_faulted_ & board_bit(b)) write_board(n++ != 0 ? w.ch(',') : w, b);
+    w.field(FlashText{app_text::kI2cErrors}, i2c_errors_);
     w.format(FlashText{app_text::kOverrunsFmt}, overruns_, int32_t(tick_max_us_));
     if (stack_probe_ != nullptr) w.field(FlashText{app_text::kStackPeak}, stack_probe_());
   }
@@ -396,6 +491,10 @@ class RobotApp {
   uint16_t overruns_;
   uint16_t (*stack_probe_)();
   bool ok_;
+  uint8_t boards_faulted_;  // servo_boards(): boards not answering
+  bool bus_stuck_;
+  bool restoring_;          // a board came back: its legs are being switched on again
+  uint16_t i2c_errors_;
 };
 
 }  // namespace strider

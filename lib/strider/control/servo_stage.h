@@ -11,7 +11,9 @@
 //! the servos do not all draw their start-up current at once and brown out
 //! the supply (ANCHORS: the most common complaint). A servo's first pulse
 //! cannot be interpolated (its position is unknown): that is what the
-//! staging is for.
+//! staging is for. An output that already holds a pulse (adopt_outputs():
+//! after an MCU reset the boards ran through, or a board that came back)
+//! is not switched off: its leg moves on from that pulse at its turn.
 #ifndef STRIDER_CONTROL_SERVO_STAGE_H
 #define STRIDER_CONTROL_SERVO_STAGE_H
 
@@ -19,6 +21,7 @@
 
 #include "../gait/walker.h"
 #include "channel_map.h"
+#include "servo_boards.h"
 #include "servo_frame.h"
 #include "servo_tick_map.h"
 
@@ -158,6 +161,52 @@ class ServoStage {
   void begin_soft_start(uint32_t now_ms) {
     soft_start_ = true;
     next_leg_ms_ = now_ms;
+  }
+
+  //! What the outputs of the boards in board_mask drive now, when that is not
+  //! what the stage wrote (after an MCU reset the boards kept running through,
+  //! or a board that answers again): words[ch] is channel ch's OFF word, ON
+  //! 0, kPcaFullOff set for no pulse. A joint whose output holds a pulse
+  //! within the joint's limits goes on from it: no relax, and its leg moves
+  //! from there (slew-limited) once the soft start reaches it. Any other is
+  //! switched off, to get its first pulse at its leg's turn. Returns the
+  //! joints that hold a pulse. Call after apply_pending() (the limits' ticks).
+  template <typename Output>
+  uint8_t adopt_outputs(Output& out, const uint16_t* words, uint8_t channels, uint8_t board_mask) {
+    uint8_t held = 0;
+    for (uint8_t k = 0; k < count_; ++k) {
+      const uint8_t ch = tick_map_.channel(k);
+      if (!(board_mask & board_bit(board_of_channel(ch)))) continue;
+      const uint16_t w = ch < channels ? words[ch] : kPcaFullOff;
+      // The limits' ticks are known when the tick map holds every joint
+      // (every built-in model); otherwise nothing is taken as held.
+      bool inside = false;
+      if (fast_ && w < kPcaFullOff) {
+        const ServoTickJoint<S> j = tick_map_.joint(k);
+        inside = w >= j.lo_ticks && w <= j.hi_ticks;
+      }
+      if (inside) {
+        ticks_[k] = w;
+        ++held;
+      } else {
+        ticks_[k] = kOff;
+        out.relax(ch);
+      }
+    }
+    // Every board (a warm start): this replaces the relax of configure().
+    // Some boards: a relax asked for meanwhile still applies to all.
+    if (board_mask == 0xFF) relax_pending_ = false;
+    return held;
+  }
+
+  //! Switches the legs on again one at a time from now_ms, as at power-up,
+  //! without relaxing anything: a leg keeps what its outputs drive until its
+  //! turn (after adopt_outputs(): a board that came back), then moves on from
+  //! it. Only while the servos are on or starting (not after relax).
+  void restart_soft_start(uint32_t now_ms) {
+    if (!all_on() && !starting()) return;
+    enabled_legs_ = 0;
+    begin_soft_start(now_ms);
   }
 
   bool all_on() const { return enabled_legs_ == legs_; }

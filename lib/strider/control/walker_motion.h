@@ -103,6 +103,16 @@ class WalkerMotion {
     walker_.engine().set_body_offsets(offsets_);
   }
 
+  //! The servos hold a standing robot (the boards kept their pulses through
+  //! an MCU reset): starts over standing, so that the legs go from where they
+  //! are to the standing pose instead of down to the sitting one.
+  void stand_now() {
+    have_command_ = false;
+    const GaitTable gait = walker_.engine().gait();
+    walker_.restart(gait, walker_.engine().config(), false);
+    walker_.engine().set_body_offsets(offsets_);
+  }
+
   //! Rises from sitting (no effect unless sitting).
   void stand_up() { walker_.engine().stand_up(); }
   bool sitting() const { return walker_.engine().state() == GaitState::kSitting; }
