@@ -95,7 +95,7 @@ TEST(VbenchScript, RejectsBadLines) {
   const char* bad[] = {"at x send F", "at 1 fly", "at 1 range -4", "at 1 range", "at 1 send",
                        "at 1 send \\q", "at 1 send \\x4", "at 1 reset now", "at -1 reset",
                        "at 1 eeprom_cut", "at 1 eeprom_cut -2", "at 1 eeprom_cut 3 zeroed", "at 1 eeprom_cut 3 erased x",
-                       "at 1 power_cut now"};
+                       "at 1 power_cut now",
                        "at 1 board", "at 1 board 0x41", "at 1 board 0x41 sideways", "at 1 board 0x80 off",
                        "at 1 board x off", "at 1 bus", "at 1 bus jammed", "at 1 hang now", "at 1 range stuck now"};
   for (const char* line : bad) {
