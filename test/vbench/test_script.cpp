@@ -42,9 +42,29 @@ TEST(VbenchScript, TextIsVerbatimWithEscapes) {
   EXPECT_TRUE(ev.immediate);
 }
 
+TEST(VbenchScript, FloodDirective) {
+  ScriptEvent ev;
+  bool has = false;
+  std::string err;
+  ASSERT_TRUE(strider_vmega::parse_script_line("at 2 flood0 1000 3.5 walk 10\\n", &ev, &has, &err)) << err;
+  ASSERT_TRUE(has);
+  EXPECT_EQ(ev.kind, ScriptEvent::Kind::kFlood);
+  EXPECT_EQ(ev.uart, 0);
+  EXPECT_EQ(ev.time_us, 2000000u);
+  EXPECT_EQ(ev.per_s, 1000.0);
+  EXPECT_EQ(ev.duration_s, 3.5);
+  EXPECT_EQ(ev.text, "walk 10\n");
+  ASSERT_TRUE(strider_vmega::parse_script_line("flood max 2 F", &ev, &has, &err)) << err;
+  EXPECT_EQ(ev.uart, 1);
+  EXPECT_EQ(ev.per_s, 0.0);  // back to back
+  EXPECT_EQ(ev.text, "F");
+}
+
 TEST(VbenchScript, RejectsBadLines) {
   const char* bad[] = {"at x send F", "at 1 fly", "at 1 range -4", "at 1 range", "at 1 send",
-                       "at 1 send \\q", "at 1 send \\x4", "at 1 reset now", "at -1 reset"};
+                       "at 1 send \\q", "at 1 send \\x4", "at 1 reset now", "at -1 reset",
+                       "at 1 flood", "at 1 flood 0 2 F", "at 1 flood fast 2 F", "at 1 flood 10 F",
+                       "at 1 flood 10 0 F", "at 1 flood 10 2"};
   for (const char* line : bad) {
     ScriptEvent ev;
     bool has = false;

@@ -4,6 +4,9 @@
 //   at T range MM      HC-SR04 sees an obstacle at MM millimetres
 //   at T range none    no echo at all (the echo line stays low)
 //   at T reset         external reset (RESET pin)
+//   at T flood R S TEXT   a link flood on UART1: TEXT R times a second (or
+//                      R = max: back to back) for S seconds
+//   at T flood0 R S TEXT  the same on UART0
 // Without `at T` a directive applies at once (commands piped into vbench).
 #ifndef STRIDER_TOOLS_VBENCH_SCRIPT_H
 #define STRIDER_TOOLS_VBENCH_SCRIPT_H
@@ -17,13 +20,15 @@ namespace strider_vmega {
 class VirtualMega;
 
 struct ScriptEvent {
-  enum class Kind { kSend, kRange, kReset };
+  enum class Kind { kSend, kRange, kReset, kFlood };
   bool immediate = false;  // no `at T`
   uint64_t time_us = 0;
   Kind kind = Kind::kSend;
   int uart = 1;
   std::string text;        // kSend: the bytes, escapes resolved
   double range_mm = -1;    // kRange: negative = no echo
+  double per_s = 0;        // kFlood: repetitions of text a second, 0 = back to back
+  double duration_s = 0;   // kFlood: how long
   int line = 0;            // source line, for messages
 };
 

@@ -36,6 +36,7 @@ void usage() {
                "              [--pty] [--realtime] [--stdin] [--osc HZ] [--pulses CSV] [--log] [--i2c]\n"
                "  --eeprom FILE  EEPROM image loaded at start (if present) and saved at the end\n"
                "  --script FILE  timed directives: at T send TEXT | at T range MM|none | at T reset\n"
+               "                 | at T flood RATE|max SECONDS TEXT (send0, flood0: UART0)\n"
                "  --duration S   simulated seconds (default 10; with --pty or --stdin: until stopped)\n"
                "  --pty          bridge UART1 to a new pseudo-terminal (path on the first stdout line)\n"
                "  --realtime     pace simulated time to the wall clock (implied by --pty)\n"
@@ -320,6 +321,12 @@ int main(int argc, char** argv) {
     std::printf("# sonar triggers %d, resets %d unexpected %d external, led toggles %d, stack peak %u bytes\n",
                 mega.sonar_triggers(), mega.unexpected_resets(), mega.external_resets(), mega.led_toggles(),
                 mega.stack_peak_bytes());
+    for (int u = 0; u < 2; ++u) {
+      const strider_vmega::FloodStats f = mega.flood_stats(u);
+      if (f.units != 0)
+        std::printf("# flood uart%d: %llu units, %llu bytes, %s-%s s\n", u, (unsigned long long)f.units,
+                    (unsigned long long)f.bytes, seconds(f.start_us).c_str(), seconds(f.last_us).c_str());
+    }
     if (mega.stack_overflow_us() != 0)
       std::printf("# STACK OVERFLOW: the stack reached .bss (%u bytes static) at %s s\n", mega.static_ram_bytes(),
                   seconds(mega.stack_overflow_us()).c_str());

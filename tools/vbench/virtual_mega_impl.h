@@ -63,6 +63,16 @@ struct VirtualMega::Impl {
   } uart[2];
   std::function<void(int, const UartByte&)> output_cb;
 
+  // Link floods (vmega_flood.cpp), one per UART.
+  struct FloodState {
+    Flood spec;
+    FloodStats stats;
+    uint64_t start_cycle = 0;
+    uint64_t next_cycle = 0;    // when the next unit is due
+    uint64_t generation = 0;    // a new flood cancels the old one's events
+  } flood[2];
+  void flood_step(int u, uint64_t generation);
+
   // Sonar.
   double range_mm = -1;
   uint64_t trig_rise_cycle = 0;
