@@ -168,6 +168,15 @@ TEST_F(Probe, FloodFasterThanTheWireGoesBackToBack) {
   EXPECT_LE(std::abs(x - yy), 1);
 }
 
+// The stack pointer changes a byte at a time (SPH, then SPL): the deepest
+// stack is where it settled, not the halfway value (0x2002) in between.
+TEST_F(Probe, StackPeakIgnoresTheHalfWrittenStackPointer) {
+  EXPECT_LT(mega.stack_peak_bytes(), 200u);
+  EXPECT_EQ(command("x"), "depth 256");
+  EXPECT_EQ(mega.stack_peak_bytes(), 256u);
+  EXPECT_EQ(mega.stack_overflow_us(), 0u);
+}
+
 TEST_F(Probe, TwiAddressesAckOrNack) {
   EXPECT_EQ(command("q 40"), "ack");
   EXPECT_EQ(command("q 41"), "ack");

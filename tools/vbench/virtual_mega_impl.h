@@ -85,6 +85,7 @@ struct VirtualMega::Impl {
   uint64_t min_trigger_interval_cycles = 0;
 
   uint16_t lowest_sp = 0xFFFF;
+  uint8_t sp_unsettled = 0;       // instructions since SPH was written without SPL
   uint16_t static_ram_end = 0;    // first byte after .data + .bss
   uint64_t stack_overflow_us = 0;  // when the stack first grew into .bss
   int unexpected_resets = 0;
