@@ -171,6 +171,13 @@ class RobotApp {
     reply(port, r, c, now_ms, link);
   }
 
+  //! The receiver of link `port` dropped bytes before the next one (its
+  //! buffer was full): the line they damage is answered `err 10` at its end
+  //! and never runs (CommandParser::lost()).
+  void on_bytes_lost(uint8_t port) {
+    if (port < kLinkPorts) parsers_[port].lost();
+  }
+
   //! One control tick (call every kTickPeriodUs): partial lines time out,
   //! controller (deadman, avoidance), walker, servo frame.
   template <typename Link>
@@ -336,9 +343,24 @@ class RobotApp {
   template <typename Link>
   void reply(uint8_t port, ParseResult r, const Command& c, uint32_t now_ms, Link& link) {
     if (r == ParseResult::kNothing) return;
+    if (c.source == CommandSource::kBareByte) {  // an RC byte: no reply, so none is written
+      char none;
+      ReplyWriter nowhere(&none, 1);
+      controller_.on_parsed(r, c, now_ms, nowhere);
+      return;
+    }
+    reply_line(port, r, c, now_ms, link);
+  }
+  template <typename Link>
+  STRIDER_NOINLINE void reply_line(uint8_t port, ParseResult r, const Command& c, uint32_t now_ms, Link& link) {
     ReplyLine line;
     ReplyWriter& w = line.w;
-    if (controller_.on_parsed(r, c, now_ms, w)) link.send_line(port, line.buf);
+    // A checked line gets a checked reply: room for its `*hhhh` kept free.
+    const bool checked = c.source == CommandSource::kCheckedLine;
+    if (checked) w = ReplyWriter(line.buf, uint8_t(sizeof line.buf - kLineCheckBytes));
+    if (!controller_.on_parsed(r, c, now_ms, w)) return;
+    if (checked) append_line_check(line.buf, w.length());
+    link.send_line(port, line.buf);
   }
 
   void write_status(ReplyWriter& w) {
