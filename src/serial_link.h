@@ -9,7 +9,10 @@
 // at 115200 baud the longest line (237 bytes) waits at most about 12 ms for
 // the UART, within the 20 ms tick period. Only a ring that is full makes send_line()
 // wait; that wait keeps the watchdog fed, since the UART always empties the
-// buffer, and ticks missed by whole periods count as overruns.
+// buffer, and ticks missed by whole periods count as overruns. The main loop
+// reads a port's bytes only while can_reply() says a reply would not wait
+// (on USB: while nothing waits), so that a flood of lines cannot hold up the
+// control tick on replies.
 #ifndef STRIDER_SERIAL_LINK_H
 #define STRIDER_SERIAL_LINK_H
 
@@ -24,6 +27,12 @@ class SerialLink {
   void send_line(uint8_t port, const char* line) {
     if (port == 0 || port == strider::kAllPorts) usb_.put_line(Serial, line);
     if (port == 1 || port == strider::kAllPorts) bluetooth_.put_line(Serial1, line);
+  }
+  //! True when a reply (up to strider::kMaxReplyBytes) to a line from `port`
+  //! goes out without waiting: it fits the ring and the UART's buffer, or,
+  //! on USB, whose ring is smaller, both are empty.
+  bool can_reply(uint8_t port) {
+    return port == 0 ? usb_.room(Serial) >= usb_.capacity() : bluetooth_.room(Serial1) >= kReplyRoom;
   }
   //! Moves waiting bytes into the UARTs' buffers; call every loop.
   void poll() {
@@ -41,6 +50,9 @@ class SerialLink {
       put(s, '\r');
       put(s, '\n');
     }
+    //! Bytes that can be queued now without waiting; at most capacity().
+    uint16_t room(HardwareSerial& s) const { return uint16_t(size_ - len_) + uint16_t(s.availableForWrite()); }
+    uint16_t capacity() const { return uint16_t(size_) + (SERIAL_TX_BUFFER_SIZE - 1); }
     void drain(HardwareSerial& s) {
       while (len_ > 0 && s.availableForWrite() > 0) {
         s.write(uint8_t(buf_[head_]));
@@ -70,8 +82,11 @@ class SerialLink {
     uint8_t len_ = 0;
   };
 
+  // The longest reply with its CR LF (without the NUL): what can_reply() asks of the Bluetooth ring.
+  static constexpr uint16_t kReplyRoom = strider::kMaxReplyBytes + 1;
   char usb_buf_[32];         // 115200 baud: a long line waits <= ~12 ms for the UART
   char bluetooth_buf_[192];  // with the UART's 64: the longest reply (status) at 9600 baud
+  static_assert(sizeof bluetooth_buf_ + SERIAL_TX_BUFFER_SIZE - 1 >= kReplyRoom, "the longest reply fits the Bluetooth queue");
   Ring usb_{usb_buf_, sizeof usb_buf_};
   Ring bluetooth_{bluetooth_buf_, sizeof bluetooth_buf_};
 };
