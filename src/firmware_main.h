@@ -185,23 +185,24 @@ constexpr uint16_t kRxCapacity = SERIAL_RX_BUFFER_SIZE - 1;  // HardwareSerial k
 constexpr uint32_t kLinkReadUs = 2000;
 strider::RxOverflowWatch g_rx_watch[strider::kLinkPorts];
 
-void read_link(HardwareSerial& s, uint8_t port, uint32_t now_us) {
-  const uint32_t start_us = micros();
-  for (bool first = true;; first = false) {
-    const int waiting = s.available();
-    if (waiting <= 0 || !g_link.can_reply(port)) return;
-    if (!first) {
-      const uint32_t t = micros();
-      if (t - start_us >= kLinkReadUs || int32_t(t - g_next_tick_us) >= 0) return;
-    }
-    if (g_rx_watch[port].gap_before_next(uint16_t(waiting), kRxCapacity)) g_app.on_bytes_lost(port);
-    g_app.on_byte(port, uint8_t(s.read()), now_us, g_link);
-  }
-}
-
+// One function for both ports, inlined into loop(): its locals share the
+// loop's frame instead of adding one of their own under the deepest call
+// chain (a line whose command plans a new walking speed).
 void read_links(uint32_t now_us) {
-  read_link(Serial, 0, now_us);
-  read_link(Serial1, 1, now_us);
+  for (uint8_t port = 0; port < strider::kLinkPorts; ++port) {
+    HardwareSerial& s = port == 0 ? Serial : Serial1;
+    const uint32_t start_us = micros();
+    for (bool first = true;; first = false) {
+      const int waiting = s.available();
+      if (waiting <= 0 || !g_link.can_reply(port)) break;
+      if (!first) {
+        const uint32_t t = micros();
+        if (t - start_us >= kLinkReadUs || int32_t(t - g_next_tick_us) >= 0) break;
+      }
+      if (g_rx_watch[port].gap_before_next(uint16_t(waiting), kRxCapacity)) g_app.on_bytes_lost(port, now_us, g_link);
+      g_app.on_byte(port, uint8_t(s.read()), now_us, g_link);
+    }
+  }
 }
 
 // A fresh time stamp, not the loop's: the 60 ms between pings must hold for

@@ -328,21 +328,37 @@ TYPED_TEST(RobotAppTest, CheckedRepliesAndLostBytes) {
   // must not set the RC speed 0 either), and is answered err 10.
   const size_t before = r.lines.sent.size();
   r.send(1, "speed 7");
-  r.app->on_bytes_lost(1);
+  r.app->on_bytes_lost(1, r.now_us, r.lines);
   r.send(1, "0\n");
   ASSERT_EQ(r.lines.sent.size(), before + 1);
   EXPECT_EQ(last(), "err 10 bytes lost");
   EXPECT_EQ(r.lines.sent.back().first, 1);
   EXPECT_EQ(r.app->controller().speed_pct(), 45);
   // Between lines: "00" after a gap is no pair of RC speed bytes.
-  r.app->on_bytes_lost(1);
+  r.app->on_bytes_lost(1, r.now_us, r.lines);
   r.send(1, "00\nspeed 60\n");
   EXPECT_EQ(r.lines.sent[r.lines.sent.size() - 2].second, "err 10 bytes lost");
   EXPECT_EQ(last(), "ok speed pct=60");
   // The other port is not affected.
-  r.app->on_bytes_lost(1);
+  r.app->on_bytes_lost(1, r.now_us, r.lines);
   r.send(0, "speed 61\n");
   EXPECT_EQ(last(), "ok speed pct=61");
+  r.send(1, "\n");  // port 1's damaged line ends
+  EXPECT_EQ(last(), "err 10 bytes lost");
+  // Bytes lost at the end of what was sent, then silence: the next line,
+  // after the idle time, is whole.
+  r.send(1, "speed 6");
+  r.now_us += strider::kLineIdleMs * 1000u;
+  r.app->on_bytes_lost(1, r.now_us, r.lines);
+  EXPECT_EQ(last(), "err 8 incomplete line");  // "speed 6" lost its end
+  r.send(1, "speed 62\n");
+  EXPECT_EQ(last(), "ok speed pct=62");
+  r.now_us += strider::kLineIdleMs * 1000u;
+  const size_t n = r.lines.sent.size();
+  r.app->on_bytes_lost(1, r.now_us, r.lines);  // between lines: nothing to answer
+  EXPECT_EQ(r.lines.sent.size(), n);
+  r.send(1, "speed 63\n");
+  EXPECT_EQ(last(), "ok speed pct=63");
 }
 
 TYPED_TEST(RobotAppTest, RefusedPoseAndGarbageChangeNothing) {

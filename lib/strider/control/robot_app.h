@@ -171,11 +171,22 @@ class RobotApp {
     reply(port, r, c, now_ms, link);
   }
 
-  //! The receiver of link `port` dropped bytes before the next one (its
-  //! buffer was full): the line they damage is answered `err 10` at its end
-  //! and never runs (CommandParser::lost()).
-  void on_bytes_lost(uint8_t port) {
-    if (port < kLinkPorts) parsers_[port].lost();
+  //! The receiver of link `port` may have dropped bytes before the next one
+  //! (its buffer was full), which comes at now_us: the line they damage is
+  //! answered `err 10` at its end and never runs (CommandParser::lost()).
+  //! After kLineIdleMs of silence since the last byte, the bytes were lost at
+  //! the end of what was sent: the line they belonged to is abandoned as the
+  //! idle timeout does (`err 8`), and the next byte starts afresh.
+  template <typename Link>
+  void on_bytes_lost(uint8_t port, uint32_t now_us, Link& link) {
+    if (port >= kLinkPorts) return;
+    const uint32_t now_ms = now_us / 1000u;
+    if (elapsed(now_ms, last_byte_ms_[port]) < kLineIdleMs) {
+      parsers_[port].lost();
+      return;
+    }
+    Command c;
+    reply(port, parsers_[port].idle_timeout(&c), c, now_ms, link);
   }
 
   //! One control tick (call every kTickPeriodUs): partial lines time out,
