@@ -278,6 +278,12 @@ class LinkOnPtyTest(unittest.TestCase):
         self.assertEqual(self.robot.lines[-1], "deadman off")
         self.assertEqual(self.robot.checked, [True, True])
 
+    def test_rc_letter_line_goes_plain(self):
+        r = self.link.command("F")
+        self.assertEqual(r.line, "ok rc F")
+        self.assertEqual(self.robot.lines, ["F"])
+        self.assertEqual(self.robot.checked, [False])
+
     def test_plain_link_sends_plain_lines(self):
         self.link.checked = False
         r = self.link.command("walk 100")

@@ -79,6 +79,8 @@ class VirtualMegaE2E(unittest.TestCase):
         r = self.link.command("deadman off", 3.0)
         self.assertEqual((r.line, r.checked), ("ok deadman off", True))
         self.assertEqual(self.status()["deadman_ms"], 0)
+        r = self.link.command("S", 3.0)  # an RC letter on its own line stays plain
+        self.assertEqual((r.line, r.checked), ("ok rc S", False))
         self.link.checked = False
         try:
             r = self.link.command("deadman off", 3.0)

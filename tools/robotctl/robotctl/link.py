@@ -19,7 +19,7 @@ from typing import Callable, Deque, List, Optional
 
 import serial
 
-from .protocol import Reply, checked_line, kind_of, parse_reply, plausible, split_check
+from .protocol import RC_BYTES, Reply, checked_line, kind_of, parse_reply, plausible, split_check
 
 #: Ports that reset an Arduino when opened (DTR): wait for its boot lines.
 RESETTING_PORT = re.compile(r"^/dev/(ttyACM|ttyUSB|cu\.usbmodem|cu\.usbserial)")
@@ -107,8 +107,9 @@ class Link:
 
     def _wire(self, text: str) -> str:
         """A line as it is sent: checked unless the link is plain, the line
-        is empty, or it is a checked line already."""
-        if not self.checked or not text.strip() or text.startswith("$"):
+        is empty, a checked line already, or one RC byte (which acts as it
+        arrives and has no checked form; its line end is answered `ok rc`)."""
+        if not self.checked or not text.strip() or text.startswith("$") or (len(text) == 1 and text in RC_BYTES):
             return text
         return checked_line(text)
 
