@@ -6,8 +6,9 @@
 // handed over by poll() as the buffer drains. The Bluetooth ring has 192
 // bytes: a 235-byte status line takes 0.25 s at 9600 baud, and written
 // blocking it would stall twelve control ticks. The USB ring has 32 (RAM):
-// at 115200 baud the longest line (237 bytes) waits at most about 12 ms for
-// the UART, within the 20 ms tick period. Only a ring that is full makes send_line()
+// at 115200 baud the longest line (~245 bytes) waits at most about 15 ms for
+// the UART (it is sent when 64 bytes are free), within the 20 ms tick
+// period. Only a ring that is full makes send_line()
 // wait; that wait keeps the watchdog fed, since the UART always empties the
 // buffer, and ticks missed by whole periods count as overruns. The main loop
 // reads a port's bytes only while can_reply() says a reply would not wait
@@ -85,7 +86,7 @@ class SerialLink {
   // The longest reply with its CR LF (without the NUL): what can_reply() asks of the Bluetooth ring.
   static constexpr uint16_t kReplyRoom = strider::kMaxReplyBytes + 1;
   static constexpr uint16_t kUsbReplyRoom = 64;
-  char usb_buf_[32];         // 115200 baud: a long line waits <= ~12 ms for the UART
+  char usb_buf_[32];         // 115200 baud: a long line waits <= ~15 ms for the UART
   char bluetooth_buf_[192];  // with the UART's 64: the longest reply (status) at 9600 baud
   static_assert(sizeof bluetooth_buf_ + SERIAL_TX_BUFFER_SIZE - 1 >= kReplyRoom, "the longest reply fits the Bluetooth queue");
   static_assert(sizeof usb_buf_ + SERIAL_TX_BUFFER_SIZE - 1 >= kUsbReplyRoom, "a short reply fits the USB queue");
