@@ -10,6 +10,8 @@
 # ${...} interpolation, no per-environment build_flags (a FATAL_ERROR says
 # so, rather than a silent difference).
 function(strider_platformio_build_flags ini out_var)
+  # A changed platformio.ini configures the build again (its flags with it).
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${ini})
   file(STRINGS ${ini} lines)
   set(section "")
   set(in_flags OFF)

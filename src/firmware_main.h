@@ -25,6 +25,7 @@
 // Library headers before Arduino.h, which defines min, max, abs and
 // constrain as macros that would rewrite the library's own names.
 #include "control/robot_app.h"
+#include "control/rx_overflow.h"
 #include "eeprom_store.h"
 #include "hcsr04_sonar.h"
 #include "pca9685_output.h"
@@ -197,9 +198,39 @@ uint8_t warm_prescale() {
   return timing.prescale();
 }
 
+// The links. Bytes arrive faster than some commands run (at 115200 baud one
+// every 87 us), so each loop pass reads a port for at most kLinkReadUs and
+// not past the tick's time (at least one byte a pass), and only while a
+// reply would not wait for the UART (SerialLink::can_reply()): the loop
+// comes round to the watchdog, the tick and the sonar whatever arrives.
+// What is not read yet waits in the core's receive buffer, 256 bytes per
+// port (SERIAL_RX_BUFFER_SIZE in platformio.ini's build_flags): 22 ms at
+// 115200 baud, longer than the longest tick. When it was full all the same,
+// the core dropped bytes without a word; RxOverflowWatch finds where, and
+// the line they fell into is answered `err 10` and never runs.
+static_assert(SERIAL_RX_BUFFER_SIZE >= 256, "platformio.ini's build_flags: -DSERIAL_RX_BUFFER_SIZE=256");
+constexpr uint16_t kRxCapacity = SERIAL_RX_BUFFER_SIZE - 1;  // HardwareSerial keeps one slot free
+constexpr uint32_t kLinkReadUs = 2000;
+strider::RxOverflowWatch g_rx_watch[strider::kLinkPorts];
+
+// One function for both ports, inlined into loop(): its locals share the
+// loop's frame instead of adding one of their own under the deepest call
+// chain (a line whose command plans a new walking speed).
 void read_links(uint32_t now_us) {
-  while (Serial.available() > 0) g_app.on_byte(0, uint8_t(Serial.read()), now_us, g_link);
-  while (Serial1.available() > 0) g_app.on_byte(1, uint8_t(Serial1.read()), now_us, g_link);
+  for (uint8_t port = 0; port < strider::kLinkPorts; ++port) {
+    HardwareSerial& s = port == 0 ? Serial : Serial1;
+    const uint32_t start_us = micros();
+    for (bool first = true;; first = false) {
+      const int waiting = s.available();
+      if (waiting <= 0 || !g_link.can_reply(port)) break;
+      if (!first) {
+        const uint32_t t = micros();
+        if (t - start_us >= kLinkReadUs || int32_t(t - g_next_tick_us) >= 0) break;
+      }
+      if (g_rx_watch[port].gap_before_next(uint16_t(waiting), kRxCapacity)) g_app.on_bytes_lost(port, now_us, g_link);
+      g_app.on_byte(port, uint8_t(s.read()), now_us, g_link);
+    }
+  }
 }
 
 // A fresh time stamp, not the loop's: the 60 ms between pings must hold for

@@ -62,6 +62,7 @@
 
 // control: command protocol, servo map, settings, sonar, avoidance, controller
 #include "control/command_parser.h"
+#include "control/line_check.h"
 #include "control/reply.h"
 #include "control/servo_map.h"
 #include "control/pca9685_timing.h"

@@ -2,6 +2,8 @@
 // overlong and binary input, and seeded random byte streams.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -9,6 +11,7 @@
 
 #include "control/command_parser.h"
 #include "control/decimal.h"
+#include "control/line_check.h"
 #include "control/reply.h"
 #include "fakes/parser_driver.h"
 
@@ -54,7 +57,8 @@ const LineCase kGoodLines[] = {
     {"avoid 200 400", CommandKind::kAvoidLimits, 200, 400, 0, ""},
     {"avoid 150 150", CommandKind::kAvoidLimits, 150, 150, 0, ""},
     {"deadman 1500", CommandKind::kDeadman, 1500, 0, 0, ""},
-    {"deadman 0", CommandKind::kDeadman, 0, 0, 0, ""},
+    {"deadman 1", CommandKind::kDeadman, 1, 0, 0, ""},
+    {"deadman 60000", CommandKind::kDeadman, 60000, 0, 0, ""},
     {"baud 115200", CommandKind::kBaud, 115200, 0, 0, ""},
     {"cal start", CommandKind::kCalStart, 0, 0, 0, ""},
     {"cal trim 3 -2.5", CommandKind::kCalTrim, 3, -25, 0, ""},
@@ -112,6 +116,12 @@ const BadCase kBadLines[] = {
     {"avoid 400 200", ParseError::kOutOfRange},
     {"avoid 10 200", ParseError::kOutOfRange},
     {"deadman 60001", ParseError::kOutOfRange},
+    {"deadman 0", ParseError::kOutOfRange},           // no number turns it off
+    {"deadman off", ParseError::kChecksumRequired},  // only a checked line does
+    {"deadman off 5", ParseError::kExtraArgument},
+    {"deadman on", ParseError::kBadArgument},
+    {"walk 100*1A9", ParseError::kBadArgument},       // no check: a plain line, `*` in a number
+    {"walk 100*1A94x", ParseError::kBadArgument},
     {"baud 12345", ParseError::kOutOfRange},
     {"cal", ParseError::kMissingArgument},
     {"cal dance", ParseError::kBadArgument},
@@ -401,6 +411,208 @@ TEST(Reply, FormatsWithoutOverrun) {
   strider::ReplyWriter m(b2, sizeof b2);
   m.integer(INT32_MIN);
   EXPECT_STREQ(m.c_str(), "-2147483648");
+}
+
+// `$text*hhhh` with the CRC-16 of text (line_check.h); a reply's `text*hhhh`.
+std::string reply_checked(const std::string& text) {
+  std::string out(text.size() + strider::kLineCheckBytes + 1, '\0');
+  std::copy(text.begin(), text.end(), out.begin());
+  strider::append_line_check(&out[0], uint8_t(text.size()));
+  out.resize(text.size() + strider::kLineCheckBytes);
+  return out;
+}
+std::string checked(const std::string& text) { return "$" + reply_checked(text); }
+
+TEST(LineCheck, CrcCheckAndAppend) {
+  EXPECT_EQ(strider::line_crc("123456789", 9), 0x29B1);  // CRC-16/CCITT-FALSE's check value
+  EXPECT_EQ(reply_checked("123456789"), "123456789*29b1");
+  EXPECT_EQ(checked("deadman off"), "$deadman off*cb77");
+  EXPECT_EQ(checked(""), "$*ffff");
+  uint8_t len = 0;
+  for (const char* good : {"$123456789*29b1", "$123456789*29B1", "$*ffff", "$deadman off*CB77"}) {
+    EXPECT_TRUE(strider::check_line(good, uint8_t(std::string(good).size()), &len)) << good;
+    EXPECT_EQ(len, std::string(good).size() - 6) << good;
+  }
+  for (const char* bad : {"123456789*29b1", "$123456789*29b2", "$123456789*29b", "$123456789*29bg",
+                          "$123456789#29b1", "$12345678*29b1", "$*fff", "$"}) {
+    EXPECT_FALSE(strider::check_line(bad, uint8_t(std::string(bad).size()), &len)) << bad;
+  }
+}
+
+// Every command runs from its checked line too, marked as checked; errors of
+// a checked line are checked errors (a checked reply).
+TEST(CommandParser, CheckedLinesParseAsPlainOnes) {
+  for (const LineCase& c : kGoodLines) {
+    if (c.kind == CommandKind::kLight) continue;  // a light button's byte, not a command line
+    const auto ev = one_line(checked(c.line) + "\r\n");
+    ASSERT_EQ(ev.size(), 1u) << c.line;
+    EXPECT_EQ(ev[0].result, ParseResult::kCommand) << c.line;
+    EXPECT_EQ(ev[0].command.kind, c.kind) << c.line;
+    EXPECT_EQ(ev[0].command.source, strider::CommandSource::kCheckedLine) << c.line;
+    EXPECT_EQ(ev[0].command.arg[0], c.a0) << c.line;
+    EXPECT_STREQ(ev[0].command.word, c.word) << c.line;
+  }
+  for (const BadCase& c : kBadLines) {
+    if (c.error == ParseError::kChecksumRequired) continue;
+    const auto ev = one_line(checked(c.line) + "\n");
+    ASSERT_EQ(ev.size(), 1u) << c.line;
+    EXPECT_EQ(int(ev[0].command.error), int(c.error)) << c.line;
+    EXPECT_EQ(ev[0].command.source, strider::CommandSource::kCheckedLine) << c.line;
+  }
+  // Uppercase hex digits are as good; a `$` line without its check is not.
+  std::string upper = checked("speed 41");
+  for (char& ch : upper) ch = char(std::toupper(ch));
+  upper = checked("speed 41").substr(0, 9) + upper.substr(9);
+  auto ev = one_line(upper + "\n");
+  ASSERT_EQ(ev.size(), 1u) << upper;
+  EXPECT_EQ(ev[0].command.kind, CommandKind::kSpeed) << upper;
+  for (const char* bad : {"$speed 41", "$speed 41*", "$speed 41*abc", "$", "$*"}) {
+    ev = one_line(std::string(bad) + "\n");
+    ASSERT_EQ(ev.size(), 1u) << bad;
+    EXPECT_EQ(ev[0].command.error, ParseError::kBadChecksum) << bad;
+    EXPECT_EQ(ev[0].command.source, strider::CommandSource::kCheckedLine) << bad;
+  }
+}
+
+// A command from a text line. RC buttons act as their byte arrives, between
+// lines (a line's first byte changed into `F` is the button F), and a line
+// end after one only echoes it (kRcEcho).
+bool line_command(const strider_test::ParseEvent& e) {
+  return e.result == ParseResult::kCommand && e.command.source != strider::CommandSource::kBareByte &&
+         e.command.kind != CommandKind::kRcEcho;
+}
+
+// Any one byte changed, anywhere in a checked line (its check included),
+// and any two checked lines glued at any point: err 9 (or a parse error),
+// never a command (a CRC-16 detects every burst of up to 16 bits).
+TEST(CommandParser, CheckedLineCatchesEveryChangedByteAndGlue) {
+  const char* texts[] = {"walk 100", "speed 50", "deadman off", "vel -12.5 300 45", "gait tripod", "status"};
+  int cases = 0;
+  for (const char* t : texts) {
+    const std::string line = checked(t);
+    for (size_t i = 0; i < line.size(); ++i) {
+      for (int delta = 1; delta < 95; ++delta) {
+        std::string bad = line;
+        bad[i] = char(0x20 + (bad[i] - 0x20 + delta) % 95);  // another printable byte
+        if (i + 4 >= line.size() && std::tolower(bad[i]) == std::tolower(line[i])) continue;  // the same hex digit
+        const auto ev = one_line(bad + "\n");
+        ++cases;
+        for (const auto& e : ev) ASSERT_FALSE(line_command(e)) << bad;
+      }
+    }
+    for (const char* u : texts) {
+      const std::string other = checked(u);
+      for (size_t i = 1; i < line.size(); ++i)
+        for (size_t j = 1; j < other.size(); ++j) {
+          const std::string glued = line.substr(0, i) + other.substr(j);
+          if (glued == line || glued == other) continue;
+          const auto ev = one_line(glued + "\n");
+          ++cases;
+          for (const auto& e : ev) ASSERT_FALSE(line_command(e)) << glued;
+        }
+    }
+  }
+  EXPECT_GT(cases, 10000);
+  // The deadman off only from its checked line.
+  auto ev = one_line(checked("deadman off") + "\n");
+  ASSERT_EQ(ev.size(), 1u);
+  EXPECT_EQ(ev[0].command.kind, CommandKind::kDeadman);
+  EXPECT_EQ(ev[0].command.arg[0], 0);
+  EXPECT_TRUE(strider::needs_checked_line(ev[0].command));
+  ev = one_line("deadman off\n");
+  ASSERT_EQ(ev.size(), 1u);
+  EXPECT_EQ(ev[0].command.error, ParseError::kChecksumRequired);
+  EXPECT_EQ(ev[0].command.source, strider::CommandSource::kLine);
+}
+
+// Feeds `before`, then lost(), then `after`: the events after the gap.
+std::vector<strider_test::ParseEvent> across_gap(CommandParser& p, const std::string& before, const std::string& after,
+                                                 std::vector<strider_test::ParseEvent>* first = nullptr) {
+  auto ev = feed_all(p, before);
+  if (first) *first = ev;
+  p.lost();
+  return feed_all(p, after);
+}
+
+// Bytes lost inside a line or between lines: the damaged line is answered
+// kBytesLost at its end, once, and nothing after the gap runs before that
+// line end: not a glued command, not a line's tail taken for RC bytes.
+TEST(CommandParser, LostBytesDropTheDamagedLine) {
+  std::vector<strider_test::ParseEvent> first;
+  {  // inside a line: "walk 1|00\n" (the gap ate "23\nspeed 1")
+    CommandParser p;
+    auto ev = across_gap(p, "walk 1", "00\nspeed 5\n");
+    ASSERT_EQ(ev.size(), 2u);
+    EXPECT_EQ(ev[0].result, ParseResult::kError);
+    EXPECT_EQ(ev[0].command.error, ParseError::kBytesLost);
+    EXPECT_EQ(ev[1].command.kind, CommandKind::kSpeed);  // the next whole line runs
+  }
+  {  // between lines: "stop\n|00\n" must not set the RC speed 0 twice
+    CommandParser p;
+    auto ev = across_gap(p, "stop\n", "00\nF", &first);
+    ASSERT_EQ(first.size(), 1u);
+    EXPECT_EQ(first[0].command.kind, CommandKind::kStop);
+    ASSERT_EQ(ev.size(), 2u);
+    EXPECT_EQ(ev[0].command.error, ParseError::kBytesLost);
+    EXPECT_EQ(ev[1].command.kind, CommandKind::kDrive);  // an RC byte after the line end
+  }
+  {  // RC bytes after a gap wait for a line end (or the idle timeout)
+    CommandParser p;
+    auto ev = across_gap(p, "FF", "FFFF");
+    EXPECT_TRUE(ev.empty());
+    Command c;
+    EXPECT_EQ(p.idle_timeout(&c), ParseResult::kError);
+    EXPECT_EQ(c.error, ParseError::kBytesLost);
+    EXPECT_EQ(feed_all(p, "F").size(), 1u);
+  }
+  {  // a gap right after CR: the LF that follows ends a line of its own
+    CommandParser p;
+    auto ev = across_gap(p, "stop\r", "\nstatus\r\n");
+    ASSERT_EQ(ev.size(), 2u);
+    EXPECT_EQ(ev[0].command.error, ParseError::kBytesLost);
+    EXPECT_EQ(ev[1].command.kind, CommandKind::kStatus);
+  }
+  {  // a line already discarded after an error: no second reply
+    CommandParser p;
+    auto ev = across_gap(p, std::string(70, 'a'), "bc\nstop\n", &first);
+    ASSERT_EQ(first.size(), 1u);
+    EXPECT_EQ(first[0].command.error, ParseError::kLineTooLong);
+    ASSERT_EQ(ev.size(), 1u);
+    EXPECT_EQ(ev[0].command.kind, CommandKind::kStop);
+  }
+  {  // several gaps in one damaged line: one reply
+    CommandParser p;
+    auto ev = across_gap(p, "walk", " 1");
+    p.lost();
+    auto more = feed_all(p, "0\n");
+    EXPECT_TRUE(ev.empty());
+    ASSERT_EQ(more.size(), 1u);
+    EXPECT_EQ(more[0].command.error, ParseError::kBytesLost);
+  }
+}
+
+// Seeded: two valid lines, the first cut at any point, bytes lost, the
+// second from any point on: whatever the pieces spell, nothing runs from
+// the gap up to the next line end, and the line after that runs.
+TEST(CommandParser, NoCommandIsGluedAcrossAGap) {
+  const char* lines[] = {"walk 100", "speed 0", "deadman 500", "vel 1 2 3", "turn -45", "stop", "avoid off",
+                         "gait trot", "pose 1 2 3", "F", "status"};
+  const size_t n = sizeof lines / sizeof lines[0];
+  std::mt19937 rng(4242u);
+  for (int k = 0; k < STRIDER_RANDOM_CASES; ++k) {
+    const std::string a = std::string(lines[rng() % n]) + "\n";
+    const std::string b = std::string(lines[rng() % n]) + (rng() % 2 ? "\r\n" : "\n");
+    const size_t i = rng() % (a.size() + 1), j = rng() % b.size();
+    CommandParser p;
+    across_gap(p, a.substr(0, i), "");
+    const auto ev = feed_all(p, b.substr(j));
+    for (const auto& e : ev) ASSERT_NE(e.result, ParseResult::kCommand) << a.substr(0, i) << "|" << b.substr(j);
+    ASSERT_EQ(ev.size(), 1u) << a.substr(0, i) << "|" << b.substr(j);
+    EXPECT_EQ(ev[0].command.error, ParseError::kBytesLost);
+    const auto next = feed_all(p, "speed 20\n");
+    ASSERT_EQ(next.size(), 1u);
+    EXPECT_EQ(next[0].command.kind, CommandKind::kSpeed);
+  }
 }
 
 // Random byte streams (fixed seed): never more than one event per byte, the

@@ -100,15 +100,25 @@ TEST(Controller, DeadmanStopsSilentLink) {
   EXPECT_EQ(notes[0], "info deadman stop");
   EXPECT_EQ(r.sink.velocity.vx, 0);
   EXPECT_GE(r.sink.stands, 1);
-  // deadman 0 = off
-  r.send("deadman 0\nwalk 50\n");
+  // No number turns it off, nor the plain `deadman off`: only the checked
+  // line (CRC-16 of "deadman off" = cb77) does.
+  auto replies = r.send("deadman 0\ndeadman off\nwalk 50\n");
+  ASSERT_EQ(replies.size(), 3u);
+  EXPECT_EQ(replies[0], "err 5 out of range");
+  EXPECT_EQ(replies[1], "err 11 checksum required");
+  r.run_ms(1100);
+  EXPECT_EQ(r.ctl->mode(), RobotMode::kStanding);
+  replies = r.send("$deadman off*cb77\nwalk 50\n");
+  ASSERT_EQ(replies.size(), 2u);
+  EXPECT_EQ(replies[0], "ok deadman off");
+  EXPECT_EQ(r.ctl->settings().deadman_ms, 0);
   r.run_ms(10000);
   EXPECT_EQ(r.ctl->mode(), RobotMode::kWalking);
 }
 
 TEST(Controller, AvoidanceSequence) {
   Rig r;
-  r.send("deadman 0\nwalk 100\n");
+  r.send("$deadman off*cb77\nwalk 100\n");
   r.run_ms(100);
   EXPECT_EQ(r.sink.velocity.vx, 1000);
   r.sonar = SonarReading{SonarStatus::kOk, 150};
@@ -253,7 +263,7 @@ TEST(ProtocolDoc, ListsEveryCodeAndCommand) {
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string doc = ss.str();
-  for (int code = 1; code <= 8; ++code) {
+  for (int code = 1; code <= 11; ++code) {
     const auto e = static_cast<strider::ParseError>(code);
     const std::string row = "| " + std::to_string(code) + " | `" + strider::error_reason(e) + "`";
     EXPECT_NE(doc.find(row), std::string::npos) << row;

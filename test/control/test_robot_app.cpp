@@ -194,7 +194,7 @@ TYPED_TEST(RobotAppTest, RandomOperatorInputStaysWithinLimits) {
     SCOPED_TRACE(m->name);
     Rig<S> r(*m);
     r.run_ms(strider::kSoftStartStepMs * m->leg_count + 2000);
-    r.send(1, "deadman 0\n");
+    r.send(1, "$deadman off*cb77\n");  // the deadman off: a checked line
     strider::Prng rng(0x5EED0000u + uint32_t(m->leg_count) * 31u + uint32_t(m->kind));
     const auto& stage = r.app->servos();
     int commands = 0, out_of_limits = 0, not_finite = 0, walking = 0, writes = 0;
@@ -283,7 +283,7 @@ TYPED_TEST(RobotAppTest, StatusLineVerbatim) {
   Rig<S> r(strider::kSprawl8);
   r.run_ms(3000);
   r.app->record_tick_time(21000);
-  const std::string cmd = "deadman 0\nvel 30 -20 10\n";
+  const std::string cmd = "$deadman off*cb77\nvel 30 -20 10\n";
   for (char ch : cmd) r.app->on_byte(0, uint8_t(ch), r.now_us, r.lines);
   r.run_ms(1000);
   const size_t from = r.lines.sent.size();
@@ -448,6 +448,73 @@ TYPED_TEST(RobotAppTest, WarmStartHoldsThePulsesTheBoardsKept) {
   }
 }
 
+// `text*hhhh` (line_check.h): a checked reply; with `$` before it, a checked line.
+std::string with_check(const std::string& text) {
+  char buf[strider::kMaxReplyBytes];
+  std::snprintf(buf, sizeof buf, "%s", text.c_str());
+  strider::append_line_check(buf, uint8_t(text.size()));
+  return buf;
+}
+
+// A checked line gets a checked reply, a status line and an error too; a
+// plain line a plain one. Bytes lost before a line's end: err 10 at that
+// end, and nothing from the damaged line runs.
+TYPED_TEST(RobotAppTest, CheckedRepliesAndLostBytes) {
+  using S = TypeParam;
+  Rig<S> r(strider::kSprawl8);
+  r.run_ms(3000);
+  auto last = [&] { return r.lines.sent.back().second; };
+  r.send(0, "$" + with_check("speed 40") + "\r\n");
+  EXPECT_EQ(last(), with_check("ok speed pct=40"));
+  r.send(0, "$" + with_check("speed 400") + "\r\n");
+  EXPECT_EQ(last(), with_check("err 5 out of range"));
+  r.send(0, "$speed 41*0000\r\n");
+  EXPECT_EQ(last(), with_check("err 9 bad checksum"));
+  r.send(0, "$" + with_check("status") + "\n");
+  const std::string st = last();
+  ASSERT_GT(st.size(), 100u);
+  EXPECT_EQ(st, with_check(st.substr(0, st.size() - strider::kLineCheckBytes)));
+  EXPECT_NE(st.find(" speed=40 "), std::string::npos) << st;
+  r.send(0, "speed 45\n");
+  EXPECT_EQ(last(), "ok speed pct=45");
+
+  // The gap fell into "speed 7": what is left, "0\n", must not run (and
+  // must not set the RC speed 0 either), and is answered err 10.
+  const size_t before = r.lines.sent.size();
+  r.send(1, "speed 7");
+  r.app->on_bytes_lost(1, r.now_us, r.lines);
+  r.send(1, "0\n");
+  ASSERT_EQ(r.lines.sent.size(), before + 1);
+  EXPECT_EQ(last(), "err 10 bytes lost");
+  EXPECT_EQ(r.lines.sent.back().first, 1);
+  EXPECT_EQ(r.app->controller().speed_pct(), 45);
+  // Between lines: "00" after a gap is no pair of RC speed bytes.
+  r.app->on_bytes_lost(1, r.now_us, r.lines);
+  r.send(1, "00\nspeed 60\n");
+  EXPECT_EQ(r.lines.sent[r.lines.sent.size() - 2].second, "err 10 bytes lost");
+  EXPECT_EQ(last(), "ok speed pct=60");
+  // The other port is not affected.
+  r.app->on_bytes_lost(1, r.now_us, r.lines);
+  r.send(0, "speed 61\n");
+  EXPECT_EQ(last(), "ok speed pct=61");
+  r.send(1, "\n");  // port 1's damaged line ends
+  EXPECT_EQ(last(), "err 10 bytes lost");
+  // Bytes lost at the end of what was sent, then silence: the next line,
+  // after the idle time, is whole.
+  r.send(1, "speed 6");
+  r.now_us += strider::kLineIdleMs * 1000u;
+  r.app->on_bytes_lost(1, r.now_us, r.lines);
+  EXPECT_EQ(last(), "err 8 incomplete line");  // "speed 6" lost its end
+  r.send(1, "speed 62\n");
+  EXPECT_EQ(last(), "ok speed pct=62");
+  r.now_us += strider::kLineIdleMs * 1000u;
+  const size_t n = r.lines.sent.size();
+  r.app->on_bytes_lost(1, r.now_us, r.lines);  // between lines: nothing to answer
+  EXPECT_EQ(r.lines.sent.size(), n);
+  r.send(1, "speed 63\n");
+  EXPECT_EQ(last(), "ok speed pct=63");
+}
+
 TYPED_TEST(RobotAppTest, RefusedPoseAndGarbageChangeNothing) {
   using S = TypeParam;
   Rig<S> r(strider::kHexapod18);
@@ -593,7 +660,7 @@ TEST(FlashNames, EqualToString) {
     EXPECT_STREQ(strider::app_text::to_flash(strider::GaitState(i)).p, strider::to_string(strider::GaitState(i)));
   for (uint8_t i = 0; i < 4; ++i)
     EXPECT_STREQ(strider::app_text::to_flash(strider::IkStatus(i)).p, strider::to_string(strider::IkStatus(i)));
-  for (uint8_t i = 0; i < 9; ++i)
+  for (uint8_t i = 0; i < strider::kParseErrorCount; ++i)
     EXPECT_STREQ(strider::flash_name(strider::kParseErrorNames, strider::kParseErrorCount, i).p,
                  strider::error_reason(strider::ParseError(i)));
   EXPECT_STREQ(strider::to_flash(strider::AvoidState(6)).p, "?");

@@ -526,7 +526,7 @@ TEST_P(FirmwareFuzz, RandomOperatorInput) {
   std::string error;
   ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
   ASSERT_TRUE(r.settle(300000, kSettleTimeoutUs));
-  ASSERT_EQ(r.command("deadman 0").rfind("ok", 0), 0u);
+  ASSERT_EQ(r.command("$deadman off*cb77").rfind("ok deadman off", 0), 0u);  // a checked line (protocol.md)
   const auto limits = r.pulse_limits();
   r.mega().clear_pulse_log();
   const size_t from = r.mark();

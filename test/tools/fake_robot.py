@@ -1,11 +1,14 @@
 """A tiny scripted robot behind a pseudo-terminal, for robotctl's tests.
 
 It speaks the shape of docs/protocol.md: RC bytes between lines are recorded
-and get no reply; each non-empty text line gets one reply from `answer()`;
-`info` notices can be pushed at any time; replies can be delayed, withheld or
-written in fragments to mimic an HC-05 that buffers.
+and get no reply; each non-empty text line gets one reply from `answer()`, a
+checked line (`$text*hhhh`) a checked reply; `info` notices can be pushed at
+any time; replies can be delayed, withheld, written in fragments to mimic an
+HC-05 that buffers, or sent with a broken check.
 """
+import binascii
 import os
+import re
 import queue
 import select
 import threading
@@ -21,7 +24,9 @@ class FakeRobot:
         tty.setraw(self.slave)
         self.path = os.ttyname(self.slave)
         self.eol = eol
-        self.lines = []          # text lines received
+        self.lines = []          # text lines received (checked ones without their check)
+        self.checked = []        # per line: it came checked (and the check held)
+        self.break_check = set() # commands whose checked reply gets a wrong check
         self.rc = []             # RC bytes received between lines
         self.delay_s = 0.0       # before each reply
         self.fragment = False    # write replies a few bytes at a time
@@ -92,23 +97,37 @@ class FakeRobot:
         # however long each one is held back (like a buffering HC-05).
         while not self._stop.is_set():
             try:
-                line, delay = self._replies.get(timeout=0.05)
+                line, delay, checked = self._replies.get(timeout=0.05)
             except queue.Empty:
                 continue
             if delay > 0:
                 time.sleep(delay)
             if not self._stop.is_set():
-                self.write(self.answer(line).encode() + self.eol)
+                reply = self.answer(line) if line is not None else "err 9 bad checksum"
+                if checked:
+                    crc = binascii.crc_hqx(reply.encode(), 0xFFFF)
+                    if line is not None and line.split()[0] in self.break_check:
+                        crc ^= 1
+                    reply += f"*{crc:04x}"
+                self.write(reply.encode() + self.eol)
 
     def _on_line(self, line):
+        checked = line.startswith("$")
+        if checked:
+            m = re.match(r"^\$(.*)\*([0-9A-Fa-f]{4})$", line)
+            if not m or binascii.crc_hqx(m.group(1).encode("latin-1"), 0xFFFF) != int(m.group(2), 16):
+                self._replies.put((None, self.delay_s, True))
+                return
+            line = m.group(1)
         self.lines.append(line)
+        self.checked.append(checked)
         cmd = line.split()[0]
         if cmd in self.withhold:
             return
         for n in self.info_before:
             self.notice(n)
         self.info_before = []
-        self._replies.put((line, self.delay_s + self.late.get(cmd, 0.0)))
+        self._replies.put((line, self.delay_s + self.late.get(cmd, 0.0), checked))
 
     def _on_byte(self, c):
         if self._cur is None:

@@ -118,6 +118,25 @@ class ProtocolTest(unittest.TestCase):
         self.assertIn("uppercase", protocol.check_line("Walk 100"))
         self.assertIn("ASCII", protocol.check_line("walk \u00e9"))
 
+    def test_check_line_counts_the_check(self):
+        self.assertIsNone(protocol.check_line("walk " + "1" * 52, checked=True))
+        self.assertIn("57", protocol.check_line("walk " + "1" * 53, checked=True))
+
+    def test_line_checks(self):
+        # CRC-16/CCITT-FALSE, as the robot's line_check.h (docs/protocol.md).
+        self.assertEqual(protocol.crc16("123456789"), 0x29B1)
+        self.assertEqual(protocol.checked_line("deadman off"), "$deadman off*cb77")
+        self.assertEqual(protocol.checked_line("walk 100"), "$walk 100*1a94")
+        self.assertEqual(protocol.split_check("ok move vx=100.0 vy=0.0 wz=0.0*e95c"),
+                         ("ok move vx=100.0 vy=0.0 wz=0.0", True))
+        self.assertEqual(protocol.split_check("ok speed pct=40*C92C"), ("ok speed pct=40", True))
+        self.assertEqual(protocol.split_check("ok speed pct=41*c92c"), ("ok speed pct=41", False))
+        self.assertEqual(protocol.split_check("ok speed pct=40"), ("ok speed pct=40", None))
+        self.assertEqual(protocol.split_check("ok x*c92"), ("ok x*c92", None))
+        self.assertEqual(protocol.ERROR_CODES[9], "bad checksum")
+        self.assertEqual(protocol.ERROR_CODES[10], "bytes lost")
+        self.assertEqual(protocol.ERROR_CODES[11], "checksum required")
+
     def test_unescape_and_reply_count(self):
         self.assertEqual(protocol.unescape(r"stop\r\nstatus\n"), "stop\r\nstatus\n")
         self.assertEqual(protocol.replies_expected("stop\r\nstatus\n"), 2)
@@ -249,6 +268,51 @@ class LinkOnPtyTest(unittest.TestCase):
         self.assertEqual(r.code, 1)
         self.assertEqual(self.robot.lines, ["walk 100", "walk 900", "jump"])
 
+    def test_lines_go_checked_and_replies_are_checked(self):
+        r = self.link.command("walk 100")
+        self.assertEqual(r.line, "ok move vx=100.0 vy=0.0 wz=0.0")
+        self.assertTrue(r.checked)
+        self.assertEqual(self.robot.checked, [True])
+        # A line written checked already is not wrapped twice.
+        r = self.link.command("$deadman off*cb77")
+        self.assertEqual(self.robot.lines[-1], "deadman off")
+        self.assertEqual(self.robot.checked, [True, True])
+
+    def test_rc_letter_line_goes_plain(self):
+        r = self.link.command("F")
+        self.assertEqual(r.line, "ok rc F")
+        self.assertEqual(self.robot.lines, ["F"])
+        self.assertEqual(self.robot.checked, [False])
+
+    def test_plain_link_sends_plain_lines(self):
+        self.link.checked = False
+        r = self.link.command("walk 100")
+        self.assertEqual(r.line, "ok move vx=100.0 vy=0.0 wz=0.0")
+        self.assertFalse(r.checked)
+        self.assertEqual(self.robot.checked, [False])
+
+    def test_damaged_reply_answers_nothing(self):
+        self.robot.break_check = {"speed"}
+        seen = []
+        self.link.on_event = seen.append
+        with self.assertRaises(ReplyTimeout):
+            self.link.command("speed 40", timeout=0.5)
+        self.assertEqual([e.kind for e in seen], ["damaged"])
+        self.assertTrue(seen[0].line.startswith("ok speed pct=40*"))
+        self.assertTrue(self.link.command("stop").checked)  # the link goes on
+
+    def test_raw_payload_lines_are_checked(self):
+        reqs = self.link.write_raw("stop\r\nwalk 10\nF")
+        self.assertEqual([self.link.wait_reply(q).line for q in reqs], ["ok stop", "ok move vx=10.0 vy=0.0 wz=0.0"])
+        self.assertEqual(self.robot.checked, [True, True])
+        deadline = time.monotonic() + 2
+        while not self.robot.rc and time.monotonic() < deadline:
+            time.sleep(0.01)
+        self.assertEqual(self.robot.rc, ["F"])  # RC bytes stay bytes
+        reqs = self.link.write_raw("stop\n", check=False)
+        self.link.wait_reply(reqs[0])
+        self.assertEqual(self.robot.checked, [True, True, False])
+
     def test_info_lines_are_not_replies(self):
         self.robot.info_before = ["info avoid sidestep", "info deadman stop"]
         r = self.link.command("stop")
@@ -328,6 +392,15 @@ class CliTest(unittest.TestCase):
         rc, out = self.run_cli("send", "walk 100", "stop")
         self.assertEqual(rc, cli.EXIT_OK)
         self.assertEqual(out.splitlines(), ["ok move vx=100.0 vy=0.0 wz=0.0", "ok stop"])
+
+    def test_send_checked_plain_and_raw(self):
+        rc, out = self.run_cli("send", "speed 40")
+        self.assertEqual((rc, out.strip()), (0, "ok speed pct=40"))
+        rc, out = self.run_cli("--plain", "send", "speed 41")
+        self.assertEqual((rc, out.strip()), (0, "ok speed pct=41"))
+        rc, out = self.run_cli("send", "--raw", r"speed 42\n")
+        self.assertEqual((rc, out.strip()), (0, "ok speed pct=42"))
+        self.assertEqual(self.robot.checked, [True, False, False])
 
     def test_send_err_exit_status(self):
         rc, out = self.run_cli("send", "walk 1000")

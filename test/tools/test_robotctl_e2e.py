@@ -71,6 +71,24 @@ class VirtualMegaE2E(unittest.TestCase):
         self.assertEqual((r.code, r.reason), (5, "out of range"))
         self.assertEqual(self.link.command("speed 70", 3.0).line, "ok speed pct=70")
 
+    def test_2a_checked_lines(self):
+        # robotctl sends checked lines; the firmware answers them checked,
+        # and takes `deadman off` from a checked line only.
+        r = self.link.command("speed 60", 3.0)
+        self.assertEqual((r.line, r.checked), ("ok speed pct=60", True))
+        r = self.link.command("deadman off", 3.0)
+        self.assertEqual((r.line, r.checked), ("ok deadman off", True))
+        self.assertEqual(self.status()["deadman_ms"], 0)
+        r = self.link.command("S", 3.0)  # an RC letter on its own line stays plain
+        self.assertEqual((r.line, r.checked), ("ok rc S", False))
+        self.link.checked = False
+        try:
+            r = self.link.command("deadman off", 3.0)
+            self.assertEqual((r.code, r.reason, r.checked), (11, "checksum required", False))
+            self.assertEqual(self.link.command("deadman 1000", 3.0).line, "ok deadman ms=1000")
+        finally:
+            self.link.checked = True
+
     def test_2b_pipelined_lines_pair_in_order(self):
         reqs = [self.link.write_line(t) for t in ("speed 40", "jump", "status", "stop")]
         got = [self.link.wait_reply(r, 5.0) for r in reqs]

@@ -12,6 +12,8 @@
 //   l 0|1           LED on PB7                              -> ok
 //   d               enable a 15 ms watchdog and hang
 //   W               enable a 60 ms watchdog that the main loop feeds   -> ok
+//   x               the stack pointer to 0x20FF and back, a byte at a time
+//                   as avr-gcc's prologues write it (SPH, SREG, SPL)  -> depth 256
 // At boot: "boot MCUSR" on UART1 and "boot0" on UART0 (115200 baud).
 #include <avr/eeprom.h>
 #include <avr/interrupt.h>
@@ -205,6 +207,24 @@ void command(const char* line) {
       else PORTB &= uint8_t(~(1 << PB7));
       uart1_print("ok\n");
       return;
+    case 'x': {
+      // From SP = 0x21xx to 0x2102 (same high byte), then to 0x20FF: between
+      // the writes of SPH and SPL it reads 0x2002, 253 bytes below.
+      const uint16_t saved = SP;
+      const uint16_t near_page = 0x2102;
+      const uint16_t deep = 0x20FF;
+      asm volatile(
+          "in r0, __SREG__\n\tcli\n\tout __SP_H__, %B0\n\tout __SREG__, r0\n\tout __SP_L__, %A0\n\t"
+          "in r0, __SREG__\n\tcli\n\tout __SP_H__, %B1\n\tout __SREG__, r0\n\tout __SP_L__, %A1\n\t"
+          "in r0, __SREG__\n\tcli\n\tout __SP_H__, %B2\n\tout __SREG__, r0\n\tout __SP_L__, %A2\n\t"
+          :
+          : "r"(near_page), "r"(deep), "r"(saved)
+          : "r0", "memory");
+      uart1_print("depth ");
+      print_dec(RAMEND - deep);
+      uart1_put('\n');
+      return;
+    }
     case 'd':
       wdt_enable(WDTO_15MS);
       for (;;) {

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -117,6 +118,64 @@ TEST_F(Probe, BytesWaitWhileTheFirmwareIsBusy) {
   EXPECT_EQ(next_line(1, 1000000), "done");
   EXPECT_EQ(next_line(1, 1000000), "len 100 sum " + std::to_string(100 * int('x')));
   EXPECT_EQ(mega.pending_input(1), 0u);
+}
+
+// Link floods (fault injection): a sender at a set rate, and one faster than
+// the wire, which then goes out back to back at the baud rate.
+TEST_F(Probe, FloodSendsItsRate) {
+  strider_vmega::Flood f;
+  f.units = {"n ab\n"};
+  f.per_s = 20;
+  f.duration_us = 1000000;
+  mega.flood(1, f);
+  int replies = 0;
+  for (std::string l = next_line(1, 300000); l != "<timeout>"; l = next_line(1, 300000)) {
+    EXPECT_EQ(l, "len 2 sum 195");
+    ++replies;
+  }
+  EXPECT_EQ(mega.flood_stats(1).units, 20u);
+  EXPECT_EQ(mega.flood_stats(1).bytes, 100u);
+  EXPECT_FALSE(mega.flood_stats(1).active);
+  EXPECT_EQ(replies, 20);
+}
+
+TEST_F(Probe, FloodFasterThanTheWireGoesBackToBack) {
+  strider_vmega::Flood f;
+  f.units = {"n " + std::string(40, 'x') + "\n", "n " + std::string(41, 'y') + "\n"};
+  f.per_s = 1000;
+  f.count = 100000;
+  f.duration_us = 1000000;
+  const uint64_t t0 = mega.now_us();
+  mega.flood(1, f);
+  size_t most_pending = 0;
+  while (mega.now_us() < t0 + 1000000) {
+    ASSERT_EQ(mega.run_for_us(500), RunStatus::kOk);
+    most_pending = std::max(most_pending, mega.pending_input(1));
+  }
+  // 9615 baud: 961 bytes a second, 43.5 bytes a unit (the probe's shorter
+  // replies keep up); the sender waits while the port holds its 64 bytes.
+  const auto st = mega.flood_stats(1);
+  EXPECT_FALSE(st.active);
+  const double delivered = double(st.bytes - mega.pending_input(1));
+  EXPECT_NEAR(delivered, 961.0, 961.0 * 0.03) << st.units << " units";
+  EXPECT_LE(most_pending, strider_vmega::kFloodSenderBytes + 44);
+  mega.stop_flood(1);
+  int x = 0, yy = 0;
+  for (std::string l = next_line(1, 200000); l != "<timeout>"; l = next_line(1, 200000)) {
+    x += l == "len 40 sum 4800";
+    yy += l == "len 41 sum 4961";
+  }
+  EXPECT_EQ(uint64_t(x + yy), st.units);
+  EXPECT_LE(std::abs(x - yy), 1);
+}
+
+// The stack pointer changes a byte at a time (SPH, then SPL): the deepest
+// stack is where it settled, not the halfway value (0x2002) in between.
+TEST_F(Probe, StackPeakIgnoresTheHalfWrittenStackPointer) {
+  EXPECT_LT(mega.stack_peak_bytes(), 200u);
+  EXPECT_EQ(command("x"), "depth 256");
+  EXPECT_EQ(mega.stack_peak_bytes(), 256u);
+  EXPECT_EQ(mega.stack_overflow_us(), 0u);
 }
 
 TEST_F(Probe, TwiAddressesAckOrNack) {

@@ -91,13 +91,33 @@ TEST(VbenchScript, FaultDirectives) {
   EXPECT_EQ(ev[7].kind, ScriptEvent::Kind::kHang);
 }
 
+TEST(VbenchScript, FloodDirective) {
+  ScriptEvent ev;
+  bool has = false;
+  std::string err;
+  ASSERT_TRUE(strider_vmega::parse_script_line("at 2 flood0 1000 3.5 walk 10\\n", &ev, &has, &err)) << err;
+  ASSERT_TRUE(has);
+  EXPECT_EQ(ev.kind, ScriptEvent::Kind::kFlood);
+  EXPECT_EQ(ev.uart, 0);
+  EXPECT_EQ(ev.time_us, 2000000u);
+  EXPECT_EQ(ev.per_s, 1000.0);
+  EXPECT_EQ(ev.duration_s, 3.5);
+  EXPECT_EQ(ev.text, "walk 10\n");
+  ASSERT_TRUE(strider_vmega::parse_script_line("flood max 2 F", &ev, &has, &err)) << err;
+  EXPECT_EQ(ev.uart, 1);
+  EXPECT_EQ(ev.per_s, 0.0);  // back to back
+  EXPECT_EQ(ev.text, "F");
+}
+
 TEST(VbenchScript, RejectsBadLines) {
   const char* bad[] = {"at x send F", "at 1 fly", "at 1 range -4", "at 1 range", "at 1 send",
                        "at 1 send \\q", "at 1 send \\x4", "at 1 reset now", "at -1 reset",
                        "at 1 eeprom_cut", "at 1 eeprom_cut -2", "at 1 eeprom_cut 3 zeroed", "at 1 eeprom_cut 3 erased x",
                        "at 1 power_cut now",
                        "at 1 board", "at 1 board 0x41", "at 1 board 0x41 sideways", "at 1 board 0x80 off",
-                       "at 1 board x off", "at 1 bus", "at 1 bus jammed", "at 1 hang now", "at 1 range stuck now"};
+                       "at 1 board x off", "at 1 bus", "at 1 bus jammed", "at 1 hang now", "at 1 range stuck now",
+                       "at 1 flood", "at 1 flood 0 2 F", "at 1 flood fast 2 F", "at 1 flood 10 F",
+                       "at 1 flood 10 0 F", "at 1 flood 10 2"};
   for (const char* line : bad) {
     ScriptEvent ev;
     bool has = false;

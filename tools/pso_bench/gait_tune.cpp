@@ -168,7 +168,7 @@ std::vector<Rollout> rollout(const strider::RobotModel& model, const strider::Ga
   // `gait NAME` switches the gait table and keeps the engine's (candidate's)
   // configuration (WalkerMotion::set_gait).
   const std::string gait_line = o.gait.empty() ? std::string("stop\n") : "gait " + o.gait + "\n";
-  const Send sends[] = {{0.4, gait_line.c_str()}, {0.5, "deadman 0\n"}, {0.6, "avoid off\n"},
+  const Send sends[] = {{0.4, gait_line.c_str()}, {0.5, "$deadman off*cb77\n"}, {0.6, "avoid off\n"},
                         {o.walk_at_s, o.walk.c_str()}};
   size_t next_send = 0;
   const double dt = wc.step_s;

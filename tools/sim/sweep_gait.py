@@ -52,7 +52,7 @@ SETTLE_S = 5.0    # after `stop`: the ramp down and the last steps
 def scenario_text(robot, gait, speed, distance):
     stop_at = WALK_AT_S + distance / speed
     return (f"robot {robot}\nduration {math.ceil(stop_at + SETTLE_S)}\n"
-            "at 0.5 send deadman 0\\n\n"
+            "at 0.5 send $deadman off*cb77\\n\n"  # the deadman off, a checked line (docs/protocol.md)
             f"at 1 send gait {gait}\\n\n"
             f"at {WALK_AT_S:g} send walk {speed:g}\\n\n"
             f"at {stop_at:.3f} send stop\\n\n")

@@ -104,6 +104,25 @@ bool parse_script_line(const std::string& raw, ScriptEvent* event, bool* has_eve
       *error = "send needs text";
       return false;
     }
+  } else if (word == "flood" || word == "flood0" || word == "flood1") {
+    ev.kind = ScriptEvent::Kind::kFlood;
+    ev.uart = word == "flood0" ? 0 : 1;
+    const std::string rate = take_word(&rest);
+    if (rate == "max") {
+      ev.per_s = 0;
+    } else if (!parse_number(rate, &ev.per_s) || ev.per_s <= 0) {
+      *error = "flood needs a rate (a number > 0 a second, or `max`)";
+      return false;
+    }
+    if (!parse_number(take_word(&rest), &ev.duration_s) || ev.duration_s <= 0) {
+      *error = "flood needs a duration in seconds > 0 after the rate";
+      return false;
+    }
+    if (!unescape(rest, &ev.text, error)) return false;
+    if (ev.text.empty()) {
+      *error = "flood needs text";
+      return false;
+    }
   } else if (word == "range") {
     ev.kind = ScriptEvent::Kind::kRange;
     const std::string v = take_word(&rest);
@@ -159,7 +178,7 @@ bool parse_script_line(const std::string& raw, ScriptEvent* event, bool* has_eve
     *error = "unknown directive `" + word + "`";
     return false;
   }
-  if (ev.kind != ScriptEvent::Kind::kSend && !take_word(&rest).empty()) {
+  if (ev.kind != ScriptEvent::Kind::kSend && ev.kind != ScriptEvent::Kind::kFlood && !take_word(&rest).empty()) {
     *error = "extra words after `" + word + "`";
     return false;
   }
@@ -231,6 +250,14 @@ void apply_event(const ScriptEvent& event, VirtualMega& mega) {
         }
       }
       break;
+    case ScriptEvent::Kind::kFlood: {
+      Flood f;
+      f.units.push_back(event.text);
+      f.per_s = event.per_s;
+      f.duration_us = uint64_t(std::llround(event.duration_s * 1e6));
+      mega.flood(event.uart, f);
+      break;
+    }
   }
 }
 

@@ -14,6 +14,9 @@
 //                      (power-on state), bus wires loose / back (keeps its outputs)
 //   at T bus stuck|free  SDA held low (no START or STOP completes) / released
 //   at T hang          the MCU hangs (interrupts off, spinning) until a watchdog reset
+//   at T flood R S TEXT   a link flood on UART1: TEXT R times a second (or
+//                      R = max: back to back) for S seconds
+//   at T flood0 R S TEXT  the same on UART0
 // Without `at T` a directive applies at once (commands piped into vbench).
 #ifndef STRIDER_TOOLS_VBENCH_SCRIPT_H
 #define STRIDER_TOOLS_VBENCH_SCRIPT_H
@@ -27,7 +30,7 @@ namespace strider_vmega {
 class VirtualMega;
 
 struct ScriptEvent {
-  enum class Kind { kSend, kRange, kReset, kPowerCut, kEepromCut, kEchoStuck, kBoard, kBus, kHang };
+  enum class Kind { kSend, kRange, kReset, kPowerCut, kEepromCut, kEchoStuck, kBoard, kBus, kHang, kFlood };
   enum class BoardAction { kOff, kOn, kDetach, kAttach };
   bool immediate = false;  // no `at T`
   uint64_t time_us = 0;
@@ -40,6 +43,8 @@ struct ScriptEvent {
   int board_address = 0;   // kBoard: 7-bit I2C address
   BoardAction board_action = BoardAction::kOff;
   bool bus_stuck = false;  // kBus
+  double per_s = 0;        // kFlood: repetitions of text a second, 0 = back to back
+  double duration_s = 0;   // kFlood: how long
   int line = 0;            // source line, for messages
 };
 

@@ -39,7 +39,8 @@ void usage() {
                "  --eeprom FILE  EEPROM image loaded at start (if present) and saved at the end\n"
                "  --script FILE  timed directives: at T send TEXT | at T range MM|none|stuck | at T reset |\n"
                "                 at T board ADDR off|on|detach|attach | at T bus stuck|free | at T hang |\n"
-               "                 at T power_cut | at T eeprom_cut N [erased]\n"
+               "                 at T power_cut | at T eeprom_cut N [erased] |\n"
+               "                 at T flood RATE|max SECONDS TEXT (send0, flood0: UART0)\n"
                "  --duration S   simulated seconds (default 10; with --pty or --stdin: until stopped)\n"
                "  --pty          bridge UART1 to a new pseudo-terminal (path on the first stdout line)\n"
                "  --realtime     pace simulated time to the wall clock (implied by --pty)\n"
@@ -374,6 +375,12 @@ int main(int argc, char** argv) {
                 mega.stack_peak_bytes());
     std::printf("# eeprom writes %llu, power cuts %zu\n", static_cast<unsigned long long>(mega.eeprom_writes()),
                 mega.power_cut_log().size());
+    for (int u = 0; u < 2; ++u) {
+      const strider_vmega::FloodStats f = mega.flood_stats(u);
+      if (f.units != 0)
+        std::printf("# flood uart%d: %llu units, %llu bytes, %s-%s s\n", u, (unsigned long long)f.units,
+                    (unsigned long long)f.bytes, seconds(f.start_us).c_str(), seconds(f.last_us).c_str());
+    }
     if (mega.stack_overflow_us() != 0)
       std::printf("# STACK OVERFLOW: the stack reached .bss (%u bytes static) at %s s\n", mega.static_ram_bytes(),
                   seconds(mega.stack_overflow_us()).c_str());

@@ -61,6 +61,13 @@ void no_sleep(avr_t*, avr_cycle_count_t) {}
 
 avr_cycle_count_t bound_timer(avr_t*, avr_cycle_count_t, void*) { return 0; }
 
+// `out A, Rr` (1011 1AAr rrrr AAAA) to I/O address io.
+constexpr uint8_t kIoSpl = 0x3D;
+constexpr uint8_t kIoSph = 0x3E;
+bool is_out_to(uint16_t op, uint8_t io) {
+  return (op & 0xF800) == 0xB800 && (((op >> 5) & 0x30) | (op & 0x0F)) == io;
+}
+
 }  // namespace
 using namespace regs;
 
@@ -156,17 +163,20 @@ RunStatus VirtualMega::run_until_us(uint64_t t_us) {
   const avr_flashaddr_t reset_pc = s.avr->reset_pc;
   while (s.avr->cycle < target) {
     const avr_flashaddr_t pc_before = s.avr->pc;
-    const uint16_t op = uint16_t(s.avr->flash[pc_before] | (s.avr->flash[pc_before + 1] << 8));
     const int state = avr_run(s.avr);
-    // The stack pointer is written a byte at a time (OUT SPH, then OUT SPL):
-    // in between it can read 256 bytes off. Sampled only when whole.
-    if ((op & 0xF800) == 0xB800) {  // OUT A, Rr: A = op bits 10:9 and 3:0
-      const int a = ((op >> 5) & 0x30) | (op & 0x0F);
-      if (a == R_SPH - 32) s.sp_half_written = true;
-      else if (a == R_SPL - 32) s.sp_half_written = false;
-    }
     const uint16_t sp = uint16_t(s.avr->data[R_SPL] | (s.avr->data[R_SPH] << 8));
-    if (sp < s.lowest_sp && !s.sp_half_written) {
+    // The stack pointer is written a byte at a time, SPH first, then SREG,
+    // then SPL (avr-gcc's frame set-up): in between it points up to 255 bytes
+    // off. Not counted until SPL follows, at most two instructions later.
+    const uint16_t op = pc_before + 1 <= s.avr->flashend
+                            ? uint16_t(s.avr->flash[pc_before] | (s.avr->flash[pc_before + 1] << 8))
+                            : 0;
+    if (is_out_to(op, kIoSph)) {
+      s.sp_unsettled = 2;
+    } else if (s.sp_unsettled > 0) {
+      s.sp_unsettled = is_out_to(op, kIoSpl) ? 0 : uint8_t(s.sp_unsettled - 1);
+    }
+    if (s.sp_unsettled == 0 && sp < s.lowest_sp) {
       s.lowest_sp = sp;
       if (sp < s.static_ram_end && s.stack_overflow_us == 0) s.stack_overflow_us = std::max<uint64_t>(1, s.now_us());
     }

@@ -65,6 +65,28 @@ struct I2cFrame {
   }
 };
 
+//! A link flood (fault injection): a sender that writes `units` in turn
+//! (after the last, the first again), `per_s` of them a second, into a UART.
+//! Like a program writing to a serial port, it blocks while the port still
+//! holds kFloodSenderBytes unsent bytes: a flood faster than the baud rate
+//! goes out back to back at the baud rate.
+struct Flood {
+  std::vector<std::string> units;  //!< e.g. {"F"} (RC bytes) or {"status\n"} (lines)
+  double per_s = 0;                //!< units a second; 0 = back to back
+  uint64_t duration_us = 0;        //!< stop after this long; 0 = only after `count` units
+  uint64_t count = 0;              //!< stop after this many units; 0 = only after `duration_us`
+};
+constexpr size_t kFloodSenderBytes = 64;  //!< the sender's queue: it waits beyond this
+
+//! What a flood has sent so far.
+struct FloodStats {
+  bool active = false;
+  uint64_t units = 0;  //!< units handed to the UART (whole)
+  uint64_t bytes = 0;
+  uint64_t start_us = 0;
+  uint64_t last_us = 0;  //!< when the last unit was handed over
+};
+
 //! A byte the firmware wrote to a UART.
 struct UartByte {
   uint64_t time_us;
@@ -130,6 +152,11 @@ class VirtualMega {
   void set_output_callback(std::function<void(int uart, const UartByte&)> cb);
   //! Baud rate the firmware programmed (0 before it did).
   uint32_t baud(int uart) const;
+  //! Starts a flood on `uart` now (replacing one that runs there); a flood
+  //! with neither duration nor count, or without units, does nothing.
+  void flood(int uart, const Flood& f);
+  void stop_flood(int uart);
+  FloodStats flood_stats(int uart) const;
 
   // PCA9685 boards.
   int board_count() const;

@@ -66,6 +66,16 @@ struct VirtualMega::Impl {
   } uart[2];
   std::function<void(int, const UartByte&)> output_cb;
 
+  // Link floods (vmega_flood.cpp), one per UART.
+  struct FloodState {
+    Flood spec;
+    FloodStats stats;
+    uint64_t start_cycle = 0;
+    uint64_t next_cycle = 0;    // when the next unit is due
+    uint64_t generation = 0;    // a new flood cancels the old one's events
+  } flood[2];
+  void flood_step(int u, uint64_t generation);
+
   // Sonar.
   double range_mm = -1;
   uint64_t trig_rise_cycle = 0;
@@ -78,7 +88,7 @@ struct VirtualMega::Impl {
   uint64_t min_trigger_interval_cycles = 0;
 
   uint16_t lowest_sp = 0xFFFF;
-  bool sp_half_written = false;  // OUT SPH done, OUT SPL not yet
+  uint8_t sp_unsettled = 0;       // instructions since SPH was written without SPL
   uint16_t static_ram_end = 0;    // first byte after .data + .bss
   uint64_t stack_overflow_us = 0;  // when the stack first grew into .bss
   int unexpected_resets = 0;

@@ -23,7 +23,7 @@ enum class CommandKind : uint8_t {
   kHeight,       //!< arg[0] = body height [0.1 mm]
   kAvoidEnable,  //!< arg[0] = 1 on, 0 off
   kAvoidLimits,  //!< arg[0] = stop distance [mm], arg[1] = slow-down distance [mm]
-  kDeadman,      //!< arg[0] = timeout [ms], 0 = off
+  kDeadman,      //!< arg[0] = timeout [ms]; 0 = off (`deadman off`, a checked line only)
   kBaud,         //!< arg[0] = UART rate [baud] (applied after save + reset)
   kCalStart,     //!< enter calibration: servos to neutral, trims editable
   kCalTrim,      //!< arg[0] = joint index, arg[1] = trim [0.1 deg]
@@ -40,8 +40,9 @@ enum class CommandKind : uint8_t {
 };
 
 //! Where a command came from: bare RC bytes get no reply (the app shows
-//! none and repeats buttons); text lines get exactly one.
-enum class CommandSource : uint8_t { kBareByte = 0, kLine = 1 };
+//! none and repeats buttons); text lines get exactly one, a checked line
+//! (`text*HHHH`, command_parser.h) a checked one.
+enum class CommandSource : uint8_t { kBareByte = 0, kLine = 1, kCheckedLine = 2 };
 
 //! Parser error codes: stable numbers, listed in docs/protocol.md.
 //! 1-19 are found by the parser, 20+ by the controller.
@@ -54,7 +55,10 @@ enum class ParseError : uint8_t {
   kOutOfRange = 5,      //!< number outside the command's range
   kLineTooLong = 6,     //!< line longer than kMaxLineBytes
   kBadByte = 7,         //!< non-printable or non-ASCII byte
-  kIncomplete = 8       //!< partial line abandoned (no byte for the idle timeout)
+  kIncomplete = 8,      //!< partial line abandoned (no byte for the idle timeout)
+  kBadChecksum = 9,     //!< a checked line whose CRC does not match its text
+  kBytesLost = 10,      //!< the line overlaps bytes the receiver dropped
+  kChecksumRequired = 11  //!< the command disarms a failsafe: only in a checked line
 };
 
 constexpr uint8_t kCommandWordBytes = 8;  //!< gait name: up to 7 chars + NUL
@@ -89,6 +93,9 @@ inline const char* error_reason(ParseError e) {
     case ParseError::kLineTooLong: return "line too long";
     case ParseError::kBadByte: return "bad byte";
     case ParseError::kIncomplete: return "incomplete line";
+    case ParseError::kBadChecksum: return "bad checksum";
+    case ParseError::kBytesLost: return "bytes lost";
+    case ParseError::kChecksumRequired: return "checksum required";
   }
   return "error";
 }

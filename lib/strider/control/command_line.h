@@ -188,7 +188,7 @@ constexpr WordCommand kWordCommands[] STRIDER_PROGMEM = {
     {words::kSpeed, CommandKind::kSpeed, 1, 0, 0, 0, 100},
     {words::kPose, CommandKind::kPose, 3, 0, 1, -kMaxPoseDecideg, kMaxPoseDecideg},
     {words::kHeight, CommandKind::kHeight, 1, 0, 1, 100, 4000},
-    {words::kDeadman, CommandKind::kDeadman, 1, 0, 0, 0, 60000},
+    {words::kDeadman, CommandKind::kDeadman, 1, 0, 0, 1, 60000},  // off: parse_command_line()
     {words::kBaud, CommandKind::kBaud, 1, 0, 0, 0, 2000000},
     {words::kSave, CommandKind::kSave, 0, 0, 0, 0, 0},
     {words::kStatus, CommandKind::kStatus, 0, 0, 0, 0, 0},
@@ -197,6 +197,11 @@ constexpr WordCommand kWordCommands[] STRIDER_PROGMEM = {
 constexpr uint8_t kWordCommandCount = uint8_t(sizeof kWordCommands / sizeof kWordCommands[0]);
 
 }  // namespace detail
+
+//! True for a command that disarms a failsafe: the deadman off. It runs only
+//! from a checked line (command_parser.h), a form that no line glued from
+//! pieces of others and no typo produces; no number turns the deadman off.
+inline bool needs_checked_line(const Command& c) { return c.kind == CommandKind::kDeadman && c.arg[0] == 0; }
 
 //! Parses one line (len bytes, printable ASCII, no line ending). On success
 //! returns kNone and fills *cmd (source kLine); otherwise returns the error.
@@ -211,6 +216,10 @@ inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd
   if (token_is(w, words::kGait)) return parse_gait(t, n, cmd);
   if (token_is(w, words::kAvoid)) return parse_avoid(t, n, cmd);
   if (token_is(w, words::kCal)) return parse_cal(t, n, cmd);
+  if (token_is(w, words::kDeadman) && n >= 2 && token_is(t[1], words::kOff)) {
+    cmd->kind = CommandKind::kDeadman;  // arg[0] = 0: off, from a checked line only (needs_checked_line())
+    return no_args(n, 2);
+  }
   for (uint8_t i = 0; i < kWordCommandCount; ++i) {
     WordCommand wc;
     flash_copy(&wc, &kWordCommands[i], sizeof wc);

@@ -8,10 +8,17 @@
 //!   'w' and 'v' (lights off) also start "walk"/"vel": such a byte is taken as
 //!   a light only if the next byte is not a lowercase letter (one-byte lookahead).
 //! - Text lines ending in CR, LF or CRLF, at most kMaxLineBytes printable bytes.
+//!   A line starting with `$` is a checked line (`$text*hhhh`, line_check.h):
+//!   its text runs only when its check matches, and a command that disarms a
+//!   failsafe (needs_checked_line(): `deadman off`) only from a checked line.
 //! Errors (binary byte, overlong line) are reported once, as soon as they are
 //! seen; the rest of that line is discarded up to its line end, then parsing
 //! resynchronises. Bare junk between lines is reported once and skipped up to
 //! the next valid start byte. idle_timeout() abandons a partial line.
+//! lost() says the receiver dropped bytes before the next one: the line they
+//! fell into (or, between lines, the next) is discarded and answered
+//! kBytesLost at its end, so that no command is glued from two lines' pieces
+//! and no line's tail is taken for RC bytes.
 #ifndef STRIDER_CONTROL_COMMAND_PARSER_H
 #define STRIDER_CONTROL_COMMAND_PARSER_H
 
@@ -20,6 +27,7 @@
 #include "../math/zeroed_storage.h"
 #include "command.h"
 #include "command_line.h"
+#include "line_check.h"
 
 namespace strider {
 
@@ -77,7 +85,8 @@ class CommandParser {
     after_cr_ = false;
     switch (state_) {
       case State::kCollect: return collect(b, out);
-      case State::kDiscard: return ParseResult::kNothing;
+      case State::kDiscard:
+      case State::kLost: return ParseResult::kNothing;
       case State::kIdle:
       case State::kSkipJunk: break;
     }
@@ -93,17 +102,31 @@ class CommandParser {
     state_ = State::kIdle;
     len_ = 0;
     last_rc_ = 0;
+    if (was == State::kLost) return error(ParseError::kBytesLost, out);
     if (was != State::kCollect || is_light_lookahead(len)) return ParseResult::kNothing;
     bool blank = true;
     for (uint8_t i = 0; i < len; ++i) blank = blank && (line_[i] == ' ' || line_[i] == '\t');
     return blank ? ParseResult::kNothing : error(ParseError::kIncomplete, out);
   }
 
+  //! The receiver dropped bytes before the next one (its buffer overflowed):
+  //! the line being collected, or the next one when the gap fell between
+  //! lines, is discarded up to its line end and answered kBytesLost there (or
+  //! at the idle timeout); bytes after the gap are not taken for RC bytes
+  //! before that line end. A line already discarded after an error stays so.
+  void lost() {
+    if (state_ != State::kDiscard) state_ = State::kLost;
+    len_ = 0;
+    last_rc_ = 0;
+    after_cr_ = false;  // an LF after the gap may end a line of its own
+  }
+
   bool collecting() const { return state_ == State::kCollect; }  //!< inside a text line
   uint8_t line_length() const { return len_; }                   //!< bytes of the partial line
 
  private:
-  enum class State : uint8_t { kIdle, kCollect, kDiscard, kSkipJunk };
+  // kLost: bytes were lost, discarding up to the line end, kBytesLost there.
+  enum class State : uint8_t { kIdle, kCollect, kDiscard, kSkipJunk, kLost };
 
   static bool is_lower(uint8_t b) { return b >= 'a' && b <= 'z'; }
   static bool is_bare_rc(uint8_t b) {
@@ -112,8 +135,8 @@ class CommandParser {
   }
   bool is_light_lookahead(uint8_t len) const { return len == 1 && (line_[0] == 'w' || line_[0] == 'v'); }
 
-  ParseResult error(ParseError e, Command* out) {
-    *out = make_command(CommandKind::kNone, CommandSource::kLine);
+  ParseResult error(ParseError e, Command* out, CommandSource source = CommandSource::kLine) {
+    *out = make_command(CommandKind::kNone, source);
     out->error = e;
     return ParseResult::kError;
   }
@@ -126,7 +149,7 @@ class CommandParser {
       return ParseResult::kCommand;
     }
     last_rc_ = 0;
-    if (is_lower(b) || b == ' ' || b == '\t') {
+    if (is_lower(b) || b == ' ' || b == '\t' || b == kLineCheckStart) {
       state_ = State::kCollect;
       line_[0] = char(b);
       len_ = 1;
@@ -164,6 +187,7 @@ class CommandParser {
     const uint8_t len = len_;
     len_ = 0;
     if (was == State::kDiscard) return ParseResult::kNothing;  // error already reported
+    if (was == State::kLost) return error(ParseError::kBytesLost, out);
     if (was != State::kCollect) {
       if (last_rc_ == 0) return ParseResult::kNothing;  // empty line
       *out = make_command(CommandKind::kRcEcho, CommandSource::kLine);
@@ -171,8 +195,25 @@ class CommandParser {
       last_rc_ = 0;
       return ParseResult::kCommand;
     }
-    const ParseError e = parse_command_line(line_, len, out);
-    if (e != ParseError::kNone) return error(e, out);
+    return complete_line(len, out);
+  }
+
+  // A whole line: a checked one's check, then the command. Not inlined: the
+  // parse's tokens are off the stack again when the command runs (its reply
+  // and a velocity plan are the firmware's deepest stack).
+  STRIDER_NOINLINE ParseResult complete_line(uint8_t len, Command* out) {
+    const char* text = line_;
+    uint8_t text_len = len;
+    const bool checked = line_[0] == kLineCheckStart;
+    const CommandSource source = checked ? CommandSource::kCheckedLine : CommandSource::kLine;
+    if (checked) {
+      if (!check_line(line_, len, &text_len)) return error(ParseError::kBadChecksum, out, source);
+      ++text;
+    }
+    ParseError e = parse_command_line(text, text_len, out);
+    if (e == ParseError::kNone && !checked && needs_checked_line(*out)) e = ParseError::kChecksumRequired;
+    if (e != ParseError::kNone) return error(e, out, source);
+    out->source = source;
     return out->kind == CommandKind::kNone ? ParseResult::kNothing : ParseResult::kCommand;
   }
 

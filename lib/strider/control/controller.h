@@ -150,7 +150,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     }
     if (c.kind != CommandKind::kRcEcho) deadman_.feed(now_ms);
     apply(c, w);
-    return c.source == CommandSource::kLine;
+    return c.source != CommandSource::kBareByte;
   }
 
   void fail(ReplyWriter& w, ControlError e, FlashText reason) { write_error(w, uint8_t(e), reason); }
@@ -220,7 +220,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
       case CommandKind::kDeadman:
         settings_.deadman_ms = uint16_t(c.arg[0]);
         deadman_.set_timeout(settings_.deadman_ms);
-        w.format(FlashText{text::kOkDeadmanFmt}, c.arg[0]);
+        if (c.arg[0] == 0) w.text(FlashText{text::kOkDeadmanOff});
+        else w.format(FlashText{text::kOkDeadmanFmt}, c.arg[0]);
         return;
       case CommandKind::kBaud:
         settings_.baud = uint32_t(c.arg[0]);

@@ -36,7 +36,7 @@ inline FlashText flash_name(const char* names, uint8_t count, uint8_t index) {
 
 //! Suggested buffer: the longest reply (status, ~260 bytes walking with
 //! every field, up to ~300 with every number at its widest) + NUL.
-constexpr uint16_t kMaxReplyBytes = 320;
+constexpr uint16_t kMaxReplyBytes = 304;
 
 class ReplyWriter {
  public:
@@ -97,6 +97,10 @@ class ReplyWriter {
   //! "ok pose roll=" "\2" " pitch=" "\2" " yaw=" "\2" (kept apart so that no
   //! letter or digit joins the escape).
   STRIDER_NOINLINE ReplyWriter& format(FlashText fmt, int32_t a, int32_t b = 0, int32_t c = 0) {
+    if (cap_ <= 1) {  // no room at all (a reply nobody sends): no digits computed
+      truncated_ = true;
+      return *this;
+    }
     const int32_t v[3] = {a, b, c};
     uint8_t k = 0;
     for (const char* p = fmt.p;; ++p) {
@@ -156,8 +160,8 @@ inline void write_error(ReplyWriter& w, uint8_t code, FlashText reason) {
 //! error_reason() has the same texts for host code).
 constexpr char kParseErrorNames[] STRIDER_PROGMEM =
     "none\0unknown command\0bad argument\0missing argument\0too many arguments\0out of range\0"
-    "line too long\0bad byte\0incomplete line";
-constexpr uint8_t kParseErrorCount = 9;
+    "line too long\0bad byte\0incomplete line\0bad checksum\0bytes lost\0checksum required";
+constexpr uint8_t kParseErrorCount = 12;
 
 //! `err <code> <reason>` for a parser error.
 inline void write_parse_error(ReplyWriter& w, ParseError e) {

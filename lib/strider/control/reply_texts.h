@@ -16,6 +16,7 @@ constexpr char kOkPoseFmt[] STRIDER_PROGMEM = "ok pose roll=" "\2" " pitch=" "\2
 constexpr char kOkHeightFmt[] STRIDER_PROGMEM = "ok height mm=" "\2";
 constexpr char kOkAvoidFmt[] STRIDER_PROGMEM = "ok avoid stop_mm=" "\1" " slow_mm=" "\1";
 constexpr char kOkDeadmanFmt[] STRIDER_PROGMEM = "ok deadman ms=" "\1";
+constexpr char kOkDeadmanOff[] STRIDER_PROGMEM = "ok deadman off";
 constexpr char kOkBaudFmt[] STRIDER_PROGMEM = "ok baud rate=" "\1" " after save and reset";
 constexpr char kOkCalTrimFmt[] STRIDER_PROGMEM = "ok cal trim joint=" "\1" " deg=" "\2";
 constexpr char kOkCalOscFmt[] STRIDER_PROGMEM = "ok cal osc hz=" "\1";

@@ -230,6 +230,24 @@ class RobotApp {
     reply(port, r, c, now_ms, link);
   }
 
+  //! The receiver of link `port` may have dropped bytes before the next one
+  //! (its buffer was full), which comes at now_us: the line they damage is
+  //! answered `err 10` at its end and never runs (CommandParser::lost()).
+  //! After kLineIdleMs of silence since the last byte, the bytes were lost at
+  //! the end of what was sent: the line they belonged to is abandoned as the
+  //! idle timeout does (`err 8`), and the next byte starts afresh.
+  template <typename Link>
+  void on_bytes_lost(uint8_t port, uint32_t now_us, Link& link) {
+    if (port >= kLinkPorts) return;
+    const uint32_t now_ms = now_us / 1000u;
+    if (elapsed(now_ms, last_byte_ms_[port]) < kLineIdleMs) {
+      parsers_[port].lost();
+      return;
+    }
+    Command c;
+    reply(port, parsers_[port].idle_timeout(&c), c, now_ms, link);
+  }
+
   //! One control tick (call every kTickPeriodUs): partial lines time out,
   //! controller (deadman, avoidance), walker, servo frame.
   template <typename Link>
@@ -448,12 +466,26 @@ class RobotApp {
   // The command's reply is written into a member, not a stack buffer: a
   // command may reconfigure the walker (a gait, a height), the deepest
   // call chain there is, and the soak's random input took the stack past
-  // its 1 KB budget (1,029 B on sprawl8) with the 320-byte line under it.
+  // its 1 KB budget (1,029 B on sprawl8) with the 320-byte line of then under it.
   template <typename Link>
   void reply(uint8_t port, ParseResult r, const Command& c, uint32_t now_ms, Link& link) {
     if (r == ParseResult::kNothing) return;
-    ReplyWriter w(reply_buf_, sizeof reply_buf_);
-    if (controller_.on_parsed(r, c, now_ms, w)) link.send_line(port, reply_buf_);
+    if (c.source == CommandSource::kBareByte) {  // an RC byte: no reply, so none is written
+      char none;
+      ReplyWriter nowhere(&none, 1);
+      controller_.on_parsed(r, c, now_ms, nowhere);
+      return;
+    }
+    reply_line(port, r, c, now_ms, link);
+  }
+  template <typename Link>
+  STRIDER_NOINLINE void reply_line(uint8_t port, ParseResult r, const Command& c, uint32_t now_ms, Link& link) {
+    // A checked line gets a checked reply: room for its `*hhhh` kept free.
+    const bool checked = c.source == CommandSource::kCheckedLine;
+    ReplyWriter w(reply_buf_, uint16_t(sizeof reply_buf_ - (checked ? kLineCheckBytes : 0)));
+    if (!controller_.on_parsed(r, c, now_ms, w)) return;
+    if (checked) append_line_check(reply_buf_, w.length());
+    link.send_line(port, reply_buf_);
   }
 
   void write_status(ReplyWriter& w) {

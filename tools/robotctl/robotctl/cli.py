@@ -39,6 +39,8 @@ def add_common(ap: argparse.ArgumentParser, top: bool) -> None:
                     help="seconds to wait for the boot line after opening (default: 3 on USB ports that "
                          "reset the board, else 0)")
     ap.add_argument("--quiet", "-q", action="store_true", default=d(False), help="do not print info notices")
+    ap.add_argument("--plain", action="store_true", default=d(False),
+                    help="send plain text lines, as a phone app does (default: checked lines, $text*hhhh)")
     ap.add_argument("--vbench", default=d(None), help="sim: the vbench executable (default: build dir, $STRIDER_VBENCH, PATH)")
     ap.add_argument("--elf", default=d(None), help="sim: the firmware ELF (default: the model's in the build dir, $STRIDER_ELF)")
     ap.add_argument("--eeprom", default=d(None), help="sim: EEPROM image file kept between runs")
@@ -101,7 +103,7 @@ class Drive:
         args = self.args
         if port.startswith("sim:"):
             port = self._start_sim(port[4:])
-        self.link = Link(open_port(port, args.baud))
+        self.link = Link(open_port(port, args.baud), checked=not args.plain)
         self.link.on_event = self._on_event
         wait = args.boot_wait
         if self.vm is not None:
@@ -130,6 +132,8 @@ class Drive:
     def _on_event(self, ev):
         if ev.kind == "info" and not self.args.quiet and self.args.cmd not in ("drive", "monitor"):
             print(ev.line, file=sys.stderr)
+        if ev.kind == "damaged" and self.args.cmd not in ("drive", "monitor"):
+            print(f"robotctl: damaged line (its check failed): {ev.line}", file=sys.stderr)
 
     def close(self):
         self.link.close()
@@ -148,9 +152,9 @@ def cmd_send(s: Drive, a, out) -> int:
             s.link.write_rc(chunk)
         return EXIT_OK
     for line in a.lines:
-        reqs = s.link.write_raw(unescape(line)) if a.raw else [s.link.write_line(line)]
+        reqs = s.link.write_raw(unescape(line), check=False) if a.raw else [s.link.write_line(line)]
         if not a.raw:
-            why = check_line(line)
+            why = check_line(line, checked=s.link.checked and not line.startswith("$"))
             if why:
                 print(f"robotctl: warning: {line!r}: {why}", file=sys.stderr)
         for req in reqs:
@@ -208,7 +212,7 @@ def cmd_monitor(s: Drive, a, out) -> int:
     use_stdin = not a.no_stdin
     while not a.duration or s.link.clock() - start < a.duration:
         for ev in s.link.poll(0.05):
-            tag = " (late)" if ev.late else ""
+            tag = " (late)" if ev.late else " (damaged: its check failed)" if ev.kind == "damaged" else ""
             print(f"{ev.time - start:8.3f} < {ev.line}{tag}", file=out)
         if use_stdin:
             ready, _, _ = select.select([sys.stdin], [], [], 0)

@@ -5,6 +5,11 @@ Replies come in the order of the lines sent, so the link keeps a queue of
 lines still waiting for one. A reply that arrives after its command timed out
 (the HC-05 buffers, a busy robot answers late) is matched to that stale entry
 and dropped, so it is never taken for the answer to a later command.
+
+Text lines go out as checked lines (`$text*hhhh`, docs/protocol.md) unless
+the link is plain: the robot then runs only a line that arrived whole, and
+its reply carries a check too. A received line whose check fails is damaged:
+it is reported (kind 'damaged') and answers nothing.
 """
 import re
 import time
@@ -14,7 +19,7 @@ from typing import Callable, Deque, List, Optional
 
 import serial
 
-from .protocol import Reply, kind_of, parse_reply, plausible
+from .protocol import RC_BYTES, Reply, checked_line, kind_of, parse_reply, plausible, split_check
 
 #: Ports that reset an Arduino when opened (DTR): wait for its boot lines.
 RESETTING_PORT = re.compile(r"^/dev/(ttyACM|ttyUSB|cu\.usbmodem|cu\.usbserial)")
@@ -39,10 +44,12 @@ class Pending:
 
 @dataclass
 class Event:
-    """A line received: kind is 'ok', 'err', 'info' or 'other'."""
+    """A line received: kind is 'ok', 'err', 'info', 'other', or 'damaged'
+    (its check failed); line is without its check."""
     time: float
     kind: str
     line: str
+    checked: Optional[bool] = None      #: None: it had no check; else whether it held
     reply: Optional[Reply] = None
     request: Optional[Pending] = None  #: the line this reply answers, if known
     late: bool = False                  #: reply to an abandoned request
@@ -57,6 +64,8 @@ class Link:
     on_event: Optional[Callable[[Event], None]] = None
     #: Line ending written after a text line.
     eol: bytes = b"\n"
+    #: Text lines as checked lines (`$text*hhhh`); False: plain, as a phone app sends.
+    checked: bool = True
     #: Abandoned requests older than this are forgotten [s]: a reply that
     #: never comes must not shift every later pairing forever.
     forget_after_s: float = 30.0
@@ -70,7 +79,7 @@ class Link:
         """Sends one text line (the ending is added) and queues it for its
         reply. Returns at once."""
         p = Pending(text=text, sent_at=self.clock())
-        self._write(text.encode("ascii", "replace") + self.eol)
+        self._write(self._wire(text).encode("ascii", "replace") + self.eol)
         if text.strip():  # an empty line earns no reply
             self._queue.append(p)
         else:
@@ -81,14 +90,28 @@ class Link:
         """Sends RC-app bytes: no line ending, no reply expected."""
         self._write(chars.encode("ascii", "replace"))
 
-    def write_raw(self, payload: str) -> List[Pending]:
-        """Sends bytes as they are; one queue entry per non-empty line they
-        end (bytes after the last line end are RC bytes or a line's start)."""
+    def write_raw(self, payload: str, check: Optional[bool] = None) -> List[Pending]:
+        """Sends bytes as they are, but for each line they end, which goes
+        out checked when `check` (default: the link's `checked`) says so;
+        one queue entry per non-empty line (bytes after the last line end
+        are RC bytes or a line's start, sent as they are)."""
+        check = self.checked if check is None else check
         now = self.clock()
-        entries = [Pending(text=line, sent_at=now) for line in re.split(r"\r\n|\r|\n", payload)[:-1] if line]
-        self._write(payload.encode("latin-1", "replace"))
+        parts = re.split(r"(\r\n|\r|\n)", payload)  # text, ending, text, ending, ..., rest
+        entries = [Pending(text=line, sent_at=now) for line in parts[0:-1:2] if line]
+        if check:
+            parts = [self._wire(p) if i % 2 == 0 and i + 1 < len(parts) else p for i, p in enumerate(parts)]
+        self._write("".join(parts).encode("latin-1", "replace"))
         self._queue.extend(entries)
         return entries
+
+    def _wire(self, text: str) -> str:
+        """A line as it is sent: checked unless the link is plain, the line
+        is empty, a checked line already, or one RC byte (which acts as it
+        arrives and has no checked form; its line end is answered `ok rc`)."""
+        if not self.checked or not text.strip() or text.startswith("$") or (len(text) == 1 and text in RC_BYTES):
+            return text
+        return checked_line(text)
 
     def _write(self, data: bytes) -> None:
         try:
@@ -148,10 +171,15 @@ class Link:
 
     def _classify(self, line: str) -> Event:
         now = self.clock()
+        text, held = split_check(line)
+        if held is False:  # shown as it came
+            return self._event(Event(time=now, kind="damaged", line=line, checked=False))
+        line = text
         kind = kind_of(line)
-        ev = Event(time=now, kind=kind, line=line)
+        ev = Event(time=now, kind=kind, line=line, checked=held)
         if kind in ("ok", "err"):
             ev.reply = parse_reply(line)
+            ev.reply.checked = bool(held)
             self._forget_old(now)
             req = self._match(ev.reply)
             if req is not None:
@@ -160,6 +188,9 @@ class Link:
                 ev.late = req.abandoned
         elif kind == "info":
             self.notices.append(ev)
+        return self._event(ev)
+
+    def _event(self, ev: Event) -> Event:
         if self.on_event is not None:
             self.on_event(ev)
         return ev

@@ -5,8 +5,10 @@ Every text line sent gets exactly one reply, `ok ...` or `err <code> <reason>`;
 lines starting with `info` are asynchronous notices and never replies. RC
 characters (the phone app's buttons) get no reply.
 """
+import binascii
+import re
 from dataclasses import dataclass, field
-from typing import Dict, List, Optional, Union
+from typing import Dict, List, Optional, Tuple, Union
 
 #: RC motion buttons of the phone app (docs/protocol.md, "RC app buttons").
 RC_MOTION = "FBLRGIHJS"
@@ -17,6 +19,8 @@ RC_BYTES = RC_MOTION + RC_SPEED
 
 #: Longest text line the robot accepts, without its ending [bytes].
 MAX_LINE_BYTES = 63
+#: What a checked line adds to its text: `$` before, `*hhhh` after.
+CHECK_BYTES = 6
 
 #: Error codes the robot guarantees (docs/protocol.md, "Error codes").
 ERROR_CODES = {
@@ -28,6 +32,9 @@ ERROR_CODES = {
     6: "line too long",
     7: "bad byte",
     8: "incomplete line",
+    9: "bad checksum",
+    10: "bytes lost",
+    11: "checksum required",
     20: "cal start first",
     21: "calibrating",
     22: "store failed",
@@ -36,6 +43,29 @@ ERROR_CODES = {
 }
 
 Value = Union[int, float, str]
+
+
+def crc16(text: str) -> int:
+    """CRC-16/CCITT-FALSE of a line's text, the robot's line check
+    (docs/protocol.md, "Checked lines"): crc16("123456789") == 0x29B1."""
+    return binascii.crc_hqx(text.encode("latin-1"), 0xFFFF)
+
+
+def checked_line(text: str) -> str:
+    """`$text*hhhh`: a text line in its checked form."""
+    return f"${text}*{crc16(text):04x}"
+
+
+_CHECK = re.compile(r"^(.*)\*([0-9A-Fa-f]{4})$")
+
+
+def split_check(line: str) -> Tuple[str, Optional[bool]]:
+    """A received line without its `*hhhh`, and whether that check holds:
+    (line, None) for a line without one."""
+    m = _CHECK.match(line)
+    if not m:
+        return line, None
+    return m.group(1), crc16(m.group(1)) == int(m.group(2), 16)
 
 
 def convert(text: str) -> Value:
@@ -69,6 +99,7 @@ class Reply:
     code: Optional[int] = None                        #: error code (err only)
     reason: str = ""                                  #: error reason (err only)
     fields: Dict[str, Value] = field(default_factory=dict)  #: key=value words
+    checked: bool = False                             #: it came with a check that held
 
     @property
     def what(self) -> str:
@@ -125,15 +156,17 @@ def status_summary(st: Dict[str, Value]) -> str:
     return "  ".join(parts)
 
 
-def check_line(text: str) -> Optional[str]:
-    """Why the robot would refuse `text` as a line, or None. Robotctl sends
-    it anyway (the robot's own answer is the truth); this is for warnings."""
+def check_line(text: str, checked: bool = False) -> Optional[str]:
+    """Why the robot would refuse `text` as a line (sent checked: in its
+    checked form), or None. Robotctl sends it anyway (the robot's own answer
+    is the truth); this is for warnings."""
     try:
         raw = text.encode("ascii")
     except UnicodeEncodeError:
         return "non-ASCII characters (err 7 bad byte)"
-    if len(raw) > MAX_LINE_BYTES:
-        return f"longer than {MAX_LINE_BYTES} bytes (err 6 line too long)"
+    limit = MAX_LINE_BYTES - (CHECK_BYTES if checked else 0)
+    if len(raw) > limit:
+        return f"longer than {limit} bytes{' with its check' if checked else ''} (err 6 line too long)"
     if any(b < 0x20 and b != 0x09 or b > 0x7E for b in raw):
         return "control characters (err 7 bad byte)"
     if raw[:1].isupper() and len(raw.strip()) > 1:
