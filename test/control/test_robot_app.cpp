@@ -340,7 +340,7 @@ TYPED_TEST(RobotAppTest, ServoBoardFaultStopsTheWalkUntilTheBoardIsBack) {
   const strider::RobotModel& m = strider::kHexapod18;
   Rig<S> r(m);
   r.run_ms(5000);
-  r.send(1, "deadman 0\nwalk 80\n");
+  r.send(1, "$deadman off*cb77\nwalk 80\n");
   r.run_ms(1000);
   ASSERT_EQ(r.app->controller().mode(), strider::RobotMode::kWalking);
   strider::ServoBoardReport rep;
@@ -418,7 +418,7 @@ TYPED_TEST(RobotAppTest, WarmStartHoldsThePulsesTheBoardsKept) {
     SCOPED_TRACE(m->name);
     Rig<S> before(*m);
     before.run_ms(5000);
-    before.send(1, "deadman 0\nwalk 80\n");
+    before.send(1, "$deadman off*cb77\nwalk 80\n");
     before.run_ms(1300);
     ASSERT_EQ(before.app->controller().mode(), strider::RobotMode::kWalking);
     std::vector<uint16_t> outputs(32, strider::kPcaFullOff);

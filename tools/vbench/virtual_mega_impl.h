@@ -215,7 +215,7 @@ struct VirtualMega::Impl {
     // queues did not. Cycle timers may be gone: re-arm ours.
     end_transaction(false);
     pending_stop.clear();
-    sp_half_written = false;
+    sp_unsettled = 0;
     for (Uart& p : uart) {
       p.xoff = false;
     }
