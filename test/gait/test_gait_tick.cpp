@@ -59,9 +59,11 @@ TEST(StoredVelocityLimits, MatchTheSearch) {
 
 // The fingerprint's 1/16 mm from the float's bits = the float formula
 // int16_t(mm * 16 +- 0.5), halves and both signs included, over the range of
-// a model's sizes.
+// a model's sizes. Through int32_t: +-2047.96875 rounds to +-32768, which a
+// float converted straight to int16_t would overflow (undefined); its low
+// 16 bits are what sixteenths() gives.
 TEST(StoredVelocityLimits, SixteenthsFromBitsMatchTheFloatFormula) {
-  const auto formula = [](float mm) { return uint16_t(int16_t(mm * 16.0f + (mm < 0.0f ? -0.5f : 0.5f))); };
+  const auto formula = [](float mm) { return uint16_t(int32_t(mm * 16.0f + (mm < 0.0f ? -0.5f : 0.5f))); };
   const float edges[] = {0.0f, -0.0f, 1e-30f, 0.03124f, 0.03125f, 0.0625f, 0.09375f, 1.0f, -1.03125f,
                          87.5f, -77.5f, 120.0f, -90.0f, 2047.96875f, -2047.96875f, 1e-3f, -1e-3f};
   for (const float v : edges) {

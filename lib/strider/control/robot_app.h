@@ -20,6 +20,7 @@
 
 #include <stdint.h>
 
+#include "constant_given.h"
 #include "controller.h"
 #include "model_constants.h"
 #include "servo_boards.h"
@@ -335,12 +336,12 @@ class RobotApp {
     name_ = model.name;
     boards_ = pca_board_count(model);
     controller_.set_avoid_clear_mm(kAvoidClearMm != 0 ? kAvoidClearMm : avoid_clear_mm(model));  // the copy: model_ may be in flash
-    return configure_walker(model, Stored<given(kStoredConfig)>()) && configure_stage(model);
+    return configure_walker(model, Stored<constant_given<const GaitConfig<S>*, kStoredConfig>()>()) &&
+           configure_stage(model);
   }
   // The walker from the model (only the one called is built).
   template <bool kOn>
   struct Stored {};
-  static constexpr bool given(const void* p) { return p != nullptr; }
   bool configure_walker(const RobotModel& model, Stored<false>) {
     GaitParams params;
     return gait_params_of(model, &params) && motion_.configure(model, params, false);
@@ -348,8 +349,8 @@ class RobotApp {
   // A stored configuration needs only the default gait's name.
   bool configure_walker(const RobotModel& model, Stored<true>) {
     GaitName gait;
-    return default_gait(model, &gait, Stored<given(kStoredGait)>()) &&
-           configure_walker(model, gait.text, Stored<given(kStoredLegs)>());
+    return default_gait(model, &gait, Stored<constant_given<const GaitName*, kStoredGait>()>()) &&
+           configure_walker(model, gait.text, Stored<constant_given<const WalkerLegs<S>*, kStoredLegs>()>());
   }
   static bool default_gait(const RobotModel&, GaitName* gait, Stored<true>) {
     flash_copy(gait, kStoredGait, sizeof *gait);

@@ -21,6 +21,7 @@
 
 #include "../gait/walker.h"
 #include "channel_map.h"
+#include "constant_given.h"
 #include "servo_boards.h"
 #include "servo_frame.h"
 #include "servo_tick_map.h"
@@ -87,12 +88,6 @@ constexpr JointChannels<S, N> joint_channels(const RobotModel& m, walker_detail:
        servo_step_us(servo_parts_detail::travel_of(m.servo[2]).speed_deg_s)}};
 }
 static_assert(kMaxLegDof == 3, "joint_channels: a step per joint of a leg");
-// Whether a stage's kChannels is given: through a function, as a template
-// argument's own comparison with nullptr draws avr-gcc's -Waddress.
-template <typename T>
-constexpr bool given(const T* p) {
-  return p != nullptr;
-}
 }  // namespace servo_stage_detail
 //! Model m's channels for a stage of N joints (ServoStage's kChannels).
 template <typename S, uint8_t N>
@@ -106,7 +101,7 @@ constexpr JointChannels<S, N> joint_channels(const RobotModel& m) {
 //! model when needed (make_joint_channel()).
 template <typename S, uint8_t N = kMaxServoJoints, const JointChannels<S, N>* kChannels = nullptr>
 class ServoStage {
-  static constexpr bool kHasChannels = servo_stage_detail::given(kChannels);
+  static constexpr bool kHasChannels = constant_given<const JointChannels<S, N>*, kChannels>();
 
  public:
   ServoStage()

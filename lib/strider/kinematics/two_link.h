@@ -99,10 +99,10 @@ STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t
   const uint32_t d2 = wide::sq_sum(h, v);
   const uint32_t outer2 = uint32_t(link.outer2.raw()) << 8, inner2 = uint32_t(link.inner2.raw()) << 8;
   if (!(d2 < outer2 && d2 > inner2)) return false;
-  const int32_t c = int32_t(d2) - (link.sum_sq.raw() << 8);            // 2 a1 a2 cos tb [Q6.24]
+  const int32_t c = int32_t(d2) - wide::from_sq(link.sum_sq);          // 2 a1 a2 cos tb [Q6.24]
   int32_t s = int32_t(wide::sqrt_product(outer2 - d2, d2 - inner2));  // 2 a1 a2 |sin tb|
   if (branch == KneeBranch::kNegative) s = -s;
-  const int32_t k1 = int32_t(d2) + (link.diff_sq.raw() << 8);  // 2 a1 (a1 + a2 cos tb)
+  const int32_t k1 = int32_t(d2) + wide::from_sq(link.diff_sq);  // 2 a1 (a1 + a2 cos tb); diff_sq < 0 for a1 < a2
   // tb = atan2(s, c); ta = atan2(v, h) - atan2(s, k1), two lean atan2s
   // being cheaper on the AVR than scaling both pairs to 16 bits for the
   // angle-difference identity; their errors (< 1.2e-4 rad together) stay far

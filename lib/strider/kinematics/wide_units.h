@@ -85,6 +85,14 @@ STRIDER_ALWAYS_INLINE int32_t from_unit(Fixed v) {
   return detail::to_signed(detail::mul_u16(uint16_t(u), 0x1000U) + (uint32_t(uint16_t(detail::hi16(u) << 12)) << 16));
 }
 
+//! A Fixed square or difference of squares [unit^2] below 64 in magnitude
+//! (a TwoLink constant of links shorter than 8 units; a1^2 - a2^2 is
+//! negative when a1 < a2) in Q6.24: raw 2^8, exact. A product, not
+//! raw << 8: shifting a negative value left is undefined in C++14, and
+//! |raw| < 2^22 keeps the product inside int32. avr-gcc emits the same
+//! byte moves for both.
+STRIDER_ALWAYS_INLINE int32_t from_sq(Fixed sq) { return sq.raw() * 256; }
+
 //! A wide length w >= 0 as Fixed [mm] for a leg with unit shift n:
 //! round(w 2^(n - 12)) raw; false when it does not fit.
 inline bool to_mm(uint32_t w, int8_t shift, Fixed& out) {
