@@ -10,8 +10,8 @@
 // legs share a geometry, STRIDER_WALKER_SOLVERS (gait/walker.h): the model is
 // a compile-time constant here, only its leg type is compiled in, the
 // walking state has as many legs as the model and the walker as many leg
-// solvers as the model has leg geometries. STRIDER_FIRMWARE_FIXED 1 picks
-// fixed point as the scalar (below).
+// solvers as the model has leg geometries. Every firmware computes in fixed
+// point (below).
 #ifndef STRIDER_FIRMWARE_MAIN_H
 #define STRIDER_FIRMWARE_MAIN_H
 
@@ -51,21 +51,12 @@ static_assert(strider::kWalkerSolvers == strider::leg_solver_count(kModel), "STR
 static_assert(strider::servo_tick_slots_fit(kModel),
               "STRIDER_SERVO_TICK_SLOTS: the legs' joint count, for legs of one geometry");
 
-// The scalar: fixed point where the model defines STRIDER_FIRMWARE_FIXED 1,
-// float otherwise. Fixed point is the faster tick (hexapod18: 1.75 ms
-// against 6.5 ms in float, docs/benchmarks.md) and the larger firmware: its
-// integer trig, square roots, tables and the IK's integer fast path take
-// 9-11 KB more flash than the soft-float routines, so that a quadruped's
-// firmware fits 64 KB only in float (docs/firmware.md, "The scalar"), and
-// its 8-12 joints leave the float tick far inside the 20 ms period.
-#ifndef STRIDER_FIRMWARE_FIXED
-#define STRIDER_FIRMWARE_FIXED 0
-#endif
-#if STRIDER_FIRMWARE_FIXED
+// The scalar: fixed point for every model. Measured on the virtual Mega
+// (tools/dev bench, docs/benchmarks.md), it gives every model the shorter
+// tick: sprawl8's longest tick is 8.1 ms in fixed point against 12.0 ms in
+// float, spider12's 7.8 against 11.5 ms, and the fixed-point firmwares are
+// 70-78 KB of the 128 KB flash budget.
 using Scalar = strider::Fixed;
-#else
-using Scalar = float;
-#endif
 
 // The walker's gait configuration at the model's defaults, built at compile
 // time and kept in flash with the model's strides alone (not the whole

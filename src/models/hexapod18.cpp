@@ -1,7 +1,6 @@
 // Entry point of the hexapod18 firmware (PlatformIO env:hexapod18, CMake strider_firmware_hexapod18):
 // the whole firmware, compiled for this model and its coxa-femur-tibia legs alone.
 #define STRIDER_FIRMWARE_MODEL strider::kHexapod18
-#define STRIDER_FIRMWARE_FIXED 1  // fixed point: its 18-joint tick in 1.75 ms (6.5 ms in float)
 #define STRIDER_LEG_KINDS (1u << uint8_t(strider::LegKind::kCoxaFemurTibia))
 #define STRIDER_WALKER_SOLVERS 1  // one leg solver for its legs of one geometry
 #define STRIDER_BODY_SHIFT 0  // its gaits (tripod, ripple, wave) never shift the body

@@ -44,15 +44,8 @@ std::string firmware_dir() {
 
 bool is_hexapod(const std::string& model) { return model == "hexapod18"; }
 
-// The scalar the model's firmware computes in (CMake's list of fixed-point
-// firmwares, from the models' profiles).
-std::string firmware_scalar(const std::string& model) {
-  std::istringstream in(STRIDER_FIXED_FIRMWARES);
-  std::string m;
-  while (in >> m)
-    if (m == model) return "fixed";
-  return "float";
-}
+// The scalar every firmware computes in (src/firmware_main.h).
+constexpr const char* kFirmwareScalar = "fixed";
 
 // The session, one line per tick that sends something. Moving commands are
 // repeated every half second (the deadman stops a robot left without one for
@@ -158,7 +151,7 @@ bool record(const std::string& model, Trace* t, std::string* error) {
     if (tick >= kTicks) break;
     t->changes[tick][c.channel] = int(std::lround(c.width_us / tick_us));
   }
-  t->scalar = firmware_scalar(model);
+  t->scalar = kFirmwareScalar;
   return true;
 }
 
