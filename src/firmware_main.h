@@ -119,6 +119,7 @@ __attribute__((noinline)) void make_app() {
   new (&g_app_storage.app) App(strider::kZeroedStorage, kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
 }
 uint32_t g_next_tick_us = 0;
+uint32_t g_last_tick_us = 0;  // the last tick's scheduled time
 // The servo boards' check runs once per period, this long after the frame:
 // the frame's transfers are sent at their time, in one burst, and do not
 // share the bus with it (unless a tick ran past 14 ms: then it runs late).
@@ -264,6 +265,7 @@ void setup() {
   g_app.begin(micros(), g_link, g_servos.held() != 0 ? g_servos.outputs() : nullptr, g_servos.channels());
   wdt_reset();
   g_next_tick_us = micros();
+  g_last_tick_us = g_next_tick_us - strider::kTickPeriodUs;
 }
 
 void loop() {
@@ -274,7 +276,12 @@ void loop() {
   run_sonar();
   if (int32_t(now_us - g_next_tick_us) >= 0) {
     const uint32_t start_us = micros();
-    g_app.tick(start_us, g_link);
+    // The gait advances by the scheduled time since the last tick (a period,
+    // more after skipped ones), not by the measured one: the loop wakes on
+    // Timer0's overflow every 1.024 ms, and that jitter of the start would
+    // otherwise move the feet by a different amount every tick.
+    g_app.tick(start_us, g_link, g_next_tick_us - g_last_tick_us);
+    g_last_tick_us = g_next_tick_us;
     const uint32_t took = micros() - start_us;
     g_app.record_tick_time(took);
     g_next_tick_us += strider::kTickPeriodUs;

@@ -252,12 +252,16 @@ class RobotApp {
   //! One control tick (call every kTickPeriodUs): partial lines time out,
   //! controller (deadman, avoidance), walker, servo frame.
   template <typename Link>
-  void tick(uint32_t now_us, Link& link) {
+  //! period_us: the time the gait advances by, when the caller schedules the
+  //! ticks (the firmware: whole periods since the last tick's scheduled time,
+  //! so that the start's jitter does not move the gait); 0: the time since
+  //! the last tick.
+  void tick(uint32_t now_us, Link& link, uint32_t period_us = 0) {
     if (!ok_) return;
     const uint32_t now_ms = now_us / 1000u;
     tick_controller(now_us, now_ms, link);
     // Elapsed time, at most five ticks: a stalled loop must not make the gait leap.
-    uint32_t dt_us = elapsed(now_us, last_tick_us_);
+    uint32_t dt_us = period_us != 0 ? period_us : elapsed(now_us, last_tick_us_);
     last_tick_us_ = now_us;
     if (dt_us > 5 * kTickPeriodUs) dt_us = 5 * kTickPeriodUs;
     if (stage_.all_on() && motion_.sitting() && controller_.mode() != RobotMode::kRelaxed) motion_.stand_up();
