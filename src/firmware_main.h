@@ -5,18 +5,17 @@
 //
 // Included once per build, by the file of src/models/ that PlatformIO
 // (build_src_filter) or CMake (per target) picks, which first defines
-// STRIDER_FIRMWARE_MODEL (the model), STRIDER_LEG_KINDS (its leg kind) and,
-// for a quadruped, STRIDER_WALKER_LEGS 4 (robots/robot_model.h) and, when its
-// legs share a geometry, STRIDER_WALKER_SOLVERS (gait/walker.h): the model is
-// a compile-time constant here, only its leg type is compiled in, the
-// walking state has as many legs as the model and the walker as many leg
+// STRIDER_FIRMWARE_MODEL (the model) and, for a quadruped, STRIDER_WALKER_LEGS 4
+// (robots/robot_model.h) and, when its legs share a geometry,
+// STRIDER_WALKER_SOLVERS (gait/walker.h): the model is a compile-time constant
+// here, the walking state has as many legs as the model and the walker as many leg
 // solvers as the model has leg geometries. Every firmware computes in fixed
 // point (below).
 #ifndef STRIDER_FIRMWARE_MAIN_H
 #define STRIDER_FIRMWARE_MAIN_H
 
-#if !defined(STRIDER_FIRMWARE_MODEL) || !defined(STRIDER_LEG_KINDS)
-#error "include firmware_main.h from a file of src/models/ (STRIDER_FIRMWARE_MODEL, STRIDER_LEG_KINDS)"
+#if !defined(STRIDER_FIRMWARE_MODEL)
+#error "include firmware_main.h from a file of src/models/ (STRIDER_FIRMWARE_MODEL)"
 #endif
 #define STRIDER_VELOCITY_SEARCH 0  // the built-in models have stored velocity limits
 #define STRIDER_GAITS_IN_FLASH 1   // the gait tables stay in flash (gait_library.h)
@@ -45,7 +44,6 @@ constexpr const strider::RobotModel& kModel = STRIDER_FIRMWARE_MODEL;  // for co
 // configuration, and no RAM holds it (kModel itself is never read at run time).
 constexpr strider::RobotModel kModelInFlash PROGMEM = strider::without_leg_names(STRIDER_FIRMWARE_MODEL);
 constexpr uint8_t kBoards = strider::pca_board_count(kModel);
-static_assert(strider::kCompiledLegKinds == (1u << uint8_t(kModel.kind)), "STRIDER_LEG_KINDS: the model's leg kind alone");
 static_assert(strider::kWalkerLegs == kModel.leg_count, "STRIDER_WALKER_LEGS: the model's leg count");
 static_assert(strider::kWalkerSolvers == strider::leg_solver_count(kModel), "STRIDER_WALKER_SOLVERS: the model's leg_solver_count()");
 static_assert(strider::servo_tick_slots_fit(kModel),
@@ -76,7 +74,7 @@ constexpr strider::GaitConfig<Scalar> kGaitConfig PROGMEM =
 // The walker's legs, converted from the float model at compile time: the
 // start-up computes only their mounts' cos and sin.
 constexpr strider::WalkerLegs<Scalar> kWalkerLegs PROGMEM = strider::walker_legs<Scalar>(kModel);
-static_assert(kWalkerLegs.ok, "the model's legs fit the walker (STRIDER_WALKER_LEGS, STRIDER_WALKER_SOLVERS, STRIDER_LEG_KINDS)");
+static_assert(kWalkerLegs.ok, "the model's legs fit the walker (STRIDER_WALKER_LEGS, STRIDER_WALKER_SOLVERS)");
 
 // The servo stage's channels, likewise (a range per slot, kServoTickSlots).
 constexpr strider::JointChannels<Scalar, kModel.joint_count()> kJointChannels PROGMEM =

@@ -1,10 +1,7 @@
 // Entry point of the spider12 firmware (PlatformIO env:spider12, CMake strider_firmware_spider12):
-// the whole firmware, compiled for this model, its coxa-femur-tibia legs alone and four legs of walking state.
+// the whole firmware, compiled for this model and four legs of walking state.
 #define STRIDER_FIRMWARE_MODEL strider::kSpider12
-#define STRIDER_LEG_KINDS (1u << uint8_t(strider::LegKind::kCoxaFemurTibia))
 #define STRIDER_WALKER_LEGS 4  // walking state for four legs, not six
 #define STRIDER_WALKER_SOLVERS 1  // one leg solver for its legs of one geometry
 #define STRIDER_SERVO_TICK_SLOTS 3  // the servo tick map's ranges shared by the legs' joints
-#define STRIDER_SWING_SHAPES (1u << uint8_t(strider::SwingShape::kEllipse))  // its swing shape alone (ellipse)
-#define STRIDER_STANCE_DEPTH 0  // no stance depth (its gait defaults)
 #include "../firmware_main.h"

@@ -22,7 +22,7 @@
 #define STRIDER_GAIT_BODY_SHIFT_H
 
 #include "../math/flash_table.h"
-#include "gait_table.h"  // STRIDER_BODY_SHIFT
+#include "gait_table.h"
 #include "stability.h"
 
 namespace strider {

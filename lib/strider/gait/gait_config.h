@@ -5,7 +5,7 @@
 #define STRIDER_GAIT_GAIT_CONFIG_H
 
 #include "gait_params.h"
-#include "stance.h"  // STRIDER_STANCE_DEPTH
+#include "stance.h"
 #include "stored_velocity_limits.h"
 #include "velocity_limits.h"
 
@@ -68,19 +68,6 @@ enum class LimitsSource : uint8_t {
 };
 
 namespace gait_config_detail {
-//! Not a constant expression: a constant configuration with a swing shape
-//! that is not built in (STRIDER_SWING_SHAPES) fails to compile.
-inline void swing_shape_not_built() {}
-constexpr SwingShape built_swing_shape(SwingShape shape) {
-  return swing_shape_built(shape) ? shape : (swing_shape_not_built(), shape);
-}
-//! Not a constant expression: a constant configuration with a stance depth
-//! that is not built in (STRIDER_STANCE_DEPTH 0) fails to compile.
-inline void stance_depth_not_built() {}
-template <typename S>
-constexpr S built_stance_depth(S depth_mm) {
-  return STRIDER_STANCE_DEPTH || depth_mm == S(0) ? depth_mm : (stance_depth_not_built(), depth_mm);
-}
 template <typename S>
 constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
 //! The largest |x| or |y| of the standing feet [mm].
@@ -103,9 +90,9 @@ constexpr void set_speeds(GaitConfig<S>& c) {
 template <typename S>
 constexpr void set_params(GaitConfig<S>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
                           S reach) {
-  c.shape = built_swing_shape(shape);
+  c.shape = shape;
   c.step_height_mm = scalar<S>(params.step_height_mm);
-  c.stance_depth_mm = built_stance_depth(scalar<S>(params.stance_depth_mm));
+  c.stance_depth_mm = scalar<S>(params.stance_depth_mm);
   c.foot_radius_mm = scalar<S>(params.foot_radius_mm);
   c.com_x_mm = scalar<S>(params.com_x_mm);
   c.com_y_mm = scalar<S>(params.com_y_mm);

@@ -194,7 +194,7 @@ class GaitEngine {
   static constexpr double edge_share() { return kEdgeShare; }
   //! The gait as walked: gait() relabelled for the direction of travel
   //! (rebuilt on each call: the engine keeps the offsets only as phases).
-  GaitTable table() const { return STRIDER_GAIT_RELABEL && relabel_ ? gait_table::relabeled(base_, quarter_) : base_; }
+  GaitTable table() const { return relabel_ ? gait_table::relabeled(base_, quarter_) : base_; }
   //! The gait as given to configure() or set_gait() (table() may be relabelled).
   const GaitTable& gait() const { return base_; }
   const GaitConfig<S>& config() const { return cfg_; }
@@ -214,7 +214,7 @@ class GaitEngine {
   static Phase16 table_phase(float offset, float);
   static Phase16 table_phase(float offset, Fixed);
 
-  S budget() const { return STRIDER_BODY_SHIFT && base_.shift_body ? cfg_.shift_budget_mm : S(0); }
+  S budget() const { return base_.shift_body ? cfg_.shift_budget_mm : S(0); }
 
   //! A command as a stride per cycle (so that a foot's travel over a stance
   //! depends on the phase only, not on how the step rate changes meanwhile)
@@ -320,9 +320,7 @@ class GaitEngine {
   //! step_lift()'s lift-off of foot i (out of line: the loop over the legs
   //! keeps its registers; the touch-down point is written in place).
   STRIDER_NOINLINE void lift_foot(uint8_t i, bool crossed);
-#if STRIDER_BODY_SHIFT
   void step_shift(S dt);
-#endif
   void update_margin() const;
   //! The support polygon of the feet down now (stability.h), built when
   //! first needed after a lift-off or touch-down: gaits that do not shift
@@ -346,17 +344,13 @@ class GaitEngine {
       : cfg_(z), cmd_vx_(z), cmd_vy_(z), cmd_wz_(z), to_{z, z, z, z, false}, from_s_{z, z, z, z},
         to_s_{z, z, z, z}, now_s_{z, z, z, z}, land_s_{z, z, z, z}, vx_(z), vy_(z), wz_(z), clock_(z),
         support_(z),
-#if STRIDER_BODY_SHIFT
         next_support_(z),
-#endif
         odo_dx_(z), odo_dy_(z), odo_wx_(z), odo_wy_(z), shift_(z), window_inv_(z), pose_{z, z, z, z},
         goal_pose_{z, z, z, z}, margin_(z), step_cache_{z, {z, z, z, z, z}}, td_sin_(z), td_dx_(z), td_dy_(z),
         odo_x_(z), odo_y_(z), odo_yaw_(z), odo_s_(z) {}
   GaitEngine(ZeroedStorage z, ZeroedFor<float>)
       : cfg_(z), clock_(z), support_(z),
-#if STRIDER_BODY_SHIFT
         next_support_(z),
-#endif
         shift_(z) {}
 
   // Members without a default here are set by the constructors (zero),
@@ -398,9 +392,7 @@ class GaitEngine {
 
   mutable SupportPolygon<S> support_;
   mutable bool support_dirty_ = true;
-#if STRIDER_BODY_SHIFT
   SupportPolygon<S> next_support_;
-#endif
   // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
   union { S edge_r2_[kWalkerLegs]; };
   bool settled_[kWalkerLegs];  // swinging foot's touch-down point already at touchdown_xy(i)

@@ -86,7 +86,7 @@ template <typename S>
 void GaitEngine<S>::set_gait(const GaitTable& gait) {
   const S old_duty = duty_;
   base_ = gait;
-  load_table(STRIDER_GAIT_RELABEL && relabel_ ? gait_table::relabeled(gait, quarter_) : gait);
+  load_table(relabel_ ? gait_table::relabeled(gait, quarter_) : gait);
   // Keep each stance's travel (stride per cycle x duty): with a longer
   // duty the body slows at once, with a shorter one the step rate drops;
   // either way nothing moves faster, then the ramp goes to the new plan.
@@ -114,7 +114,7 @@ void GaitEngine<S>::load_table(const GaitTable& t) {
   // Start just before the first lift-off, or at the four-foot window
   // before it when the body must shift first.
   start_phase_ =
-      STRIDER_BODY_SHIFT && t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
+      t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
 }
 
 //! The table's duty in the engine's units: float through double (the host),
@@ -147,7 +147,7 @@ Phase16 GaitEngine<S>::table_phase(float offset, Fixed) {
 //! no faster than the acceleration limits at the faster of the two rates.
 template <typename S>
 void GaitEngine<S>::replan() {
-  to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), STRIDER_BODY_SHIFT && base_.shift_body);
+  to_ = cfg_.limits.plan(cfg_.home, cmd_vx_, cmd_vy_, cmd_wz_, duty_, budget(), base_.shift_body);
   const S inv = S(1) / to_.step_hz;
   to_s_ = Stride{to_.vx_mm_s * inv, to_.vy_mm_s * inv, to_.wz_rad_s * inv, to_.step_hz};
   from_s_ = now_s_;
@@ -163,7 +163,7 @@ void GaitEngine<S>::replan() {
 
 template <typename S>
 void GaitEngine<S>::start_walking() {
-  const bool relabel = STRIDER_GAIT_RELABEL && base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
+  const bool relabel = base_.relabel_by_direction && (to_.vx_mm_s != S(0) || to_.vy_mm_s != S(0));
   int8_t quarter = 0;
   if (relabel) {
     // The quadrant of the direction of travel (seed 000 section 3.3).

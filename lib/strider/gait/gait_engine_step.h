@@ -55,7 +55,7 @@ void GaitEngine<S>::step_walk(S dt) {
   bool changed = step_ground(step, dt);
   if (step_lift(edge)) changed = true;
   step_swing(dt);
-  if (STRIDER_STANCE_DEPTH && cfg_.stance_depth_mm != S(0)) {
+  if (cfg_.stance_depth_mm != S(0)) {
     for (uint8_t i = 0; i < n; ++i) {
       if (!contact_[i]) continue;
       const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
@@ -63,10 +63,8 @@ void GaitEngine<S>::step_walk(S dt) {
     }
   }
   if (changed) support_dirty_ = true;
-#if STRIDER_BODY_SHIFT
   // A gait without body shift and no shift left (a trot, a tripod): nothing to move, no call.
   if (base_.shift_body || shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) step_shift(dt);
-#endif
 
   if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
   if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
@@ -154,7 +152,7 @@ void GaitEngine<S>::lift_foot(uint8_t i, bool crossed) {
   t.z = cfg_.home[i].z;
   settled_[i] = true;
   // Only the semicircle's apex depends on the step's length (a square root).
-  apex_[i] = swing_shape_built(SwingShape::kSemicircle) && cfg_.shape == SwingShape::kSemicircle
+  apex_[i] = cfg_.shape == SwingShape::kSemicircle
                  ? swing_apex_mm(cfg_.shape, hypot(t.x - lift_[i].x, t.y - lift_[i].y), cfg_.step_height_mm)
                  : cfg_.step_height_mm;
 }
@@ -189,7 +187,7 @@ void GaitEngine<S>::step_swing(S dt) {
     // A foot that lifted from the ground line (no stance depth) keeps its
     // height but for the lift: no product for the zero difference (without
     // the stance depth built in, every foot lifts from there).
-    const S dz = STRIDER_STANCE_DEPTH ? sub_inline(cfg_.home[i].z, lift_[i].z) : S(0);
+    const S dz = sub_inline(cfg_.home[i].z, lift_[i].z);
     foot_[i].x = add_inline(lift_[i].x, sub_inline(target_[i].x, lift_[i].x) * sp.u);
     foot_[i].y = add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u);
     foot_[i].z = add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift);
@@ -217,7 +215,6 @@ void GaitEngine<S>::settle_target(uint8_t i, S max_step) {
   settled_[i] = t.x == wx && t.y == wy;
 }
 
-#if STRIDER_BODY_SHIFT
 template <typename S>
 void GaitEngine<S>::step_shift(S dt) {
   if (!base_.shift_body) {  // relabelling keeps it
@@ -286,7 +283,6 @@ void GaitEngine<S>::step_shift(S dt) {
   const S b = cfg_.shift_budget_mm;
   shift_.step_toward(clamp(tx, -b, b), clamp(ty, -b, b), max_step);
 }
-#endif  // STRIDER_BODY_SHIFT
 
 template <typename S>
 void GaitEngine<S>::update_margin() const {

@@ -80,29 +80,6 @@ static_assert(gait_table::keeps_support(kGaitTripod, 3) && gait_table::keeps_sup
 static_assert(gait_table::swings_separated(kGaitWalk) && gait_table::swings_separated(kGaitCrawl),
               "body-shifting gaits need separated swings");
 
-//! True when a gait of a `leg_count`-legged robot shifts the body (the
-//! quadrupeds' walk and crawl; no hexapod gait).
-constexpr bool gaits_shift_body(uint8_t leg_count) {
-  return leg_count == 4 ? kGaitWalk.shift_body || kGaitTrot.shift_body || kGaitPace.shift_body || kGaitCrawl.shift_body
-         : leg_count == 6 ? kGaitTripod.shift_body || kGaitRipple.shift_body || kGaitWave.shift_body
-                          : false;
-}
-//! True when a gait of a `leg_count`-legged robot relabels its legs for the
-//! direction of travel (the quadrupeds' walk and crawl; no hexapod gait).
-constexpr bool gaits_relabel(uint8_t leg_count) {
-  return leg_count == 4 ? kGaitWalk.relabel_by_direction || kGaitTrot.relabel_by_direction ||
-                              kGaitPace.relabel_by_direction || kGaitCrawl.relabel_by_direction
-         : leg_count == 6 ? kGaitTripod.relabel_by_direction || kGaitRipple.relabel_by_direction ||
-                                kGaitWave.relabel_by_direction
-                          : false;
-}
-#if !STRIDER_GAIT_RELABEL
-static_assert(!gaits_relabel(kWalkerLegs), "STRIDER_GAIT_RELABEL 0: the walker's leg count has a gait that relabels its legs");
-#endif
-#if !STRIDER_BODY_SHIFT
-static_assert(!gaits_shift_body(kWalkerLegs), "STRIDER_BODY_SHIFT 0: the walker's leg count has a gait that shifts the body");
-#endif
-
 //! The gaits of one leg count.
 struct GaitList {
   const GaitTable* const* items;

@@ -19,25 +19,6 @@
 
 #include "../robots/robot_model.h"
 
-//! STRIDER_BODY_SHIFT 0: the gait engine is built without its body shift
-//! (GaitEngine::step_shift() and the support polygon of the next swing), for
-//! a firmware whose robot has no gait that shifts the body: a hexapod's gaits
-//! (gait_library.h) never do, and gait_library.h checks that the walker's
-//! leg count gets none. Default 1. The margin (margin_mm()) stays.
-#ifndef STRIDER_BODY_SHIFT
-#define STRIDER_BODY_SHIFT 1
-#endif
-
-//! STRIDER_GAIT_RELABEL 0: the gait engine is built without relabelling the
-//! legs for the direction of travel (GaitTable::relabel_by_direction), for a
-//! firmware whose robot has no gait that asks for it: a hexapod's gaits
-//! (gait_library.h) never do (and relabeled() leaves a 6-leg table as it
-//! is), and gait_library.h checks that the walker's leg count gets none.
-//! Default 1.
-#ifndef STRIDER_GAIT_RELABEL
-#define STRIDER_GAIT_RELABEL 1
-#endif
-
 namespace strider {
 
 //! Longest gait name, its terminating zero included.

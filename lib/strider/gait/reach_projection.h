@@ -44,10 +44,8 @@ struct ReachProjection {
   //! True for the kinds whose reachable set is a surface.
   bool projects() const { return sprawl() || planar(); }
 
-  // The kind, known false when it is not compiled in (STRIDER_LEG_KINDS):
-  // a 3-DOF firmware builds no projection.
-  bool sprawl() const { return leg_kind_compiled(LegKind::kSprawl) && kind == LegKind::kSprawl; }
-  bool planar() const { return leg_kind_compiled(LegKind::kPlanar) && kind == LegKind::kPlanar; }
+  bool sprawl() const { return kind == LegKind::kSprawl; }
+  bool planar() const { return kind == LegKind::kPlanar; }
 
   //! The target [mm, leg frame] moved onto the reachable set; moved_mm gets
   //! the distance it moved (0 for 3-DOF legs).

@@ -15,14 +15,6 @@
 
 #include "../math/vec3.h"
 
-//! STRIDER_STANCE_DEPTH 0: the stance depth is not built in (feet on the
-//! ground stay on the ground line), for a firmware whose model has none
-//! (gait_params.h: every built-in model); gait_config.h refuses to build a
-//! constant configuration with a depth then. Default 1.
-#ifndef STRIDER_STANCE_DEPTH
-#define STRIDER_STANCE_DEPTH 1
-#endif
-
 namespace strider {
 
 //! cos and sin of a small angle [rad] by their Taylor series to the 5th

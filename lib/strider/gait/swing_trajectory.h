@@ -46,17 +46,6 @@ enum class SwingShape : uint8_t {
 
 constexpr uint8_t kSwingShapeCount = 6;
 
-//! The swing shapes built in: a mask of 1 << SwingShape, all by default. A
-//! firmware, whose model's shape is a constant of its build (its stored gait
-//! configuration), sets its model's shape alone (src/models/): the others'
-//! code is left out, and gait_config.h refuses to build a constant
-//! configuration with a shape that is not built in. The ellipse's formula
-//! stays (the semicircle's too, and the fallback of a shape left out).
-#ifndef STRIDER_SWING_SHAPES
-#define STRIDER_SWING_SHAPES ((1u << kSwingShapeCount) - 1u)
-#endif
-constexpr bool swing_shape_built(SwingShape shape) { return ((STRIDER_SWING_SHAPES) >> uint8_t(shape)) & 1u; }
-
 inline const char* to_string(SwingShape shape) {
   switch (shape) {
     case SwingShape::kRectangle: return "rectangle";
@@ -133,22 +122,18 @@ SwingPoint<S> swing_point(SwingShape shape, S s) {
   constexpr S k_pi = pi<S>(), k_two_pi = two_pi<S>();
   switch (shape) {
     case SwingShape::kRectangle: {
-      if (!swing_shape_built(SwingShape::kRectangle)) break;
       const S three_s = s * S(3);
       if (three_s < one) return SwingPoint<S>{S(0), three_s};
       if (three_s < S(2)) return SwingPoint<S>{three_s - one, one};
       return SwingPoint<S>{one, S(3) - three_s};
     }
     case SwingShape::kCycloid: {
-      if (!swing_shape_built(SwingShape::kCycloid)) break;
       const S a = k_two_pi * s;
       return SwingPoint<S>{s - sin(a) * inv_two_pi, swing_detail::half_of(one - cos(a))};
     }
     case SwingShape::kParabola:
-      if (!swing_shape_built(SwingShape::kParabola)) break;
       return SwingPoint<S>{s, S(4) * s * (one - s)};
     case SwingShape::kBezier:
-      if (!swing_shape_built(SwingShape::kBezier)) break;
       return swing_detail::bezier(s);
     case SwingShape::kSemicircle:
     case SwingShape::kEllipse: break;
@@ -162,7 +147,7 @@ SwingPoint<S> swing_point(SwingShape shape, S s) {
 template <typename S>
 S swing_apex_mm(SwingShape shape, S stride_mm, S step_mm) {
   constexpr S half = scalar<S>(0.5);
-  if (!swing_shape_built(SwingShape::kSemicircle) || shape != SwingShape::kSemicircle) return step_mm;
+  if (shape != SwingShape::kSemicircle) return step_mm;
   return clamp(stride_mm * half, step_mm * half, step_mm);
 }
 

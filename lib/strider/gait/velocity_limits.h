@@ -38,7 +38,7 @@
 
 #include "../kinematics/any_leg.h"
 #include "../math/flash_table.h"
-#include "gait_table.h"  // STRIDER_BODY_SHIFT
+#include "gait_table.h"
 #include "reach_projection.h"
 #include "swing_trajectory.h"
 #include "velocity_limit_encoding.h"
@@ -195,8 +195,8 @@ struct VelocityLimits {
       const S r = hypot(rx, ry) * duty;
       if (r == S(0)) continue;
       S room = leg_stride(i, rx, ry, budget_mm);
-      // Only body-shifting gaits keep the stride (none without STRIDER_BODY_SHIFT).
-      if (STRIDER_BODY_SHIFT && keep_stride) room = smaller(room, preferred_stride_mm);
+      // Only body-shifting gaits keep the stride.
+      if (keep_stride) room = smaller(room, preferred_stride_mm);
       lo = room > S(0) ? larger(lo, r / room) : scalar<S>(1000.0);
       fastest = larger(fastest, r);
     }

@@ -224,9 +224,7 @@ class Walker {
   //! when the fast IK does not take it.
   STRIDER_NOINLINE void solve_leg(uint8_t i, LegResult<S>& r, LegScratch<S>& scratch, bool projects) {
     const Vec3<S> leg_target = to_leg_unchecked(i, target_of(r, scratch));
-    // A build without the 2-DOF kinds (STRIDER_LEG_KINDS) knows that no leg projects.
-    constexpr bool kCanProject = leg_kind_compiled(LegKind::kSprawl) || leg_kind_compiled(LegKind::kPlanar);
-    if (!kCanProject || !projects) {  // 3-DOF legs: the target as it is, nothing can slide
+    if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
       // The point reached (leg frame) goes into foot, which the IK
       // leaves alone when it is unreachable, and is then replaced by its
       // body-frame point: no local to clear and copy.

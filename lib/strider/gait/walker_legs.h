@@ -181,13 +181,13 @@ struct WalkerLegs {
   ReachProjection<S> proj;
   uint8_t leg_count;
   uint8_t dof;
-  bool ok;  // the model fits this build's walker (kWalkerLegs, kWalkerSolvers) and its leg kinds
+  bool ok;  // the model fits this build's walker (kWalkerLegs, kWalkerSolvers)
 };
 template <typename S>
 constexpr WalkerLegs<S> walker_legs(const RobotModel& model) {
   return WalkerLegs<S>{walker_detail::LegSolvers<S>::constant(model), ReachProjection<S>::make(model), model.leg_count,
                        model.dof(),
-                       walker_detail::LegSolvers<S>::fits(model) && leg_kind_compiled(model.kind)};
+                       walker_detail::LegSolvers<S>::fits(model)};
 }
 
 }  // namespace strider

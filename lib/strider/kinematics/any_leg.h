@@ -36,10 +36,9 @@ class AnyLeg {
   }
 
   //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S).
-  //! Returns false and leaves `out` alone when index >= model.leg_count or
-  //! the model's leg kind is not compiled in (STRIDER_LEG_KINDS).
+  //! Returns false and leaves `out` alone when index >= model.leg_count.
   static bool from_model(const RobotModel& model, uint8_t index, AnyLeg& out) {
-    if (index >= model.leg_count || index >= kMaxLegs || !leg_kind_compiled(model.kind)) return false;
+    if (index >= model.leg_count || index >= kMaxLegs) return false;
     const LegModel& lm = model.legs[index];
     AnyLeg leg;
     leg.kind_ = model.kind;
@@ -49,18 +48,17 @@ class AnyLeg {
     const S l3 = scalar<S>(model.links.l3_mm), d1 = scalar<S>(model.links.d1_mm);
     switch (model.kind) {
       case LegKind::kSprawl:
-        if (on(LegKind::kSprawl)) leg.legs_.sprawl = SprawlLeg<S>::make(l1, l2, limits_of<2>(lm));
+        leg.legs_.sprawl = SprawlLeg<S>::make(l1, l2, limits_of<2>(lm));
         break;
       case LegKind::kPlanar:
-        if (on(LegKind::kPlanar)) leg.legs_.planar = PlanarLeg<S>::make(l1, l2, limits_of<2>(lm));
+        leg.legs_.planar = PlanarLeg<S>::make(l1, l2, limits_of<2>(lm));
         break;
       case LegKind::kCoxaFemurTibia:
-        if (on(LegKind::kCoxaFemurTibia)) leg.legs_.cft = CoxaFemurTibiaLeg<S>::make(d1, l1, l2, l3, limits_of<3>(lm));
+        leg.legs_.cft = CoxaFemurTibiaLeg<S>::make(d1, l1, l2, l3, limits_of<3>(lm));
         break;
       case LegKind::kAbduction:
-        if (on(LegKind::kAbduction))
-          leg.legs_.abduction = AbductionLeg<S>::make(
-              l1, l2, l3, limits_of<3>(lm), lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight);
+        leg.legs_.abduction = AbductionLeg<S>::make(
+            l1, l2, l3, limits_of<3>(lm), lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight);
         break;
     }
     out = leg;
@@ -71,11 +69,9 @@ class AnyLeg {
   //! conversions, evaluated at compile time, but for the mount's cos and
   //! sin, which are left 0 (cos() and sin() are not constant expressions):
   //! mounted() gives them at run time, and the result is from_model()'s leg
-  //! bit for bit. A leg kind that is not compiled in (or index past the
-  //! legs) gives the default leg.
+  //! bit for bit. An index past the legs gives the default leg.
   static constexpr AnyLeg constant(const RobotModel& model, uint8_t index) {
-    return index >= model.leg_count || index >= kMaxLegs || !leg_kind_compiled(model.kind)
-               ? AnyLeg(LegKind::kSprawl, BodySide::kLeft, LegMount<S>{Vec3<S>(), S(0), S(0), S(0)}, Legs())
+    return index >= model.leg_count || index >= kMaxLegs ? AnyLeg(LegKind::kSprawl, BodySide::kLeft, LegMount<S>{Vec3<S>(), S(0), S(0), S(0)}, Legs())
                : AnyLeg(model.kind, model.legs[index].side,
                         LegMount<S>{vec_of(model.legs[index].mount_mm),
                                     deg_to_rad<S>(model.legs[index].mount_yaw_deg), S(0), S(0)},
@@ -102,16 +98,16 @@ class AnyLeg {
     for (uint8_t j = 0; j < kMaxDof; ++j) l.lo[j] = l.hi[j] = S(0);
     switch (kind_) {
       case LegKind::kSprawl:
-        if (on(LegKind::kSprawl)) copy_limits(legs_.sprawl.limits, l);
+        copy_limits(legs_.sprawl.limits, l);
         break;
       case LegKind::kPlanar:
-        if (on(LegKind::kPlanar)) copy_limits(legs_.planar.limits, l);
+        copy_limits(legs_.planar.limits, l);
         break;
       case LegKind::kCoxaFemurTibia:
-        if (on(LegKind::kCoxaFemurTibia)) copy_limits(legs_.cft.limits, l);
+        copy_limits(legs_.cft.limits, l);
         break;
       case LegKind::kAbduction:
-        if (on(LegKind::kAbduction)) copy_limits(legs_.abduction.limits, l);
+        copy_limits(legs_.abduction.limits, l);
         break;
     }
     return l;
@@ -129,16 +125,16 @@ class AnyLeg {
   Vec3<S> fk(const Joints& q) const {
     switch (kind_) {
       case LegKind::kSprawl:
-        if (on(LegKind::kSprawl)) return legs_.sprawl.fk(narrow<2>(q));
+        return legs_.sprawl.fk(narrow<2>(q));
         break;
       case LegKind::kPlanar:
-        if (on(LegKind::kPlanar)) return legs_.planar.fk(narrow<2>(q));
+        return legs_.planar.fk(narrow<2>(q));
         break;
       case LegKind::kCoxaFemurTibia:
-        if (on(LegKind::kCoxaFemurTibia)) return legs_.cft.fk(narrow<3>(q));
+        return legs_.cft.fk(narrow<3>(q));
         break;
       case LegKind::kAbduction:
-        if (on(LegKind::kAbduction)) return legs_.abduction.fk(narrow<3>(q));
+        return legs_.abduction.fk(narrow<3>(q));
         break;
     }
     return Vec3<S>();
@@ -150,16 +146,16 @@ class AnyLeg {
               const IkOptions<S>& opt = IkOptions<S>()) const {
     switch (kind_) {
       case LegKind::kSprawl:
-        if (on(LegKind::kSprawl)) return solve(legs_.sprawl, target, q, reached, opt);
+        return solve(legs_.sprawl, target, q, reached, opt);
         break;
       case LegKind::kPlanar:
-        if (on(LegKind::kPlanar)) return solve(legs_.planar, target, q, reached, opt);
+        return solve(legs_.planar, target, q, reached, opt);
         break;
       case LegKind::kCoxaFemurTibia:
-        if (on(LegKind::kCoxaFemurTibia)) return solve(legs_.cft, target, q, reached, opt);
+        return solve(legs_.cft, target, q, reached, opt);
         break;
       case LegKind::kAbduction:
-        if (on(LegKind::kAbduction)) return solve(legs_.abduction, target, q, reached, opt);
+        return solve(legs_.abduction, target, q, reached, opt);
         break;
     }
     return IkStatus::kUnreachable;
@@ -179,7 +175,7 @@ class AnyLeg {
   //! share one solver and keep their own mounts).
   STRIDER_ALWAYS_INLINE bool ik_body_fast(const LegMount<S>& mount, const Vec3<S>& target_body, Joints& q,
                                           const IkOptions<S>& opt) const {
-    return kind_ == LegKind::kCoxaFemurTibia && on(LegKind::kCoxaFemurTibia) && !(opt.max_clamp_mm < S(0)) &&
+    return kind_ == LegKind::kCoxaFemurTibia && !(opt.max_clamp_mm < S(0)) &&
            body_fast(legs_.cft, mount, target_body, q);
   }
 
@@ -196,8 +192,6 @@ class AnyLeg {
   }
 
  private:
-  // A kind not compiled in is never built, so its cases are dead code.
-  static constexpr bool on(LegKind kind) { return leg_kind_compiled(kind); }
   template <uint8_t N>
   static constexpr JointLimits<S, N> limits_of(const LegModel& lm) {
     JointLimits<S, N> l{};
@@ -244,26 +238,6 @@ class AnyLeg {
     return s;
   }
 
-  // A leg type not compiled in (STRIDER_LEG_KINDS): only the interface its
-  // dead cases name (they never run), and no larger than any leg type.
-  template <typename Leg>
-  struct Absent {
-    static constexpr uint8_t kDof = Leg::kDof;
-    using Joints = typename Leg::Joints;
-    constexpr Absent() : limits() {}
-    constexpr explicit Absent(const Leg&) : limits() {}
-    JointLimits<S, kDof> limits;
-    Absent& operator=(const Leg&) { return *this; }
-    Vec3<S> fk(const Joints&) const { return Vec3<S>(); }
-    IkStatus ik(const Vec3<S>&, Joints&, Vec3<S>&, const IkOptions<S>&) const { return IkStatus::kUnreachable; }
-  };
-  template <bool kOn, typename A, typename B>
-  struct Select { using type = A; };
-  template <typename A, typename B>
-  struct Select<false, A, B> { using type = B; };
-  template <LegKind kKind, typename Leg>
-  using Slot = typename Select<leg_kind_compiled(kKind), Leg, Absent<Leg> >::type;
-
   // ik_body_fast(): Fixed coxa/femur/tibia legs only. The offset from the
   // mount in scalars and Fixed's differences in place (a Vec3 difference is
   // an out-of-line call on the AVR).
@@ -277,10 +251,6 @@ class AnyLeg {
     const Vec3<Fixed> d(sub_inline(p.x, m.origin_mm.x), sub_inline(p.y, m.origin_mm.y), sub_inline(p.z, m.origin_mm.z));
     return leg_ik::cft_solve_turned(leg, d, m.yaw_rad, q);
   }
-  template <typename Leg>
-  static bool body_fast(const Absent<Leg>&, const LegMount<Fixed>&, const Vec3<Fixed>&, Joints&) {
-    return false;
-  }
 
   // One leg of the four kinds; kind_ says which member is live. The
   // constructor is needed because Fixed has a non-trivial default constructor.
@@ -293,10 +263,10 @@ class AnyLeg {
     constexpr Legs(const PlanarLeg<S>& l, KindTag<LegKind::kPlanar>) : planar(l) {}
     constexpr Legs(const CoxaFemurTibiaLeg<S>& l, KindTag<LegKind::kCoxaFemurTibia>) : cft(l) {}
     constexpr Legs(const AbductionLeg<S>& l, KindTag<LegKind::kAbduction>) : abduction(l) {}
-    Slot<LegKind::kSprawl, SprawlLeg<S> > sprawl;
-    Slot<LegKind::kPlanar, PlanarLeg<S> > planar;
-    Slot<LegKind::kCoxaFemurTibia, CoxaFemurTibiaLeg<S> > cft;
-    Slot<LegKind::kAbduction, AbductionLeg<S> > abduction;
+    SprawlLeg<S> sprawl;
+    PlanarLeg<S> planar;
+    CoxaFemurTibiaLeg<S> cft;
+    AbductionLeg<S> abduction;
   };
 
   constexpr AnyLeg(LegKind kind, BodySide side, const LegMount<S>& mount, const Legs& legs)

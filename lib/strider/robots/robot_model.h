@@ -31,17 +31,6 @@ enum class LegKind : uint8_t {
   kAbduction = 3        //!< AbductionLeg: abduction t1, hip t2, knee t3 (seed 001)
 };
 
-//! The leg kinds a build compiles in, one bit (1 << LegKind) each: all four
-//! by default. A firmware for one model defines it, before any Strider
-//! header, as its model's kind alone; then only that leg type's solver and
-//! helpers are built (flash) and AnyLeg::from_model() refuses a model of
-//! another kind.
-#ifndef STRIDER_LEG_KINDS
-#define STRIDER_LEG_KINDS 0xFu
-#endif
-constexpr uint8_t kCompiledLegKinds = uint8_t(STRIDER_LEG_KINDS);
-constexpr bool leg_kind_compiled(LegKind kind) { return ((kCompiledLegKinds >> uint8_t(kind)) & 1u) != 0; }
-
 //! Joints per leg of a kind.
 constexpr uint8_t dof_of(LegKind kind) {
   return (kind == LegKind::kSprawl || kind == LegKind::kPlanar) ? 2 : 3;

@@ -17,9 +17,6 @@
 // direction, limits, pulse range of the servo part) to PCA9685 ticks, and one
 // setPWM() per servo.
 
-// Build only the coxa-femur-tibia solver (the model's leg type): less flash.
-#define STRIDER_LEG_KINDS (1u << uint8_t(strider::LegKind::kCoxaFemurTibia))
-
 #include <Adafruit_PWMServoDriver.h>
 #include <Wire.h>
 #include <strider.h>
