@@ -405,7 +405,7 @@ class CliTest(unittest.TestCase):
     def test_send_err_exit_status(self):
         rc, out = self.run_cli("send", "walk 1000")
         self.assertEqual(rc, cli.EXIT_ERR_REPLY)
-        self.assertEqual(out.strip(), "err 5 out of range")
+        self.assertEqual(out.strip(), "err 5 out of range: walk -500..500")
 
     def test_send_options_after_the_command(self):
         out = io.StringIO()
