@@ -201,7 +201,7 @@ TEST(CommandParser, ErrorRepliesNameTheValidValues) {
       {"height 9", "err 5 out of range: height 10..400"},
       {"deadman 0", "err 5 out of range: deadman 1..60000, off only as a checked line"},
       {"deadman off 1", "err 4 too many arguments: deadman 1..60000, off only as a checked line"},
-      {"deadman off", "err 11 checksum required: $deadman off*cb77"},
+      {"deadman off", "err 11 checksum required: $deadman off*cb77, a checked line"},
       {"baud 300", "err 5 out of range: baud 9600 19200 38400 57600 115200"},
       {"stop now", "err 4 too many arguments: none after the command word"},
       {"cal show 1", "err 4 too many arguments: none after the command word"},
@@ -222,6 +222,9 @@ TEST(CommandParser, ErrorRepliesNameTheValidValues) {
     std::string want = c.reply;
     if (want.back() == ' ') want += all;
     EXPECT_EQ(error_reply(c.line), want) << c.line;
+    // A reply that ended in `*hhhh` would read as a checked reply to a client.
+    const size_t star = want.rfind('*');
+    EXPECT_FALSE(star != std::string::npos && star + 5 == want.size()) << want;
   }
   // Without the model's gaits the reply keeps the placeholder.
   const auto ev = one_line("gait\n");

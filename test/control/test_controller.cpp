@@ -132,7 +132,7 @@ TEST(Controller, DeadmanStopsSilentLink) {
   auto replies = r.send("deadman 0\ndeadman off\nwalk 50\n");
   ASSERT_EQ(replies.size(), 3u);
   EXPECT_EQ(replies[0], "err 5 out of range: deadman 1..60000, off only as a checked line");
-  EXPECT_EQ(replies[1], "err 11 checksum required: $deadman off*cb77");
+  EXPECT_EQ(replies[1], "err 11 checksum required: $deadman off*cb77, a checked line");
   r.run_ms(1100);
   EXPECT_EQ(r.ctl->mode(), RobotMode::kStanding);
   replies = r.send("$deadman off*cb77\nwalk 50\n");

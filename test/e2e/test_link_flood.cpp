@@ -376,7 +376,7 @@ TEST(LinkChecked, DeadmanOffNeedsTheDeliberateForm) {
   ASSERT_TRUE(b.boot(&error)) << error;
   ASSERT_TRUE(b.run_for(4000000));
   EXPECT_EQ(b.command(1, "deadman 0"), "err 5 out of range: deadman 1..60000, off only as a checked line");
-  EXPECT_EQ(b.command(1, "deadman off"), "err 11 checksum required: $deadman off*cb77");
+  EXPECT_EQ(b.command(1, "deadman off"), "err 11 checksum required: $deadman off*cb77, a checked line");
   EXPECT_EQ(b.command(1, checked("deadman 0")),
             reply_checked("err 5 out of range: deadman 1..60000, off only as a checked line"));
   EXPECT_EQ(b.status(1)["deadman_ms"], "1000");

@@ -91,6 +91,8 @@ class ProtocolTest(unittest.TestCase):
         self.assertEqual(r.code, 5)
         self.assertEqual(r.reason, "out of range")
         self.assertEqual(protocol.ERROR_CODES[r.code], r.reason)
+        r = protocol.parse_reply("err 23 unknown gait: walk trot pace crawl")
+        self.assertEqual((r.code, r.reason, r.valid), (23, "unknown gait", "walk trot pace crawl"))
 
     def test_kinds(self):
         self.assertEqual(protocol.kind_of("info deadman stop"), "info")
@@ -401,6 +403,17 @@ class CliTest(unittest.TestCase):
         rc, out = self.run_cli("send", "--raw", r"speed 42\n")
         self.assertEqual((rc, out.strip()), (0, "ok speed pct=42"))
         self.assertEqual(self.robot.checked, [True, False, False])
+
+    def test_rising_reads_the_status(self):
+        from robotctl.link import rising, status_fields
+        f = status_fields("ok status mode=standing speed=50 gait=trot state=standing_up servos=on pca9685=ok")
+        self.assertEqual((f["mode"], f["state"], f["servos"]), ("standing", "standing_up", "on"))
+        self.assertTrue(rising(f))
+        self.assertTrue(rising(status_fields("ok status mode=standing state=sitting servos=starting")))
+        self.assertFalse(rising(status_fields("ok status mode=standing state=standing servos=on")))
+        self.assertFalse(rising(status_fields("ok status mode=relaxed state=sitting servos=off")))
+        self.assertFalse(rising(status_fields("ok status mode=standing state=sitting servos=starting pca9685=0x41")))
+        self.assertFalse(rising(status_fields("ok status mode=standing speed=50")))  # older firmware: no state
 
     def test_send_err_exit_status(self):
         rc, out = self.run_cli("send", "walk 1000")

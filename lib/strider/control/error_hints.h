@@ -50,7 +50,7 @@ constexpr char kLinkErrorHints[] STRIDER_PROGMEM =
     "end each line with CR or LF\0"
     "$text*hhhh, hhhh the CRC-16 of text\0"
     "send the line again\0"
-    "$deadman off*cb77";
+    "$deadman off*cb77, a checked line";  // not at the end: a reply ending in *hhhh reads as a checked one
 constexpr uint8_t kLinkErrorHintCount = 6;
 
 constexpr char kEmptyLine[] STRIDER_PROGMEM = "empty line";
