@@ -40,6 +40,8 @@ uint8_t frame(const strider::Settings& s) {
   return uint8_t(strider::write_servo_frame(out, ch, q, 2, s, g_timing));
 }
 
+constexpr char kNullGaits[] STRIDER_PROGMEM = "trot";
+
 struct NullSink {
   void set_velocity(const strider::Twist& v) { g_sink = uint16_t(v.vx); }
   void stand() {}
@@ -49,6 +51,9 @@ struct NullSink {
   bool set_body_height(int32_t h) { return h < 1000; }
   void apply_settings(const strider::Settings& s) { g_sink = uint16_t(s.pwm_hz); }
   void write_status(strider::ReplyWriter& w) { w.text(" sink=null"); }
+  const char* gait_names() const { return kNullGaits; }
+  const strider::MotionReach& reach() const { return reach_; }
+  strider::MotionReach reach_{40, 90, {-10, -10, -20}, {10, 10, 20}};
 };
 
 template <typename S>
@@ -75,7 +80,7 @@ int main() {
   for (uint8_t b = 0; b < 200; ++b) {
     strider::Command c;
     strider::ReplyWriter w(buf, sizeof buf);
-    if (g_parser.feed(b, &c) == strider::ParseResult::kError) strider::write_parse_error(w, c.error);
+    if (g_parser.feed(b, &c) == strider::ParseResult::kError) strider::write_parse_error(w, c);
     g_sonar.add(strider::EchoSample{strider::EchoKind::kEcho, uint16_t(b * 50u), 0}, b * 1000ul);
     const strider::Twist t = g_avoid.update(strider::Twist{c.arg[0], 0, 0}, g_sonar.reading(b * 1000ul), b,
                                             strider::default_avoid_config());

@@ -6,11 +6,13 @@
 #include <cctype>
 #include <cstdint>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "control/command_parser.h"
 #include "control/decimal.h"
+#include "control/error_hints.h"
 #include "control/line_check.h"
 #include "control/reply.h"
 #include "fakes/parser_driver.h"
@@ -132,7 +134,11 @@ const BadCase kBadLines[] = {
     {"cal osc 19999999", ParseError::kOutOfRange},
     {"cal pwm 39", ParseError::kOutOfRange},
     {"cal start now", ParseError::kExtraArgument},
-    {"a b c d e f", ParseError::kExtraArgument},
+    {"a b c d e f", ParseError::kUnknownCommand},  // an unknown word is err 1 however long the line
+    {"walk 1 2 3 4 5", ParseError::kExtraArgument},
+    {"cal trim 1 2 3 4", ParseError::kExtraArgument},
+    {" ", ParseError::kUnknownCommand},            // a line of blanks: err 1 empty line
+    {"\t \t", ParseError::kUnknownCommand},
     {"status!", ParseError::kUnknownCommand},
 };
 
@@ -163,6 +169,122 @@ TEST(CommandParser, EveryErrorIsReportedOnce) {
     EXPECT_EQ(ev[0].result, ParseResult::kError) << c.line;
     EXPECT_EQ(int(ev[0].command.error), int(c.error)) << c.line;
   }
+}
+
+// The reply to a bad line names what is valid (docs/protocol.md, error codes).
+std::string error_reply(const std::string& line) {
+  const auto ev = one_line(line + "\n");
+  if (ev.size() != 1u || ev[0].result != ParseResult::kError) return "no error";
+  char buf[strider::kMaxReplyBytes];
+  strider::ReplyWriter w(buf, sizeof buf);
+  strider::write_parse_error(w, ev[0].command, "walk trot pace crawl");
+  return w.c_str();
+}
+
+TEST(CommandParser, ErrorRepliesNameTheValidValues) {
+  const std::string all = "walk strafe turn vel stop relax speed gait pose height avoid deadman baud cal save status help";
+  const struct {
+    std::string line;
+    const char* reply;
+  } cases[] = {
+      {"dance", "err 1 unknown command: "},
+      {"   ", "err 1 empty line: "},
+      {"walk", "err 3 missing argument: walk -500..500"},
+      {"walk fast", "err 2 bad argument: walk -500..500"},
+      {"walk 501", "err 5 out of range: walk -500..500"},
+      {"strafe 1 2", "err 4 too many arguments: strafe -500..500"},
+      {"turn 361", "err 5 out of range: turn -360..360"},
+      {"vel 1 2 400", "err 5 out of range: vel -500..500 -500..500 -360..360"},
+      {"velocity 1 2", "err 3 missing argument: vel -500..500 -500..500 -360..360"},
+      {"speed 101", "err 5 out of range: speed 0..100"},
+      {"pose 0 31 0", "err 5 out of range: pose -30..30 -30..30 -30..30"},
+      {"height 9", "err 5 out of range: height 10..400"},
+      {"deadman 0", "err 5 out of range: deadman 1..60000, off only as a checked line"},
+      {"deadman off 1", "err 4 too many arguments: deadman 1..60000, off only as a checked line"},
+      {"deadman off", "err 11 checksum required: $deadman off*cb77, a checked line"},
+      {"baud 300", "err 5 out of range: baud 9600 19200 38400 57600 115200"},
+      {"stop now", "err 4 too many arguments: none after the command word"},
+      {"cal show 1", "err 4 too many arguments: none after the command word"},
+      {"gait", "err 3 missing argument: gait walk trot pace crawl"},
+      {"gait Trot", "err 2 bad argument: gait walk trot pace crawl"},
+      {"avoid", "err 3 missing argument: avoid on, avoid off, avoid STOP SLOW with 20 <= STOP <= SLOW <= 3000"},
+      {"avoid 300 200", "err 5 out of range: avoid on, avoid off, avoid STOP SLOW with 20 <= STOP <= SLOW <= 3000"},
+      {"cal", "err 3 missing argument: cal start trim osc pwm show save abort"},
+      {"cal dance", "err 2 bad argument: cal start trim osc pwm show save abort"},
+      {"cal trim 18 0", "err 5 out of range: cal trim 0..17 -30..30"},
+      {"cal osc 1", "err 5 out of range: cal osc 20000000..30000000"},
+      {"cal pwm 401", "err 5 out of range: cal pwm 40..400"},
+      {"walk 1 2 3 4 5", "err 4 too many arguments: walk -500..500"},
+      {"$walk 1*0000", "err 9 bad checksum: $text*hhhh, hhhh the CRC-16 of text"},
+      {std::string(64, 'a'), "err 6 line too long: at most 63 bytes"},
+  };
+  for (const auto& c : cases) {
+    std::string want = c.reply;
+    if (want.back() == ' ') want += all;
+    EXPECT_EQ(error_reply(c.line), want) << c.line;
+    // A reply that ended in `*hhhh` would read as a checked reply to a client.
+    const size_t star = want.rfind('*');
+    EXPECT_FALSE(star != std::string::npos && star + 5 == want.size()) << want;
+  }
+  // Without the model's gaits the reply keeps the placeholder.
+  const auto ev = one_line("gait\n");
+  ASSERT_EQ(ev.size(), 1u);
+  char buf[strider::kMaxReplyBytes];
+  strider::ReplyWriter w(buf, sizeof buf);
+  strider::write_parse_error(w, ev[0].command);
+  EXPECT_STREQ(w.c_str(), "err 3 missing argument: gait NAME");
+}
+
+// The ranges the replies name are the parser's: both ends of every `a..b`
+// are taken, and one past either end is err 5 (one unit: the commands with
+// decimals take a tenth past the end too, checked by EveryErrorIsReportedOnce).
+TEST(CommandParser, ErrorHintRangesAreTheParsers) {
+  int ranges = 0;
+  for (uint8_t u = 1; u < uint8_t(strider::Usage::kEmptyLine); ++u) {
+    const std::string hint = strider::flash_name(strider::text::kUsageHints, strider::text::kUsageHintCount, u).p;
+    std::istringstream in(hint);
+    std::vector<std::string> words;
+    for (std::string t; in >> t;) words.push_back(t);
+    // The command: the words before the first range; the ranges after them, up to a comma.
+    std::vector<std::string> head;
+    std::vector<std::pair<long, long>> range;
+    for (const std::string& t : words) {
+      const size_t dots = t.find("..");
+      if (dots != std::string::npos) {
+        range.emplace_back(std::stol(t.substr(0, dots)), std::stol(t.substr(dots + 2)));
+        if (t.back() == ',') break;
+      } else if (range.empty() && t.find_first_of(",<=") == std::string::npos && std::isupper(t[0]) == 0) {
+        head.push_back(t);
+      } else {
+        break;
+      }
+    }
+    if (range.empty()) continue;
+    std::string cmd;
+    for (const std::string& h : head) cmd += h + " ";
+    for (size_t k = 0; k < range.size(); ++k) {
+      for (int edge = 0; edge < 4; ++edge) {
+        std::string line = cmd;
+        for (size_t j = 0; j < range.size(); ++j) {
+          long v = 0;  // 0 is in every range but cal osc's and cal pwm's: their low end
+          if (range[j].first > 0) v = range[j].first;
+          if (j == k) v = edge == 0 ? range[j].first : edge == 1 ? range[j].second
+                          : edge == 2 ? range[j].first - 1 : range[j].second + 1;
+          line += std::to_string(v) + (j + 1 < range.size() ? " " : "");
+        }
+        const auto ev = one_line(line + "\n");
+        ASSERT_EQ(ev.size(), 1u) << line;
+        if (edge < 2) {
+          EXPECT_EQ(ev[0].result, ParseResult::kCommand) << hint << ": " << line;
+        } else {
+          EXPECT_EQ(ev[0].result, ParseResult::kError) << hint << ": " << line;
+          EXPECT_EQ(int(ev[0].command.error), int(ParseError::kOutOfRange)) << hint << ": " << line;
+        }
+      }
+      ++ranges;
+    }
+  }
+  EXPECT_EQ(ranges, 16);  // walk strafe turn, vel x3, speed, pose x3, height, deadman, cal trim x2, osc, pwm
 }
 
 TEST(CommandParser, LineEndingsCrLfCrlf) {

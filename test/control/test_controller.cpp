@@ -62,13 +62,40 @@ TEST(Controller, OneReplyPerLine) {
   ASSERT_EQ(replies.size(), 7u);
   EXPECT_EQ(replies[0], "ok move vx=100.0 vy=0.0 wz=0.0");
   EXPECT_EQ(replies[1], "ok speed pct=70");
-  EXPECT_EQ(replies[2], "err 1 unknown command");
+  EXPECT_EQ(replies[2], "err 1 unknown command: walk strafe turn vel stop relax speed gait pose height avoid deadman baud cal save status help");
   EXPECT_EQ(replies[3], "ok gait trot");
-  EXPECT_EQ(replies[4], "err 23 unknown gait");
+  EXPECT_EQ(replies[4], "err 23 unknown gait: walk trot pace crawl");
   EXPECT_EQ(replies[5].rfind("ok status mode=walking speed=70", 0), 0u) << replies[5];
   EXPECT_NE(replies[5].find("eeprom=empty"), std::string::npos);
   EXPECT_EQ(replies[6].rfind("ok help", 0), 0u);
   EXPECT_EQ(r.sink.velocity.vx, 1000);
+}
+
+// Every err names what is valid; a line of blanks is answered too, an empty
+// line is not (a terminal's CR LF pairs, docs/protocol.md); `help` lists the
+// robot's gaits and heights.
+TEST(Controller, ErrorsAndHelpNameTheValidValues) {
+  Rig r;
+  const std::string all = "walk strafe turn vel stop relax speed gait pose height avoid deadman baud cal save status help";
+  auto replies = r.send("  \r\n\n\t\nhelp\nheight 160\ngait Trot\n");
+  ASSERT_EQ(replies.size(), 5u);
+  EXPECT_EQ(replies[0], "err 1 empty line: " + all);
+  EXPECT_EQ(replies[1], "err 1 empty line: " + all);
+  EXPECT_EQ(replies[2], "ok help " + all + "; gaits walk trot pace crawl; height 10..150");
+  EXPECT_EQ(replies[3], "err 24 height refused: 10..150 with the body level");
+  EXPECT_EQ(replies[4], "err 2 bad argument: gait walk trot pace crawl");
+  r.sink.refuse_pose = true;
+  replies = r.send("pose 20 0 0\n");
+  ASSERT_EQ(replies.size(), 1u);
+  EXPECT_EQ(replies[0], "err 24 pose refused: roll -20..20 pitch -15..12 yaw -30..30 one at a time");
+  r.ctl->set_servo_fault(true);
+  replies = r.send("walk 50\nstop\n");
+  ASSERT_EQ(replies.size(), 2u);
+  EXPECT_EQ(replies[0], "err 31 servo fault: see pca9685= in status; stop, relax and the rest work");
+  EXPECT_EQ(replies[1], "ok stop");
+  replies = r.send("cal trim 1 2\n");
+  ASSERT_EQ(replies.size(), 1u);
+  EXPECT_EQ(replies[0], "err 20 cal start first");
 }
 
 TEST(Controller, RcButtonsScaleWithSpeedAndStaySilent) {
@@ -104,8 +131,8 @@ TEST(Controller, DeadmanStopsSilentLink) {
   // line (CRC-16 of "deadman off" = cb77) does.
   auto replies = r.send("deadman 0\ndeadman off\nwalk 50\n");
   ASSERT_EQ(replies.size(), 3u);
-  EXPECT_EQ(replies[0], "err 5 out of range");
-  EXPECT_EQ(replies[1], "err 11 checksum required");
+  EXPECT_EQ(replies[0], "err 5 out of range: deadman 1..60000, off only as a checked line");
+  EXPECT_EQ(replies[1], "err 11 checksum required: $deadman off*cb77, a checked line");
   r.run_ms(1100);
   EXPECT_EQ(r.ctl->mode(), RobotMode::kStanding);
   replies = r.send("$deadman off*cb77\nwalk 50\n");
@@ -146,7 +173,7 @@ TEST(Controller, CalibrationSaveAbortAndReload) {
   auto replies = r.send("cal trim 0 5\ncal start\nwalk 10\ncal trim 2 -3.5\ncal osc 26100000\ncal abort\n");
   ASSERT_EQ(replies.size(), 6u);
   EXPECT_EQ(replies[0], "err 20 cal start first");
-  EXPECT_EQ(replies[2], "err 21 calibrating");
+  EXPECT_EQ(replies[2], "err 21 calibrating: cal save or cal abort first");
   EXPECT_EQ(replies[3], "ok cal trim joint=2 deg=-3.5");
   EXPECT_EQ(r.sink.applied.trim_decideg[2], 0);  // abort restored the saved (default) values
   EXPECT_EQ(r.sink.applied.pca_osc_hz, strider::kPca9685NominalOscHz);
@@ -158,7 +185,7 @@ TEST(Controller, CalibrationSaveAbortAndReload) {
   // A failing EEPROM is reported and changes nothing stored.
   r.store.fail_at_write = r.store.writes;
   replies = r.send("avoid 250 500\nsave\n");
-  EXPECT_EQ(replies.back(), "err 22 store failed");
+  EXPECT_EQ(replies.back(), "err 22 store failed: the EEPROM did not read back; nothing saved");
 }
 
 // Every reply with numbers in it, byte for byte (docs/protocol.md).
@@ -235,17 +262,17 @@ TEST(Controller, JunkAndIdleTimeoutAnsweredOnce) {
   Rig r;
   auto replies = r.send(std::string("\x01\x02\x03walk 10\n"));
   ASSERT_EQ(replies.size(), 2u);
-  EXPECT_EQ(replies[0], "err 7 bad byte");
+  EXPECT_EQ(replies[0], "err 7 bad byte: printable ASCII only");
   EXPECT_EQ(replies[1], "ok move vx=10.0 vy=0.0 wz=0.0");
   r.send("speed 4");  // no line end
   char buf[strider::kMaxReplyBytes];
   strider::ReplyWriter w(buf, sizeof buf);
   ASSERT_TRUE(r.ctl->on_idle(r.clock.now_ms(), w));
-  EXPECT_STREQ(w.c_str(), "err 8 incomplete line");
+  EXPECT_STREQ(w.c_str(), "err 8 incomplete line: end each line with CR or LF");
   EXPECT_EQ(r.ctl->speed_pct(), 50);  // unchanged
   replies = r.send(std::string(100, 'a') + "\nstop\n");
   ASSERT_EQ(replies.size(), 2u);
-  EXPECT_EQ(replies[0], "err 6 line too long");
+  EXPECT_EQ(replies[0], "err 6 line too long: at most 63 bytes");
   EXPECT_EQ(replies[1], "ok stop");
 }
 
@@ -272,7 +299,8 @@ TEST(ProtocolDoc, ListsEveryCodeAndCommand) {
   Rig r;
   const auto help = r.send("help\n");
   ASSERT_EQ(help.size(), 1u);
-  std::istringstream words(help[0].substr(8));
+  // "ok help <words>; gaits <the model's>; height <lo>..<hi>"
+  std::istringstream words(help[0].substr(8, help[0].find(';') - 8));
   std::string word;
   int n = 0;
   while (words >> word) {

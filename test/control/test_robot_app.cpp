@@ -358,7 +358,7 @@ TYPED_TEST(RobotAppTest, ServoBoardFaultStopsTheWalkUntilTheBoardIsBack) {
   from = r.lines.sent.size();
   r.send(1, "walk 80\nF\nstop\nstatus\n");
   ASSERT_EQ(r.lines.sent.size(), from + 4);
-  EXPECT_EQ(r.lines.sent[from].second, "err 31 servo fault");
+  EXPECT_EQ(r.lines.sent[from].second, "err 31 servo fault: see pca9685= in status; stop, relax and the rest work");
   EXPECT_EQ(r.lines.sent[from + 1].second, "ok rc F");  // the line's echo; the button itself was refused
   EXPECT_EQ(r.lines.sent[from + 2].second, "ok stop");
   EXPECT_NE(r.lines.sent[from + 3].second.find(" servos=on pca9685=0x41 i2c_errors=1 "), std::string::npos)
@@ -383,7 +383,7 @@ TYPED_TEST(RobotAppTest, ServoBoardFaultStopsTheWalkUntilTheBoardIsBack) {
   r.run_ms(700);  // legs 0-2 (first board) switched on again from their pulses, legs 3-5 not yet
   for (const auto& t : r.ticks) EXPECT_LT(t.first, 16) << "channel " << int(t.first) << " too early";
   r.send(1, "walk 80\n");
-  EXPECT_EQ(r.lines.on(1).back(), "err 31 servo fault");
+  EXPECT_EQ(r.lines.on(1).back(), "err 31 servo fault: see pca9685= in status; stop, relax and the rest work");
   r.run_ms(1000);
   EXPECT_EQ(r.ticks.size(), m.joint_count());
   const auto expected = expected_standing<S>(m, r.app->servos().timing());
@@ -467,9 +467,9 @@ TYPED_TEST(RobotAppTest, CheckedRepliesAndLostBytes) {
   r.send(0, "$" + with_check("speed 40") + "\r\n");
   EXPECT_EQ(last(), with_check("ok speed pct=40"));
   r.send(0, "$" + with_check("speed 400") + "\r\n");
-  EXPECT_EQ(last(), with_check("err 5 out of range"));
+  EXPECT_EQ(last(), with_check("err 5 out of range: speed 0..100"));
   r.send(0, "$speed 41*0000\r\n");
-  EXPECT_EQ(last(), with_check("err 9 bad checksum"));
+  EXPECT_EQ(last(), with_check("err 9 bad checksum: $text*hhhh, hhhh the CRC-16 of text"));
   r.send(0, "$" + with_check("status") + "\n");
   const std::string st = last();
   ASSERT_GT(st.size(), 100u);
@@ -485,26 +485,26 @@ TYPED_TEST(RobotAppTest, CheckedRepliesAndLostBytes) {
   r.app->on_bytes_lost(1, r.now_us, r.lines);
   r.send(1, "0\n");
   ASSERT_EQ(r.lines.sent.size(), before + 1);
-  EXPECT_EQ(last(), "err 10 bytes lost");
+  EXPECT_EQ(last(), "err 10 bytes lost: send the line again");
   EXPECT_EQ(r.lines.sent.back().first, 1);
   EXPECT_EQ(r.app->controller().speed_pct(), 45);
   // Between lines: "00" after a gap is no pair of RC speed bytes.
   r.app->on_bytes_lost(1, r.now_us, r.lines);
   r.send(1, "00\nspeed 60\n");
-  EXPECT_EQ(r.lines.sent[r.lines.sent.size() - 2].second, "err 10 bytes lost");
+  EXPECT_EQ(r.lines.sent[r.lines.sent.size() - 2].second, "err 10 bytes lost: send the line again");
   EXPECT_EQ(last(), "ok speed pct=60");
   // The other port is not affected.
   r.app->on_bytes_lost(1, r.now_us, r.lines);
   r.send(0, "speed 61\n");
   EXPECT_EQ(last(), "ok speed pct=61");
   r.send(1, "\n");  // port 1's damaged line ends
-  EXPECT_EQ(last(), "err 10 bytes lost");
+  EXPECT_EQ(last(), "err 10 bytes lost: send the line again");
   // Bytes lost at the end of what was sent, then silence: the next line,
   // after the idle time, is whole.
   r.send(1, "speed 6");
   r.now_us += strider::kLineIdleMs * 1000u;
   r.app->on_bytes_lost(1, r.now_us, r.lines);
-  EXPECT_EQ(last(), "err 8 incomplete line");  // "speed 6" lost its end
+  EXPECT_EQ(last(), "err 8 incomplete line: end each line with CR or LF");  // "speed 6" lost its end
   r.send(1, "speed 62\n");
   EXPECT_EQ(last(), "ok speed pct=62");
   r.now_us += strider::kLineIdleMs * 1000u;
@@ -513,6 +513,51 @@ TYPED_TEST(RobotAppTest, CheckedRepliesAndLostBytes) {
   EXPECT_EQ(r.lines.sent.size(), n);
   r.send(1, "speed 63\n");
   EXPECT_EQ(last(), "ok speed pct=63");
+}
+
+// `help` names the model's gaits and the heights its legs reach; a refused
+// height or pose names what they reach, and those edges are taken.
+TYPED_TEST(RobotAppTest, HelpAndRefusalsNameWhatTheModelReaches) {
+  using S = TypeParam;
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    SCOPED_TRACE(m->name);
+    Rig<S> r(*m);
+    r.run_ms(4000);
+    const strider::MotionReach reach = r.app->motion().reach();
+    const int stand = int(strider::to_double(r.app->motion().stand_height_mm()) + 0.5);
+    EXPECT_LT(reach.height_min_mm, stand);
+    EXPECT_GT(reach.height_max_mm, stand);
+    auto reply = [&](const std::string& line) {
+      r.send(1, line + "\n");
+      return r.lines.on(1).back();
+    };
+    const std::string gaits = m->leg_count == 6 ? "tripod ripple wave" : "walk trot pace crawl";
+    const std::string heights = std::to_string(reach.height_min_mm) + ".." + std::to_string(reach.height_max_mm);
+    const std::string help = reply("help");
+    EXPECT_NE(help.find("; gaits " + gaits + "; height " + heights), std::string::npos) << help;
+    EXPECT_EQ(reply("gait gallop"), "err 23 unknown gait: " + gaits);
+    if (reach.height_max_mm < strider::kReachHeightMaxMm)
+      EXPECT_EQ(reply("height " + std::to_string(reach.height_max_mm + 1)),
+                "err 24 height refused: " + heights + " with the body level");
+    EXPECT_EQ(reply("height " + std::to_string(reach.height_max_mm)).rfind("ok height", 0), 0u);
+    EXPECT_EQ(reply("height " + std::to_string(reach.height_min_mm)).rfind("ok height", 0), 0u);
+    EXPECT_EQ(reply("height " + std::to_string(stand)).rfind("ok height", 0), 0u);
+    const char* axes[3] = {"roll", "pitch", "yaw"};
+    std::string poses;
+    for (int a = 0; a < 3; ++a) {
+      poses += std::string(a ? " " : "") + axes[a] + " " + std::to_string(reach.angle_min_deg[a]) + ".." +
+               std::to_string(reach.angle_max_deg[a]);
+      for (int deg : {int(reach.angle_min_deg[a]), int(reach.angle_max_deg[a])}) {
+        std::string line = "pose";
+        for (int k = 0; k < 3; ++k) line += " " + std::to_string(k == a ? deg : 0);
+        EXPECT_EQ(reply(line).rfind("ok pose", 0), 0u) << line;
+      }
+    }
+    if (reach.angle_max_deg[0] < strider::kReachAngleMaxDeg)
+      EXPECT_EQ(reply("pose " + std::to_string(reach.angle_max_deg[0] + 1) + " 0 0"),
+                "err 24 pose refused: " + poses + " one at a time");
+    std::printf("%s: height %s (stands at %d), %s\n", m->name, heights.c_str(), stand, poses.c_str());
+  }
 }
 
 TYPED_TEST(RobotAppTest, RefusedPoseAndGarbageChangeNothing) {

@@ -697,7 +697,7 @@ TEST_P(FirmwareBoards, NoBoardAtBoot) {
   auto st = r.status();
   EXPECT_EQ(st["pca9685"], all_boards(r.model()));
   EXPECT_GE(std::atoi(st["i2c_errors"].c_str()), 1);
-  EXPECT_EQ(r.command("walk 50"), "err 31 servo fault");
+  EXPECT_EQ(r.command("walk 50"), "err 31 servo fault: see pca9685= in status; stop, relax and the rest work");
   EXPECT_EQ(r.command("F"), "ok rc F");  // an RC button: refused without a reply of its own
   st = r.status();
   EXPECT_EQ(st["mode"], "standing");
@@ -720,7 +720,7 @@ TEST_P(FirmwareBoards, StuckBusAtBootRecovers) {
   r.run_for(1000000);
   auto st = r.status();
   EXPECT_EQ(st["pca9685"], all_boards(r.model())) << r.transcript();
-  EXPECT_EQ(r.command("walk 50"), "err 31 servo fault");
+  EXPECT_EQ(r.command("walk 50"), "err 31 servo fault: see pca9685= in status; stop, relax and the rest work");
   EXPECT_EQ(r.mega().unexpected_resets(), 0);
   const uint64_t freed = r.mega().now_us();
   r.mega().set_bus_stuck(false);
@@ -783,7 +783,7 @@ TEST(FirmwareBoardsHexapod, SecondBoardMissing) {
   auto st = r.status();
   EXPECT_EQ(st["pca9685"], "0x41");
   EXPECT_GE(std::atoi(st["i2c_errors"].c_str()), 1);
-  EXPECT_EQ(r.command("walk 60"), "err 31 servo fault");
+  EXPECT_EQ(r.command("walk 60"), "err 31 servo fault: see pca9685= in status; stop, relax and the rest work");
   // The first board's legs stand.
   const auto expected = r.expected_standing();
   const double tol = kTickToleranceUs * r.mega().board(0).tick_us();
@@ -814,7 +814,7 @@ TEST(FirmwareBoardsHexapod, BoardLosesPowerMidWalkAndComesBack) {
   EXPECT_EQ(st["pca9685"], "0x41");
   const int errors = std::atoi(st["i2c_errors"].c_str());
   EXPECT_GE(errors, 1);
-  EXPECT_EQ(r.command("walk 60"), "err 31 servo fault");
+  EXPECT_EQ(r.command("walk 60"), "err 31 servo fault: see pca9685= in status; stop, relax and the rest work");
   // Stopped: the first board's legs hold still.
   r.mega().clear_pulse_log();
   r.run_for(500000);

@@ -346,18 +346,18 @@ TEST(LinkChecked, GoodAndBadChecksum) {
     // nothing applied.
     std::string bad = checked("speed 40");
     bad[7] = '9';
-    EXPECT_EQ(b.command(u, bad), reply_checked("err 9 bad checksum"));
+    EXPECT_EQ(b.command(u, bad), reply_checked("err 9 bad checksum: $text*hhhh, hhhh the CRC-16 of text"));
     std::string bad_check = checked("speed 70");
     bad_check.back() = bad_check.back() == '0' ? '1' : '0';
-    EXPECT_EQ(b.command(u, bad_check), reply_checked("err 9 bad checksum"));
+    EXPECT_EQ(b.command(u, bad_check), reply_checked("err 9 bad checksum: $text*hhhh, hhhh the CRC-16 of text"));
     // A checked line that lost its end is no plain line.
-    EXPECT_EQ(b.command(u, "$speed 70"), reply_checked("err 9 bad checksum"));
+    EXPECT_EQ(b.command(u, "$speed 70"), reply_checked("err 9 bad checksum: $text*hhhh, hhhh the CRC-16 of text"));
     EXPECT_EQ(b.status(u)["speed"], "40");
     // Uppercase hex digits are as good; errors of a checked line are checked.
     std::string upper = checked("speed 41");
     for (size_t i = upper.size() - 4; i < upper.size(); ++i) upper[i] = char(std::toupper(upper[i]));
     EXPECT_EQ(b.command(u, upper), reply_checked("ok speed pct=41"));
-    EXPECT_EQ(b.command(u, checked("speed 400")), reply_checked("err 5 out of range"));
+    EXPECT_EQ(b.command(u, checked("speed 400")), reply_checked("err 5 out of range: speed 0..100"));
     // The long status reply carries its check too.
     const std::string st = b.command(u, checked("status"));
     ASSERT_GT(st.size(), 5u);
@@ -375,9 +375,10 @@ TEST(LinkChecked, DeadmanOffNeedsTheDeliberateForm) {
   std::string error;
   ASSERT_TRUE(b.boot(&error)) << error;
   ASSERT_TRUE(b.run_for(4000000));
-  EXPECT_EQ(b.command(1, "deadman 0"), "err 5 out of range");
-  EXPECT_EQ(b.command(1, "deadman off"), "err 11 checksum required");
-  EXPECT_EQ(b.command(1, checked("deadman 0")), reply_checked("err 5 out of range"));
+  EXPECT_EQ(b.command(1, "deadman 0"), "err 5 out of range: deadman 1..60000, off only as a checked line");
+  EXPECT_EQ(b.command(1, "deadman off"), "err 11 checksum required: $deadman off*cb77, a checked line");
+  EXPECT_EQ(b.command(1, checked("deadman 0")),
+            reply_checked("err 5 out of range: deadman 1..60000, off only as a checked line"));
   EXPECT_EQ(b.status(1)["deadman_ms"], "1000");
   EXPECT_EQ(b.command(1, checked("deadman off")), reply_checked("ok deadman off"));
   EXPECT_EQ(b.status(1)["deadman_ms"], "0");

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "control/command_parser.h"
+#include "control/error_hints.h"
 #include "control/reply.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -19,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     strider::ReplyWriter w(buf, sizeof buf);
     if (r == strider::ParseResult::kError) {
       if (cmd.error == strider::ParseError::kNone) abort();
-      strider::write_parse_error(w, cmd.error);
+      strider::write_parse_error(w, cmd);
     } else if (r == strider::ParseResult::kCommand) {
       if (cmd.kind == strider::CommandKind::kNone) abort();
       w.text("ok").field("a0", cmd.arg[0]).field_tenths("a1", cmd.arg[1]).field_text("w", cmd.word);

@@ -54,18 +54,18 @@ class FakeRobot:
         words = line.split()
         cmd = words[0]
         if len(line) > 63:
-            return "err 6 line too long"
+            return "err 6 line too long: at most 63 bytes"
         if cmd == "status":
             return self.status_line()
         if cmd == "walk":
             if len(words) < 2:
-                return "err 3 missing argument"
+                return "err 3 missing argument: walk -500..500"
             try:
                 v = float(words[1])
             except ValueError:
-                return "err 2 bad argument"
+                return "err 2 bad argument: walk -500..500"
             if abs(v) > 500:
-                return "err 5 out of range"
+                return "err 5 out of range: walk -500..500"
             self.vx = v
             self.mode = "walking" if v else "standing"
             return f"ok move vx={v:.1f} vy=0.0 wz=0.0"
@@ -77,7 +77,7 @@ class FakeRobot:
             return f"ok speed pct={self.speed}"
         if len(words) == 1 and len(cmd) == 1 and cmd in RC:
             return f"ok rc {cmd}"
-        return "err 1 unknown command"
+        return "err 1 unknown command: walk stop speed status"
 
     # -- io ------------------------------------------------------------------
     def write(self, data: bytes):

@@ -91,6 +91,8 @@ class ProtocolTest(unittest.TestCase):
         self.assertEqual(r.code, 5)
         self.assertEqual(r.reason, "out of range")
         self.assertEqual(protocol.ERROR_CODES[r.code], r.reason)
+        r = protocol.parse_reply("err 23 unknown gait: walk trot pace crawl")
+        self.assertEqual((r.code, r.reason, r.valid), (23, "unknown gait", "walk trot pace crawl"))
 
     def test_kinds(self):
         self.assertEqual(protocol.kind_of("info deadman stop"), "info")
@@ -402,10 +404,21 @@ class CliTest(unittest.TestCase):
         self.assertEqual((rc, out.strip()), (0, "ok speed pct=42"))
         self.assertEqual(self.robot.checked, [True, False, False])
 
+    def test_rising_reads_the_status(self):
+        from robotctl.link import rising, status_fields
+        f = status_fields("ok status mode=standing speed=50 gait=trot state=standing_up servos=on pca9685=ok")
+        self.assertEqual((f["mode"], f["state"], f["servos"]), ("standing", "standing_up", "on"))
+        self.assertTrue(rising(f))
+        self.assertTrue(rising(status_fields("ok status mode=standing state=sitting servos=starting")))
+        self.assertFalse(rising(status_fields("ok status mode=standing state=standing servos=on")))
+        self.assertFalse(rising(status_fields("ok status mode=relaxed state=sitting servos=off")))
+        self.assertFalse(rising(status_fields("ok status mode=standing state=sitting servos=starting pca9685=0x41")))
+        self.assertFalse(rising(status_fields("ok status mode=standing speed=50")))  # older firmware: no state
+
     def test_send_err_exit_status(self):
         rc, out = self.run_cli("send", "walk 1000")
         self.assertEqual(rc, cli.EXIT_ERR_REPLY)
-        self.assertEqual(out.strip(), "err 5 out of range")
+        self.assertEqual(out.strip(), "err 5 out of range: walk -500..500")
 
     def test_send_options_after_the_command(self):
         out = io.StringIO()

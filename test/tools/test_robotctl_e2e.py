@@ -139,6 +139,9 @@ class VirtualMegaE2E(unittest.TestCase):
                        "--timeout", "3", "send", "status"], out=out)
         self.assertEqual(rc, cli.EXIT_OK, out.getvalue())
         self.assertTrue(out.getvalue().startswith("ok status mode="), out.getvalue())
+        # send waited for the robot to stand up before it sent the line.
+        self.assertIn(" state=standing ", out.getvalue())
+        self.assertIn(" servos=on ", out.getvalue())
 
     def test_6_sim_port_sonar_range(self):
         # Open space by default, so that the robot may walk forward; `none`

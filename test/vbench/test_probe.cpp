@@ -472,6 +472,34 @@ TEST(VbenchExe, RunsAScriptAndPrintsReplies) {
   EXPECT_NE(out.find("# sonar triggers 1"), std::string::npos) << out;
 }
 
+// The sonar by default sees open space (the module's 38 ms time-out pulse);
+// --range sets an obstacle, --range none no echo at all.
+TEST(VbenchExe, SonarSeesOpenSpaceUnlessToldOtherwise) {
+  const std::string script = temp_path("sonar.txt");
+  {
+    std::ofstream s(script);
+    s << "at 0.1 send s\\n\n";
+  }
+  int status = 0;
+  auto run = [&](const std::string& option) {
+    const std::string cmd = std::string(STRIDER_VBENCH_EXE) + " --elf " + STRIDER_VBENCH_PROBE_ELF + " --script " +
+                            script + " --duration 0.3 " + option + " 2>/dev/null";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[256];
+    while (p != nullptr && std::fgets(buf, sizeof buf, p)) out += buf;
+    status = p == nullptr ? -1 : pclose(p);
+    return out;
+  };
+  EXPECT_NE(run("").find(" uart1: echo 38000 "), std::string::npos);
+  EXPECT_EQ(status, 0);
+  EXPECT_NE(run("--range 300").find(" uart1: echo 17"), std::string::npos);  // 1749 us
+  EXPECT_NE(run("--range none").find(" uart1: none"), std::string::npos);
+  EXPECT_EQ(run("--range far").find("uart1"), std::string::npos);
+  EXPECT_EQ(WEXITSTATUS(status), 2);  // bad usage
+  std::remove(script.c_str());
+}
+
 TEST(VbenchExe, EepromCutOptionAndDirective) {
   const std::string script = temp_path("cut.vb");
   {

@@ -2,7 +2,7 @@
 """Pictures of a strider-sim run for people.
 
 Reads DIR/trace.csv and DIR/scene.json (written by strider-sim --out DIR) and writes
-  DIR/run.gif        top and side views, animated (Pillow)
+  DIR/run.gif        top view and a side view along the robot's heading, animated (Pillow)
   DIR/run.mp4        the same as a video, when ffmpeg is installed (--mp4)
   DIR/plots.png      path, speed, heading and static stability margin over time
 
@@ -26,7 +26,8 @@ try:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.patches import Polygon, Rectangle
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch, Polygon, Rectangle
 except ImportError:  # pragma: no cover
     sys.exit("render_trace.py needs matplotlib (Debian: python3-matplotlib, or pip install matplotlib)")
 
@@ -61,6 +62,38 @@ def hip_world(scene, row, i):
     y = sy * cp * hx + (sy * sp * sr + cy * cr) * hy + (sy * sp * cr - cy * sr) * hz
     z = -sp * hx + cp * sr * hy + cp * cr * hz
     return row["x_mm"] + x, row["y_mm"] + y, row["z_mm"] + z
+
+
+def ray_box(px, py, hx, hy, box):
+    """The distances [s0, s1] along the ray p + s h (h a unit vector) inside
+    the axis-aligned box (x, y, sx, sy, sz) seen from above; None if it misses."""
+    x, y, sx, sy, _ = box
+    lo, hi = -math.inf, math.inf
+    for p, h, c, size in ((px, hx, x, sx), (py, hy, y, sy)):
+        a, b = c - size / 2, c + size / 2
+        if abs(h) < 1e-12:
+            if not a <= p <= b:
+                return None
+            continue
+        t0, t1 = sorted(((a - p) / h, (b - p) / h))
+        lo, hi = max(lo, t0), min(hi, t1)
+    return (lo, hi) if lo <= hi else None
+
+
+def side_section(scene, row, box, half_width):
+    """Where an obstacle is in the side view: the distances along the heading
+    [s0, s1] at which a strip of half_width either side of the body's centre
+    line meets it, or None when nothing in the strip (nothing in the way)."""
+    yaw = math.radians(row["yaw_deg"])
+    hx, hy = math.cos(yaw), math.sin(yaw)
+    hits = []
+    for off in (-half_width, -half_width / 2, 0.0, half_width / 2, half_width):
+        r = ray_box(row["x_mm"] - hy * off, row["y_mm"] + hx * off, hx, hy, box)
+        if r is not None:
+            hits.append(r)
+    if not hits:
+        return None
+    return min(h[0] for h in hits), max(h[1] for h in hits)
 
 
 def convex_hull(points):
@@ -108,9 +141,25 @@ def stability_margin(row, legs):
     return d if inside else -d
 
 
+def side_window(scene, rows):
+    """The side view's span along the heading [mm]: behind the body by its legs'
+    reach, ahead by the reach and 400 mm (the avoidance stops 200 mm short)."""
+    legs = int(scene["legs"])
+    reach = max(
+        math.hypot(r[f"foot_{i}_x"] - r["x_mm"], r[f"foot_{i}_y"] - r["y_mm"]) for r in rows for i in range(legs)
+    )
+    reach = max(reach, scene["body_mm"][0] / 2)
+    return -(reach + 40), reach + 400, reach
+
+
 class Scene:
     """Persistent artists of the top and side views; update() moves them to
-    one trace row (redrawing axes and ticks per frame would cost 5x more)."""
+    one trace row (redrawing axes and ticks per frame would cost 5x more).
+    The side view looks at the robot from its right, along its heading: its
+    horizontal axis is the distance ahead of the body centre, and it shows an
+    obstacle where the strip the robot sweeps (its width with the feet) meets
+    it, so a wall is drawn at its distance ahead while it is in the way and
+    not at all beside it."""
 
     def __init__(self, fig, ax_top, ax_side, scene, rows, bounds):
         self.scene, self.rows = scene, rows
@@ -119,15 +168,19 @@ class Scene:
         ax_top.set_xlim(xmin, xmax)
         ax_top.set_ylim(ymin, ymax)
         ax_top.set_aspect("equal")
-        ax_side.set_xlim(xmin, xmax)
+        back, front, self.half_width = side_window(scene, rows)
+        ax_side.set_xlim(back, front)
         ax_side.set_ylim(-10, zmax)
         ax_side.set_aspect("equal")
-        ax_side.set_title("side view (x, z) [mm]")
+        ax_side.set_title("side view along the heading: distance ahead of the body [mm], height [mm]", fontsize=9)
         ax_side.axhline(0, color="0.3", lw=1)
+        self.side_obstacles = []
         for ob in scene["obstacles_mm"]:
             x, y, sx, sy, sz = ob
             ax_top.add_patch(Rectangle((x - sx / 2, y - sy / 2), sx, sy, color="0.55"))
-            ax_side.add_patch(Rectangle((x - sx / 2, 0), sx, sz, color="0.55"))
+            patch = Rectangle((0, 0), 1, sz, color="0.55", visible=False)
+            ax_side.add_patch(patch)
+            self.side_obstacles.append((ob, patch))
         self.title = ax_top.set_title("")
         (self.path,) = ax_top.plot([], [], color="tab:blue", lw=0.8)
         self.body = Polygon([[0, 0]] * 4, closed=True, fc="tab:orange", ec="k", alpha=0.8)
@@ -138,6 +191,17 @@ class Scene:
         self.side_feet = [ax_side.plot([], [], "o", ms=4)[0] for _ in range(self.legs)]
         (self.com,) = ax_top.plot([], [], "+", color="k", ms=8)
         (self.side_body,) = ax_side.plot([], [], color="tab:orange", lw=max(2.0, scene["body_mm"][2] / 6))
+        handles = [
+            Line2D([], [], color="tab:blue", lw=0.8, label="path of the body centre"),
+            Patch(fc="tab:orange", ec="k", label="body"),
+            Line2D([], [], color="k", lw=1.5, label="leg (hip to foot)"),
+            Line2D([], [], ls="", marker="o", color="tab:green", label="foot on the ground"),
+            Line2D([], [], ls="", marker="o", color="tab:red", label="foot in the air"),
+            Line2D([], [], ls="", marker="+", color="k", ms=8, label="centre of mass"),
+        ]
+        if scene["obstacles_mm"]:
+            handles.append(Patch(color="0.55", label="obstacle"))
+        fig.legend(handles=handles, loc="lower center", ncol=4, fontsize=7, frameon=False)
 
     def update(self, k):
         scene, row = self.scene, self.rows[k]
@@ -151,17 +215,28 @@ class Scene:
             self.top_legs[i].set_data([hx, fx], [hy, fy])
             self.top_feet[i].set_data([fx], [fy])
             self.top_feet[i].set_color(colour)
-            self.side_legs[i].set_data([hx, fx], [hz, fz])
-            self.side_feet[i].set_data([fx], [fz])
+            self.side_legs[i].set_data([self.ahead(row, hx, hy), self.ahead(row, fx, fy)], [hz, fz])
+            self.side_feet[i].set_data([self.ahead(row, fx, fy)], [fz])
             self.side_feet[i].set_color(colour)
         self.com.set_data([row["com_x_mm"]], [row["com_y_mm"]])
         length = scene["body_mm"][0]
-        yaw, pitch = math.radians(row["yaw_deg"]), math.radians(row["pitch_deg"])
+        pitch = math.radians(row["pitch_deg"])
         half = length / 2 * math.cos(pitch)
         self.side_body.set_data(
-            [row["x_mm"] - half * math.cos(yaw), row["x_mm"] + half * math.cos(yaw)],
-            [row["z_mm"] + length / 2 * math.sin(pitch), row["z_mm"] - length / 2 * math.sin(pitch)],
+            [-half, half], [row["z_mm"] + length / 2 * math.sin(pitch), row["z_mm"] - length / 2 * math.sin(pitch)]
         )
+        for ob, patch in self.side_obstacles:
+            hit = side_section(scene, row, ob, self.half_width)
+            patch.set_visible(hit is not None)
+            if hit is not None:
+                patch.set_x(hit[0])
+                patch.set_width(hit[1] - hit[0])
+
+    @staticmethod
+    def ahead(row, x, y):
+        """Distance of a world point ahead of the body centre along the heading [mm]."""
+        yaw = math.radians(row["yaw_deg"])
+        return (x - row["x_mm"]) * math.cos(yaw) + (y - row["y_mm"]) * math.sin(yaw)
 
 
 def bounds_of(scene, rows):
@@ -184,16 +259,17 @@ def render_frames(scene, rows, fps):
     bounds = bounds_of(scene, rows)
     xmin, xmax, ymin, ymax, zmax = bounds
     top_h = (ymax - ymin) / (xmax - xmin)
-    side_h = (zmax + 10) / (xmax - xmin)
+    back, front, _ = side_window(scene, rows)
+    side_h = (zmax + 10) / (front - back)
     width_in = 7.0
-    fig = plt.figure(figsize=(width_in, width_in * (top_h + side_h) + 1.0), dpi=80)
+    fig = plt.figure(figsize=(width_in, width_in * (top_h + side_h) + 1.5), dpi=80)
     gs = fig.add_gridspec(2, 1, height_ratios=[max(top_h, 0.05), max(side_h, 0.05)])
     ax_top = fig.add_subplot(gs[0])
     ax_side = fig.add_subplot(gs[1])
     frames = []
     view = Scene(fig, ax_top, ax_side, scene, rows, bounds)
     view.update(0)
-    fig.tight_layout()  # once: the layout does not change between frames
+    fig.tight_layout(rect=(0, 0.07, 1, 1))  # once: the layout does not change between frames; room for the legend
     for k in range(0, len(rows), step):
         view.update(k)
         fig.canvas.draw()
@@ -234,7 +310,17 @@ def write_mp4(frames, path, fps):
     return proc.wait() == 0
 
 
-def write_plots(scene, rows, path):
+def has_odometry(run_dir, rows):
+    """Library mode records the gait engine's odometry; firmware mode has none
+    (metrics.json `odometry_mm` null): no odometry line is drawn then."""
+    try:
+        with open(os.path.join(run_dir, "metrics.json")) as f:
+            return json.load(f).get("odometry_mm") is not None
+    except (OSError, ValueError):
+        return any(r["odo_x_mm"] or r["odo_y_mm"] or r["odo_yaw_deg"] for r in rows)
+
+
+def write_plots(scene, rows, path, odometry=True):
     legs = int(scene["legs"])
     t = [r["t"] for r in rows]
     fig, ax = plt.subplots(2, 2, figsize=(10, 7), dpi=90)
@@ -242,10 +328,11 @@ def write_plots(scene, rows, path):
     for x, y, sx, sy, sz in scene["obstacles_mm"]:
         a.add_patch(Rectangle((x - sx / 2, y - sy / 2), sx, sy, color="0.6"))
     a.plot([r["x_mm"] for r in rows], [r["y_mm"] for r in rows], label="body centre")
-    a.plot([r["odo_x_mm"] + rows[0]["x_mm"] for r in rows], [r["odo_y_mm"] + rows[0]["y_mm"] for r in rows], "--",
-           lw=0.8, label="gait odometry")
-    a.plot([rows[0]["x_mm"]], [rows[0]["y_mm"]], "go")
-    a.plot([rows[-1]["x_mm"]], [rows[-1]["y_mm"]], "rs")
+    if odometry:
+        a.plot([r["odo_x_mm"] + rows[0]["x_mm"] for r in rows], [r["odo_y_mm"] + rows[0]["y_mm"] for r in rows], "--",
+               lw=0.8, label="gait odometry")
+    a.plot([rows[0]["x_mm"]], [rows[0]["y_mm"]], "go", label="start")
+    a.plot([rows[-1]["x_mm"]], [rows[-1]["y_mm"]], "rs", label="end")
     a.set_aspect("equal", adjustable="datalim")
     a.set_title("path [mm]")
     a.legend(fontsize=8)
@@ -266,7 +353,8 @@ def write_plots(scene, rows, path):
     a.legend(fontsize=8)
     a = ax[1][0]
     a.plot(t, [r["yaw_deg"] for r in rows], label="heading")
-    a.plot(t, [r["odo_yaw_deg"] + rows[0]["yaw_deg"] for r in rows], "--", lw=0.8, label="gait odometry")
+    if odometry:
+        a.plot(t, [r["odo_yaw_deg"] + rows[0]["yaw_deg"] for r in rows], "--", lw=0.8, label="gait odometry")
     a.set_title("heading [deg]")
     a.set_xlabel("t [s]")
     a.legend(fontsize=8)
@@ -290,7 +378,7 @@ def main():
     ap.add_argument("--no-gif", action="store_true", help="only the plots")
     args = ap.parse_args()
     scene, rows = load(args.run_dir)
-    write_plots(scene, rows, os.path.join(args.run_dir, "plots.png"))
+    write_plots(scene, rows, os.path.join(args.run_dir, "plots.png"), has_odometry(args.run_dir, rows))
     written = ["plots.png"]
     if args.mp4 and shutil.which("ffmpeg") is None:
         print("render_trace.py: no ffmpeg, skipping the MP4 (Debian: apt-get install ffmpeg)", file=sys.stderr)

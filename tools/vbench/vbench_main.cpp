@@ -29,13 +29,16 @@ using strider_vmega::VirtualMega;
 namespace {
 
 volatile sig_atomic_t g_stop = 0;
+//! The default sonar range [mm]: beyond the HC-SR04's 4 m, so every ping gets
+//! the module's time-out pulse (no obstacle), as in an open room.
+constexpr double kOpenSpaceMm = 10000.0;
 void on_signal(int) { g_stop = 1; }
 
 void usage() {
   std::fprintf(stderr,
                "usage: vbench --elf FIRMWARE.elf [--eeprom FILE] [--script FILE] [--duration S]\n"
                "              [--pty] [--realtime] [--stdin] [--osc HZ] [--boards LIST] [--pulses CSV] [--log] [--i2c]\n"
-               "              [--eeprom-cut N[:erased]]\n"
+               "              [--eeprom-cut N[:erased]] [--range MM|none]\n"
                "  --eeprom FILE  EEPROM image loaded at start (if present) and saved at the end\n"
                "  --script FILE  timed directives: at T send TEXT | at T range MM|none|stuck | at T reset |\n"
                "                 at T board ADDR off|on|detach|attach | at T bus stuck|free | at T hang |\n"
@@ -46,6 +49,8 @@ void usage() {
                "  --realtime     pace simulated time to the wall clock (implied by --pty)\n"
                "  --stdin        read directives from stdin as they come (automatic for a pipe; implies --realtime)\n"
                "  --osc HZ       PCA9685 oscillator frequency (default 25e6)\n"
+               "  --range MM|none  what the sonar sees at start: an obstacle MM ahead, or no echo at all\n"
+               "                 (a missing sensor); default open space (nothing within 4 m)\n"
                "  --boards LIST  PCA9685 boards on the bus: addresses, comma-separated (default 0x40,0x41), or none\n"
                "  --pulses CSV   write every pulse-width change: time_us,channel,width_us\n"
                "  --log          print pulse changes, resets and an I2C summary\n"
@@ -159,6 +164,7 @@ bool read_file(const std::string& path, std::string* text) {
 
 int main(int argc, char** argv) {
   strider_vmega::Options options;
+  options.sonar_range_mm = kOpenSpaceMm;  // a robot on a desk in an open room: nothing in range
   std::string script_path, pulses_path;
   double duration_s = -1;
   bool use_pty = false, realtime = false, use_stdin = false, log = false, log_i2c = false;
@@ -181,6 +187,19 @@ int main(int argc, char** argv) {
     else if (a == "--realtime") realtime = true;
     else if (a == "--stdin") use_stdin = true;
     else if (a == "--osc") options.pca_osc_hz = std::atof(value("--osc").c_str());
+    else if (a == "--range") {
+      const std::string r = value("--range");
+      char* end = nullptr;
+      const double mm = std::strtod(r.c_str(), &end);
+      if (r == "none") {
+        options.sonar_range_mm = -1;
+      } else if (!r.empty() && *end == 0 && mm >= 0) {
+        options.sonar_range_mm = mm;
+      } else {
+        std::fprintf(stderr, "vbench: --range takes millimetres >= 0 or none\n");
+        return 2;
+      }
+    }
     else if (a == "--boards") {
       if (!parse_boards(value("--boards"), &options.pca_addresses)) {
         std::fprintf(stderr, "vbench: --boards takes addresses like 0x40,0x41 or none\n");

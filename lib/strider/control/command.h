@@ -63,12 +63,23 @@ enum class ParseError : uint8_t {
 
 constexpr uint8_t kCommandWordBytes = 8;  //!< gait name: up to 7 chars + NUL
 
+//! With a parse error: which valid values the `err` reply names
+//! (error_hints.h), set by the parser for the command it recognised.
+enum class Usage : uint8_t {
+  kNone = 0,
+  kWalk, kStrafe, kTurn, kVel, kSpeed, kPose, kHeight, kDeadman, kBaud,
+  kNoArguments,  //!< stop, relax, save, status, help, cal start/show/save/abort
+  kGait, kAvoid, kCal, kCalTrim, kCalOsc, kCalPwm,
+  kEmptyLine     //!< a line of blanks (err 1 empty line)
+};
+
 struct Command {
   CommandKind kind;
   CommandSource source;
   ParseError error;               //!< set when the parser reports an error
   int32_t arg[3];                 //!< meaning per kind (see CommandKind)
   char word[kCommandWordBytes];   //!< NUL-terminated word argument (gait name)
+  Usage usage;                    //!< with an error: the valid values to name
 };
 
 inline Command make_command(CommandKind kind, CommandSource source) {
@@ -78,6 +89,7 @@ inline Command make_command(CommandKind kind, CommandSource source) {
   c.error = ParseError::kNone;
   c.arg[0] = c.arg[1] = c.arg[2] = 0;
   for (uint8_t i = 0; i < kCommandWordBytes; ++i) c.word[i] = 0;
+  c.usage = Usage::kNone;
   return c;
 }
 

@@ -110,22 +110,32 @@ inline ParseError no_args(uint8_t ntokens, uint8_t first) {
 }
 
 inline ParseError parse_cal(const Token* t, uint8_t n, Command* cmd) {
+  cmd->usage = Usage::kCal;
   if (n < 2) return ParseError::kMissingArgument;
   const Token& sub = t[1];
-  if (token_is(sub, words::kStart)) { cmd->kind = CommandKind::kCalStart; return no_args(n, 2); }
-  if (token_is(sub, words::kSave)) { cmd->kind = CommandKind::kCalSave; return no_args(n, 2); }
-  if (token_is(sub, words::kAbort)) { cmd->kind = CommandKind::kCalAbort; return no_args(n, 2); }
-  if (token_is(sub, words::kShow)) { cmd->kind = CommandKind::kCalShow; return no_args(n, 2); }
+  CommandKind none_taken = CommandKind::kNone;  // a word that takes no arguments
+  if (token_is(sub, words::kStart)) none_taken = CommandKind::kCalStart;
+  if (token_is(sub, words::kSave)) none_taken = CommandKind::kCalSave;
+  if (token_is(sub, words::kAbort)) none_taken = CommandKind::kCalAbort;
+  if (token_is(sub, words::kShow)) none_taken = CommandKind::kCalShow;
+  if (none_taken != CommandKind::kNone) {
+    cmd->kind = none_taken;
+    cmd->usage = Usage::kNoArguments;
+    return no_args(n, 2);
+  }
   if (token_is(sub, words::kOsc)) {
     cmd->kind = CommandKind::kCalOsc;
+    cmd->usage = Usage::kCalOsc;
     return number_args(t, n, 2, 1, 0, 0, int32_t(kPca9685MinOscHz), int32_t(kPca9685MaxOscHz), cmd);
   }
   if (token_is(sub, words::kPwm)) {
     cmd->kind = CommandKind::kCalPwm;
+    cmd->usage = Usage::kCalPwm;
     return number_args(t, n, 2, 1, 0, 0, 40, 400, cmd);
   }
   if (token_is(sub, words::kTrim)) {
     cmd->kind = CommandKind::kCalTrim;
+    cmd->usage = Usage::kCalTrim;
     if (n < 4) return ParseError::kMissingArgument;
     if (n > 4) return ParseError::kExtraArgument;
     const ParseError e = number_arg(t[2], 0, 0, kMaxServoJoints - 1, &cmd->arg[0]);
@@ -136,6 +146,7 @@ inline ParseError parse_cal(const Token* t, uint8_t n, Command* cmd) {
 }
 
 inline ParseError parse_avoid(const Token* t, uint8_t n, Command* cmd) {
+  cmd->usage = Usage::kAvoid;
   if (n < 2) return ParseError::kMissingArgument;
   if (token_is(t[1], words::kOn) || token_is(t[1], words::kOff)) {
     cmd->kind = CommandKind::kAvoidEnable;
@@ -152,6 +163,7 @@ inline ParseError parse_avoid(const Token* t, uint8_t n, Command* cmd) {
 
 inline ParseError parse_gait(const Token* t, uint8_t n, Command* cmd) {
   cmd->kind = CommandKind::kGait;
+  cmd->usage = Usage::kGait;
   if (n < 2) return ParseError::kMissingArgument;
   if (n > 2) return ParseError::kExtraArgument;
   if (t[1].len >= kCommandWordBytes) return ParseError::kBadArgument;
@@ -171,6 +183,7 @@ inline ParseError parse_gait(const Token* t, uint8_t n, Command* cmd) {
 struct WordCommand {
   const char* word;  // words::, in flash
   CommandKind kind;
+  Usage usage;       // what an error reply names (error_hints.h)
   uint8_t count;
   uint8_t slot;
   uint8_t decimals;
@@ -178,46 +191,33 @@ struct WordCommand {
   int32_t hi;
 };
 constexpr WordCommand kWordCommands[] STRIDER_PROGMEM = {
-    {words::kWalk, CommandKind::kMove, 1, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
-    {words::kStrafe, CommandKind::kMove, 1, 1, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
-    {words::kTurn, CommandKind::kMove, 1, 2, 1, -kMaxTurnDecideg_s, kMaxTurnDecideg_s},
-    {words::kVel, CommandKind::kMove, 3, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
-    {words::kVelocity, CommandKind::kMove, 3, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
-    {words::kStop, CommandKind::kStop, 0, 0, 0, 0, 0},
-    {words::kRelax, CommandKind::kRelax, 0, 0, 0, 0, 0},
-    {words::kSpeed, CommandKind::kSpeed, 1, 0, 0, 0, 100},
-    {words::kPose, CommandKind::kPose, 3, 0, 1, -kMaxPoseDecideg, kMaxPoseDecideg},
-    {words::kHeight, CommandKind::kHeight, 1, 0, 1, 100, 4000},
-    {words::kDeadman, CommandKind::kDeadman, 1, 0, 0, 1, 60000},  // off: parse_command_line()
-    {words::kBaud, CommandKind::kBaud, 1, 0, 0, 0, 2000000},
-    {words::kSave, CommandKind::kSave, 0, 0, 0, 0, 0},
-    {words::kStatus, CommandKind::kStatus, 0, 0, 0, 0, 0},
-    {words::kHelp, CommandKind::kHelp, 0, 0, 0, 0, 0},
+    {words::kWalk, CommandKind::kMove, Usage::kWalk, 1, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
+    {words::kStrafe, CommandKind::kMove, Usage::kStrafe, 1, 1, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
+    {words::kTurn, CommandKind::kMove, Usage::kTurn, 1, 2, 1, -kMaxTurnDecideg_s, kMaxTurnDecideg_s},
+    {words::kVel, CommandKind::kMove, Usage::kVel, 3, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
+    {words::kVelocity, CommandKind::kMove, Usage::kVel, 3, 0, 1, -kMaxLinearDecimm_s, kMaxLinearDecimm_s},
+    {words::kStop, CommandKind::kStop, Usage::kNoArguments, 0, 0, 0, 0, 0},
+    {words::kRelax, CommandKind::kRelax, Usage::kNoArguments, 0, 0, 0, 0, 0},
+    {words::kSpeed, CommandKind::kSpeed, Usage::kSpeed, 1, 0, 0, 0, 100},
+    {words::kPose, CommandKind::kPose, Usage::kPose, 3, 0, 1, -kMaxPoseDecideg, kMaxPoseDecideg},
+    {words::kHeight, CommandKind::kHeight, Usage::kHeight, 1, 0, 1, 100, 4000},
+    {words::kDeadman, CommandKind::kDeadman, Usage::kDeadman, 1, 0, 0, 1, 60000},  // off: parse_command_line()
+    {words::kBaud, CommandKind::kBaud, Usage::kBaud, 1, 0, 0, 0, 2000000},
+    {words::kSave, CommandKind::kSave, Usage::kNoArguments, 0, 0, 0, 0, 0},
+    {words::kStatus, CommandKind::kStatus, Usage::kNoArguments, 0, 0, 0, 0, 0},
+    {words::kHelp, CommandKind::kHelp, Usage::kNoArguments, 0, 0, 0, 0, 0},
 };
 constexpr uint8_t kWordCommandCount = uint8_t(sizeof kWordCommands / sizeof kWordCommands[0]);
 
-}  // namespace detail
-
-//! True for a command that disarms a failsafe: the deadman off. It runs only
-//! from a checked line (command_parser.h), a form that no line glued from
-//! pieces of others and no typo produces; no number turns the deadman off.
-inline bool needs_checked_line(const Command& c) { return c.kind == CommandKind::kDeadman && c.arg[0] == 0; }
-
-//! Parses one line (len bytes, printable ASCII, no line ending). On success
-//! returns kNone and fills *cmd (source kLine); otherwise returns the error.
-inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd) {
-  using namespace detail;
-  *cmd = make_command(CommandKind::kNone, CommandSource::kLine);
-  Token t[kMaxLineTokens];
-  const uint8_t n = split_tokens(line, len, t);
-  if (n == 0) return ParseError::kNone;  // blank line: nothing to do, no reply
-  if (n > kMaxLineTokens) return ParseError::kExtraArgument;
+//! The command of n (1..kMaxLineTokens) tokens of the line (len bytes).
+inline ParseError parse_tokens(const Token* t, uint8_t n, const char* line, uint8_t len, Command* cmd) {
   const Token& w = t[0];
   if (token_is(w, words::kGait)) return parse_gait(t, n, cmd);
   if (token_is(w, words::kAvoid)) return parse_avoid(t, n, cmd);
   if (token_is(w, words::kCal)) return parse_cal(t, n, cmd);
   if (token_is(w, words::kDeadman) && n >= 2 && token_is(t[1], words::kOff)) {
     cmd->kind = CommandKind::kDeadman;  // arg[0] = 0: off, from a checked line only (needs_checked_line())
+    cmd->usage = Usage::kDeadman;
     return no_args(n, 2);
   }
   for (uint8_t i = 0; i < kWordCommandCount; ++i) {
@@ -225,6 +225,7 @@ inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd
     flash_copy(&wc, &kWordCommands[i], sizeof wc);
     if (!token_is(w, wc.word)) continue;
     cmd->kind = wc.kind;
+    cmd->usage = wc.usage;
     if (wc.count == 0) return no_args(n, 1);
     const ParseError e = number_args(t, n, 1, wc.count, wc.slot, wc.decimals, wc.lo, wc.hi, cmd);
     if (e != ParseError::kNone) return e;
@@ -240,6 +241,34 @@ inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd
     if (c == 'w' || c == 'u' || c == 'v' || c == 'x') { cmd->kind = CommandKind::kLight; cmd->arg[0] = c; return ParseError::kNone; }
   }
   return ParseError::kUnknownCommand;
+}
+
+}  // namespace detail
+
+//! True for a command that disarms a failsafe: the deadman off. It runs only
+//! from a checked line (command_parser.h), a form that no line glued from
+//! pieces of others and no typo produces; no number turns the deadman off.
+inline bool needs_checked_line(const Command& c) { return c.kind == CommandKind::kDeadman && c.arg[0] == 0; }
+
+//! Parses one line (len bytes, printable ASCII, no line ending). On success
+//! returns kNone and fills *cmd (source kLine); otherwise returns the error,
+//! with cmd->usage saying which valid values its reply names. A line of
+//! blanks is an error too (err 1 empty line): every line gets a reply.
+inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd) {
+  using namespace detail;
+  *cmd = make_command(CommandKind::kNone, CommandSource::kLine);
+  Token t[kMaxLineTokens];
+  const uint8_t n_split = split_tokens(line, len, t);
+  if (n_split == 0) {
+    cmd->usage = Usage::kEmptyLine;
+    return ParseError::kUnknownCommand;
+  }
+  // More tokens than any command takes: the command word still says which
+  // usage the reply names (an unknown word stays err 1).
+  const uint8_t n = n_split > kMaxLineTokens ? kMaxLineTokens : n_split;
+  const ParseError e = parse_tokens(t, n, line, len, cmd);
+  if (n_split > kMaxLineTokens && e != ParseError::kUnknownCommand) return ParseError::kExtraArgument;
+  return e;
 }
 
 }  // namespace strider

@@ -212,7 +212,12 @@ class CommandParser {
     }
     ParseError e = parse_command_line(text, text_len, out);
     if (e == ParseError::kNone && !checked && needs_checked_line(*out)) e = ParseError::kChecksumRequired;
-    if (e != ParseError::kNone) return error(e, out, source);
+    if (e != ParseError::kNone) {
+      const Usage usage = out->usage;  // the valid values the reply names
+      error(e, out, source);
+      out->usage = usage;
+      return ParseResult::kError;
+    }
     out->source = source;
     return out->kind == CommandKind::kNone ? ParseResult::kNothing : ParseResult::kCommand;
   }

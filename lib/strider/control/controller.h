@@ -11,6 +11,8 @@
 //!   bool set_gait(const char* name);      // false: no such gait for this robot
 //!   bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw);  // [0.1 deg]; false: refused
 //!   bool set_body_height(int32_t height); // [0.1 mm]; false: out of the robot's range
+//!   const char* gait_names();             // the robot's gaits, space-separated, in flash
+//!   const MotionReach& reach();           // heights and angles it reaches (motion_reach.h)
 //!   void apply_settings(const Settings& s);  // trims, oscillator, PWM frequency
 //!   void write_status(ReplyWriter& w);    // appends its own ` key=value` fields to `status`
 #ifndef STRIDER_CONTROL_CONTROLLER_H
@@ -22,6 +24,8 @@
 #include "calibration.h"
 #include "command_parser.h"
 #include "deadman.h"
+#include "error_hints.h"
+#include "motion_reach.h"
 #include "reply.h"
 #include "reply_texts.h"
 #include "robot_mode.h"
@@ -145,7 +149,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   STRIDER_NOINLINE bool handle(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
     if (r == ParseResult::kNothing) return false;
     if (r == ParseResult::kError) {
-      write_parse_error(w, c.error);
+      write_parse_error(w, c, sink_.gait_names());
       return true;
     }
     if (c.kind != CommandKind::kRcEcho) deadman_.feed(now_ms);
@@ -154,6 +158,18 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   }
 
   void fail(ReplyWriter& w, ControlError e, FlashText reason) { write_error(w, uint8_t(e), reason); }
+
+  //! err 24 with what the legs reach (pose: one angle at a time).
+  void refused(ReplyWriter& w, bool pose) {
+    const MotionReach& r = sink_.reach();
+    fail(w, ControlError::kRefused, pose ? FlashText{text::kPoseRefused_} : FlashText{text::kHeightRefused_});
+    if (!pose) {
+      w.format(FlashText{text::kHeightRangeFmt}, r.height_min_mm, r.height_max_mm);
+      return;
+    }
+    w.format(FlashText{text::kPoseRangesFmt}, r.angle_min_deg[0], r.angle_max_deg[0], r.angle_min_deg[1]);
+    w.format(FlashText{text::kPoseRanges2Fmt}, r.angle_max_deg[1], r.angle_min_deg[2], r.angle_max_deg[2]);
+  }
 
   void stop() {
     cmd_ = out_ = Twist{0, 0, 0};
@@ -197,15 +213,19 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
         w.format(FlashText{text::kOkSpeedFmt}, c.arg[0]);
         return;
       case CommandKind::kGait:
-        if (!sink_.set_gait(c.word)) return fail(w, ControlError::kUnknownGait, FlashText{text::kUnknownGait});
+        if (!sink_.set_gait(c.word)) {
+          fail(w, ControlError::kUnknownGait, FlashText{text::kUnknownGait_});
+          w.text(FlashText{sink_.gait_names()});
+          return;
+        }
         w.text(FlashText{text::kOkGait_}).text(c.word);
         return;
       case CommandKind::kPose:
-        if (!sink_.set_body_pose(c.arg[0], c.arg[1], c.arg[2])) return fail(w, ControlError::kRefused, FlashText{text::kPoseRefused});
+        if (!sink_.set_body_pose(c.arg[0], c.arg[1], c.arg[2])) return refused(w, true);
         w.format(FlashText{text::kOkPoseFmt}, c.arg[0], c.arg[1], c.arg[2]);
         return;
       case CommandKind::kHeight:
-        if (!sink_.set_body_height(c.arg[0])) return fail(w, ControlError::kRefused, FlashText{text::kHeightRefused});
+        if (!sink_.set_body_height(c.arg[0])) return refused(w, false);
         w.format(FlashText{text::kOkHeightFmt}, c.arg[0]);
         return;
       case CommandKind::kAvoidEnable:
@@ -283,9 +303,13 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
         return;
       }
       case CommandKind::kStatus: return status(w);
-      case CommandKind::kHelp:
-        w.text(FlashText{text::kOkHelp});
+      case CommandKind::kHelp: {
+        const MotionReach& r = sink_.reach();
+        w.text(FlashText{text::kOkHelp_}).text(FlashText{text::kCommandList});
+        w.text(FlashText{text::kHelpGaits_}).text(FlashText{sink_.gait_names()});
+        w.format(FlashText{text::kHelpHeightFmt}, r.height_min_mm, r.height_max_mm);
         return;
+      }
       case CommandKind::kLight: w.text(FlashText{text::kOkLightIgnored}); return;
       case CommandKind::kRcEcho: w.text(FlashText{text::kOkRc_}).ch(char(c.arg[0])); return;
       default: w.text(FlashText{text::kOk}); return;

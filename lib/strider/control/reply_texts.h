@@ -25,25 +25,33 @@ constexpr char kStatusSpeedFmt[] STRIDER_PROGMEM = " speed=" "\1" " vx=" "\2" " 
 constexpr char kOkCalShowFmt[] STRIDER_PROGMEM = "ok cal osc=" "\1" " trims=";
 constexpr char kInfoDeadmanStop[] STRIDER_PROGMEM = "info deadman stop";
 constexpr char kInfoAvoid_[] STRIDER_PROGMEM = "info avoid ";
-constexpr char kCalibrating[] STRIDER_PROGMEM = "calibrating";
+constexpr char kCalibrating[] STRIDER_PROGMEM = "calibrating: cal save or cal abort first";
 constexpr char kWz[] STRIDER_PROGMEM = "wz";
 constexpr char kOkStop[] STRIDER_PROGMEM = "ok stop";
 constexpr char kOkRelax[] STRIDER_PROGMEM = "ok relax";
-constexpr char kUnknownGait[] STRIDER_PROGMEM = "unknown gait";
+constexpr char kUnknownGait_[] STRIDER_PROGMEM = "unknown gait: ";
 constexpr char kOkGait_[] STRIDER_PROGMEM = "ok gait ";
-constexpr char kPoseRefused[] STRIDER_PROGMEM = "pose refused";
-constexpr char kHeightRefused[] STRIDER_PROGMEM = "height refused";
-constexpr char kServoFault[] STRIDER_PROGMEM = "servo fault";
+// err 24 with what the legs reach (motion_reach.h): angles one at a time at
+// the standing height, heights with the body level.
+constexpr char kPoseRefused_[] STRIDER_PROGMEM = "pose refused: ";
+constexpr char kHeightRefused_[] STRIDER_PROGMEM = "height refused: ";
+constexpr char kPoseRangesFmt[] STRIDER_PROGMEM = "roll " "\1" ".." "\1" " pitch " "\1";
+constexpr char kPoseRanges2Fmt[] STRIDER_PROGMEM = ".." "\1" " yaw " "\1" ".." "\1" " one at a time";
+constexpr char kHeightRangeFmt[] STRIDER_PROGMEM = "\1" ".." "\1" " with the body level";
+constexpr char kServoFault[] STRIDER_PROGMEM = "servo fault: see pca9685= in status; stop, relax and the rest work";
 constexpr char kOkAvoid_[] STRIDER_PROGMEM = "ok avoid ";
 constexpr char kOn[] STRIDER_PROGMEM = "on";
 constexpr char kOff[] STRIDER_PROGMEM = "off";
 constexpr char kOkCalStart[] STRIDER_PROGMEM = "ok cal start";
 constexpr char kCalStartFirst[] STRIDER_PROGMEM = "cal start first";
-constexpr char kStoreFailed[] STRIDER_PROGMEM = "store failed";
+constexpr char kStoreFailed[] STRIDER_PROGMEM = "store failed: the EEPROM did not read back; nothing saved";
 constexpr char kOkCalSaved[] STRIDER_PROGMEM = "ok cal saved";
 constexpr char kOkCalAborted[] STRIDER_PROGMEM = "ok cal aborted";
 constexpr char kOkSaved[] STRIDER_PROGMEM = "ok saved";
-constexpr char kOkHelp[] STRIDER_PROGMEM = "ok help walk strafe turn vel stop relax speed gait pose height avoid deadman baud cal save status";
+// `help`: "ok help " + the command words (error_hints.h) + the model's gaits and heights.
+constexpr char kOkHelp_[] STRIDER_PROGMEM = "ok help ";
+constexpr char kHelpGaits_[] STRIDER_PROGMEM = "; gaits ";
+constexpr char kHelpHeightFmt[] STRIDER_PROGMEM = "; height " "\1" ".." "\1";
 constexpr char kOkLightIgnored[] STRIDER_PROGMEM = "ok light ignored";
 constexpr char kOkRc_[] STRIDER_PROGMEM = "ok rc ";
 constexpr char kOk[] STRIDER_PROGMEM = "ok";

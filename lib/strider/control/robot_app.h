@@ -47,7 +47,7 @@ constexpr char kSlot[] STRIDER_PROGMEM = "slot";
 constexpr char kSeq[] STRIDER_PROGMEM = "seq";
 constexpr char kOther[] STRIDER_PROGMEM = "other";
 constexpr char kVersion[] STRIDER_PROGMEM = "version";
-constexpr char kErrModel[] STRIDER_PROGMEM = "err 30 model does not fit the firmware";
+constexpr char kErrModel[] STRIDER_PROGMEM = "err 30 model does not fit the firmware: build it for this model";
 constexpr char kGait[] STRIDER_PROGMEM = "gait";
 constexpr char kState[] STRIDER_PROGMEM = "state";
 constexpr char kIk[] STRIDER_PROGMEM = "ik";
@@ -162,7 +162,10 @@ class RobotApp {
     // firmware: nothing else (no line buffer) is on the stack meanwhile,
     // and its copy of the model is gone before announce() runs.
     ok_ = configure_from_model();
-    if (ok_) motion_.walker().refresh();  // the legs' IK, with the model's copy off the stack
+    if (ok_) {
+      motion_.walker().refresh();  // the legs' IK, with the model's copy off the stack
+      motion_.find_reach();        // what `help` and err 24 name
+    }
     announce(link);
     if (!ok_) return false;
     stage_.set_settings(controller_.settings());
@@ -216,6 +219,7 @@ class RobotApp {
     RobotModel model;
     copy_model(&model);
     if (!trial.configure(model, params)) return false;
+    trial.find_reach();
     motion_ = trial;
     return true;
   }
@@ -321,6 +325,8 @@ class RobotApp {
     bool set_gait(const char* name) { return app_.motion_.set_gait(name); }
     bool set_body_pose(int32_t r, int32_t p, int32_t y) { return app_.motion_.set_body_pose(r, p, y); }
     bool set_body_height(int32_t h) { return app_.motion_.set_body_height(h); }
+    const char* gait_names() const { return strider::gait_names(app_.motion_.walker().leg_count()); }
+    const MotionReach& reach() const { return app_.motion_.reach(); }
     void apply_settings(const Settings& s) { app_.stage_.set_settings(s); }
     void write_status(ReplyWriter& w) { app_.write_status(w); }
 

@@ -17,6 +17,7 @@
 #include "../gait/gait_params.h"
 #include "../gait/walker.h"
 #include "avoidance.h"
+#include "motion_reach.h"
 
 namespace strider {
 
@@ -146,6 +147,28 @@ class WalkerMotion {
   S stand_height_mm() const { return stand_height_mm_; }
   const BodyOffsets<S>& offsets() const { return offsets_; }
 
+  //! The heights and angles the legs reach from standing (motion_reach.h),
+  //! as find_reach() found them (all 0 before).
+  const MotionReach& reach() const { return reach_; }
+  //! Finds reach() for the configured walker, sitting and without body
+  //! offsets (after configure(); about 50 checks of every leg's IK).
+  STRIDER_NOINLINE void find_reach() {
+    const int16_t stand_mm = whole_mm(stand_height_mm_);
+    reach_ = find_motion_reach(
+        stand_mm,
+        [this](int16_t mm) {
+          BodyOffsets<S> o = BodyOffsets<S>::zero();
+          o.translation_mm.z = S(int32_t(mm)) - stand_height_mm_;
+          return reachable(o);
+        },
+        [this](uint8_t axis, int16_t deg) {
+          BodyOffsets<S> o = BodyOffsets<S>::zero();
+          const S rad = S(int32_t(deg)) * scalar<S>(kDegToRad);
+          (axis == 0 ? o.roll_rad : axis == 1 ? o.pitch_rad : o.yaw_rad) = rad;
+          return reachable(o);
+        });
+  }
+
  private:
   //! After the walker's configuration: no offsets, no command, the standing height.
   void configured() {
@@ -158,6 +181,12 @@ class WalkerMotion {
   //! the joint limits: exactly for 3-DOF legs; a 2-DOF leg reaches only a
   //! surface, so its nearest point (kClamped) is what the walker uses too.
   bool try_offsets(const BodyOffsets<S>& o) {
+    if (!reachable(o)) return false;
+    offsets_ = o;
+    walker_.engine().set_body_offsets(o);
+    return true;
+  }
+  bool reachable(const BodyOffsets<S>& o) {
     BodyPose<S> pose = BodyPose<S>::zero();
     pose.translation_mm = o.translation_mm;
     pose.roll_rad = o.roll_rad;
@@ -173,8 +202,6 @@ class WalkerMotion {
       const bool two_dof = walker_.dof() == 2;
       if (!(st == IkStatus::kOk || (two_dof && st == IkStatus::kClamped))) return false;
     }
-    offsets_ = o;
-    walker_.engine().set_body_offsets(o);
     return true;
   }
 
@@ -183,6 +210,7 @@ class WalkerMotion {
   S stand_height_mm_ = S(0);
   Twist last_{0, 0, 0};
   bool have_command_ = false;
+  MotionReach reach_{0, 0, {0, 0, 0}, {0, 0, 0}};
 };
 
 }  // namespace strider

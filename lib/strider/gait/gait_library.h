@@ -104,6 +104,16 @@ inline bool same_as_flash(const char* name, const char* flash_name) {
 }
 }  // namespace gait_library_detail
 
+//! The names of the gaits of a leg count, space-separated in list order, as
+//! replies name them (`help`, `err 23`): always in flash on the AVR, read
+//! through flash_u8(); "" for a leg count without gaits.
+constexpr char kQuadrupedGaitNames[] STRIDER_PROGMEM = "walk trot pace crawl";
+constexpr char kHexapodGaitNames[] STRIDER_PROGMEM = "tripod ripple wave";
+constexpr char kNoGaitNames[] STRIDER_PROGMEM = "";
+constexpr const char* gait_names(uint8_t leg_count) {
+  return leg_count == 4 ? kQuadrupedGaitNames : leg_count == 6 ? kHexapodGaitNames : kNoGaitNames;
+}
+
 //! The gait called `name` with `leg_count` legs into *out (copied out of
 //! flash when the tables are there); false (out untouched) when there is none.
 inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {

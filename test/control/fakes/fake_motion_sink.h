@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "control/avoidance.h"
+#include "control/motion_reach.h"
 #include "control/reply.h"
 #include "control/settings.h"
 
@@ -32,7 +33,9 @@ struct FakeMotionSink {
     gait = n;
     return true;
   }
+  bool refuse_pose = false;
   bool set_body_pose(int32_t r, int32_t p, int32_t y) {
+    if (refuse_pose) return false;
     pose[0] = r;
     pose[1] = p;
     pose[2] = y;
@@ -43,6 +46,10 @@ struct FakeMotionSink {
     height = h;
     return true;
   }
+  // What it pretends the legs reach: 10..150 mm (set_body_height() above).
+  strider::MotionReach reach_mm_deg{10, 150, {-20, -15, -30}, {20, 12, 30}};
+  const char* gait_names() const { return "walk trot pace crawl"; }
+  const strider::MotionReach& reach() const { return reach_mm_deg; }
   void write_status(strider::ReplyWriter& w) { w.text(" sink=fake"); }
   void apply_settings(const strider::Settings& s) {
     applied = s;

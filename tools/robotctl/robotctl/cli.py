@@ -63,6 +63,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("lines", nargs="+", metavar="LINE", help="a text command, e.g. 'walk 100'")
     p.add_argument("--rc", action="store_true", help="send the arguments as RC bytes (no line end, no reply)")
     p.add_argument("--raw", action="store_true", help="send as is with \\n \\r escapes; wait one reply per line")
+    p.add_argument("--stand-wait", type=float, default=15.0, metavar="S",
+                   help="after a boot (sim: ports, a USB port that resets the board), wait up to S seconds "
+                        "for the robot to stand before sending (default 15; 0: send at once)")
 
     p = sub.add_parser("status", help="ask for the status line and print its fields")
     p.add_argument("--json", action="store_true", help="one JSON object per status")
@@ -92,6 +95,7 @@ class Drive:
 
     def __init__(self, args, out):
         self.args, self.out, self.vm = args, out, None
+        self.booted = False  # the board booted as the port opened (sim:, a resetting USB port)
         try:
             self._open(args.port)
         except BaseException:
@@ -111,11 +115,12 @@ class Drive:
             # line, then for an answer.
             if not self.link.wait_ready(wait if wait is not None else 30.0):
                 raise LinkError(f"the virtual Mega did not answer: {' | '.join(self.vm.output)}")
+            self.booted = True
             return
         if wait is None:
             wait = 3.0 if RESETTING_PORT.match(port) else 0.0
         if wait > 0:
-            self.link.wait_for(r"^info strider .*ready", wait)
+            self.booted = self.link.wait_for(r"^info strider .*ready", wait) is not None
 
     def _start_sim(self, spec):
         from .sim import DEFAULT_RANGE_MM, VirtualMega, build_dir, find_elf, find_vbench
@@ -143,6 +148,10 @@ class Drive:
 
 def cmd_send(s: Drive, a, out) -> int:
     rc = EXIT_OK
+    # A board that just booted switches its legs on one at a time and stands
+    # up: what is sent meanwhile would meet a robot still rising.
+    if s.booted and a.stand_wait > 0 and not s.link.wait_standing(a.stand_wait):
+        print(f"robotctl: the robot did not stand up within {a.stand_wait:g} s; sending anyway", file=sys.stderr)
     if a.rc:
         bad = [c for c in "".join(a.lines) if c not in RC_BYTES]
         if bad:

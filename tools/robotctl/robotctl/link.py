@@ -284,11 +284,48 @@ class Link:
         self.wait_for(r"^info strider .*ready", timeout)  # missed (already booted?): probing decides
         return self.probe(max(1.0, deadline - self.clock()))
 
+    def wait_standing(self, timeout: float, every: float = 0.25) -> bool:
+        """After a boot: asks `status` every `every` s until the robot stands
+        (its legs switched on, the stand-up over), or will not stand up by
+        itself (relaxed, calibrating, a servo board away; a status without
+        those fields, from an older firmware). False if it still rises after
+        `timeout` s."""
+        deadline = self.clock() + timeout
+        while True:
+            try:
+                fields = status_fields(self.command("status", max(0.5, min(2.0, deadline - self.clock()))).line)
+            except ReplyTimeout:
+                fields = {}
+            if not rising(fields) or self.clock() >= deadline:
+                return not rising(fields)
+            end = min(deadline, self.clock() + every)
+            while self.clock() < end:
+                self.poll(end - self.clock())
+
     def close(self) -> None:
         try:
             self.port.close()
         except Exception:  # closing a broken port must not hide the real error
             pass
+
+
+def status_fields(line: str) -> dict:
+    """`ok status a=1 b=x ...` -> {"a": "1", "b": "x"} (the first of a repeated key)."""
+    out: dict = {}
+    for word in line.split()[2:]:
+        key, eq, value = word.partition("=")
+        if eq:
+            out.setdefault(key, value)
+    return out
+
+
+def rising(fields: dict) -> bool:
+    """True while a status says the robot is standing up by itself: its legs
+    being switched on or its body rising, not relaxed or calibrating, every
+    servo board there."""
+    if fields.get("mode") in (None, "relaxed", "calibrating") or fields.get("pca9685", "ok") != "ok":
+        return False
+    return fields.get("servos") == "starting" or fields.get("state") in ("sitting", "standing_up")
 
 
 def open_port(url: str, baud: int = 9600, timeout: float = 0.05) -> "serial.SerialBase":

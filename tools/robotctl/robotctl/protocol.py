@@ -39,7 +39,9 @@ ERROR_CODES = {
     21: "calibrating",
     22: "store failed",
     23: "unknown gait",
-    24: "pose refused",
+    24: "pose refused",  # or "height refused"
+    30: "model does not fit the firmware",
+    31: "servo fault",
 }
 
 Value = Union[int, float, str]
@@ -92,12 +94,13 @@ def parse_fields(words: List[str]) -> Dict[str, Value]:
 
 @dataclass
 class Reply:
-    """One `ok ...` or `err <code> <reason>` line."""
+    """One `ok ...` or `err <code> <reason>: <valid values>` line."""
     line: str
     ok: bool
     words: List[str] = field(default_factory=list)   #: words after ok/err
     code: Optional[int] = None                        #: error code (err only)
     reason: str = ""                                  #: error reason (err only)
+    valid: str = ""                                   #: what is valid, after the reason's colon (err only)
     fields: Dict[str, Value] = field(default_factory=dict)  #: key=value words
     checked: bool = False                             #: it came with a check that held
 
@@ -130,7 +133,8 @@ def parse_reply(line: str) -> Optional[Reply]:
             reason = " ".join(words[2:])
         except ValueError:
             pass
-    return Reply(line=line, ok=False, words=words[1:], code=code, reason=reason)
+    reason, _, valid = reason.partition(": ")
+    return Reply(line=line, ok=False, words=words[1:], code=code, reason=reason, valid=valid)
 
 
 def parse_status(reply: Reply) -> Dict[str, Value]:

@@ -1,0 +1,309 @@
+// The protocol lines that README.md and docs/*.md show work on the robots
+// they name: each example runs on RobotApp (the firmware's whole loop, the
+// simulator's library mode) of each of those models, standing, and must be
+// answered `ok ...`, or exactly the reply the doc shows after `->`.
+//
+// What counts as an example:
+// - an inline code span that the parser takes as a text command (`walk 100`,
+//   `gait trot`; not `walk V`, not an RC byte, not a line the parser refuses
+//   such as `deadman 0`), unless the words right after it say it is refused
+//   (`err`, `refused`);
+// - in a code block, a line `COMMAND -> REPLY` (the reply compared exactly
+//   unless it has `...`), and the commands after `send` on a robotctl line.
+// Which models: those named (sprawl8, hexapod18, sim:dog12 ...) in the
+// example's paragraph (a table: its row; a code block: the block and the
+// paragraph before it); `hexapods` or `quadrupeds` (or the singular) just
+// before a span narrows it to those legs; none named: every model, as a
+// user may have any of them.
+// Each example runs on a robot of its own that has just stood up (a `cal`
+// step after `cal start`), as a user who reads one example tries it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "control/robot_app.h"
+#include "fakes/fake_store.h"
+#include "fakes/recording_servo.h"
+#include "robots/all_robots.h"
+
+namespace {
+
+struct Example {
+  std::string where;   // file:line
+  std::string line;    // what is sent
+  std::string expect;  // "" = any `ok`; otherwise the reply (a prefix when it ended in `...`)
+  bool hexapods_only = false, quadrupeds_only = false;
+};
+
+struct Group {
+  std::vector<std::string> models;  // empty: every model
+  std::vector<Example> examples;
+};
+
+std::vector<std::string> model_names() {
+  std::vector<std::string> out;
+  for (const strider::RobotModel* m : strider::kAllRobots) out.push_back(m->name);
+  return out;
+}
+
+std::vector<std::string> models_in(const std::string& text) {
+  std::vector<std::string> out;
+  for (const std::string& name : model_names()) {
+    for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+      const bool word_end = at + name.size() >= text.size() || !std::isalnum(uint8_t(text[at + name.size()]));
+      const bool word_start = at == 0 || !std::isalnum(uint8_t(text[at - 1]));
+      if (word_end && word_start) {
+        out.push_back(name);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+// True when the parser takes `text` as one text command (not an RC byte or light).
+bool is_command(const std::string& text) {
+  if (text.empty() || text.size() > strider::kMaxLineBytes) return false;
+  strider::CommandParser p;
+  int commands = 0, errors = 0;
+  strider::Command c;
+  for (unsigned char b : text + "\n") {
+    const strider::ParseResult r = p.feed(b, &c);
+    if (r == strider::ParseResult::kError) ++errors;
+    if (r == strider::ParseResult::kCommand) {
+      if (c.source == strider::CommandSource::kBareByte || c.kind == strider::CommandKind::kLight ||
+          c.kind == strider::CommandKind::kRcEcho)
+        return false;
+      ++commands;
+    }
+  }
+  return commands == 1 && errors == 0;
+}
+
+std::string trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
+// Words of a shell line (quotes removed).
+std::vector<std::string> shell_words(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  char quote = 0;
+  bool any = false;
+  for (char ch : line) {
+    if (quote != 0) {
+      if (ch == quote) quote = 0; else cur += ch;
+    } else if (ch == '"' || ch == '\'') {
+      quote = ch;
+      any = true;
+    } else if (ch == ' ' || ch == '\t') {
+      if (any || !cur.empty()) out.push_back(cur);
+      cur.clear();
+      any = false;
+    } else if (ch == '#') {
+      break;
+    } else {
+      cur += ch;
+    }
+  }
+  if (any || !cur.empty()) out.push_back(cur);
+  return out;
+}
+
+void add_spans(const std::string& file, int line_no, const std::string& line, Group* g) {
+  for (size_t a = line.find('`'); a != std::string::npos; a = line.find('`', a + 1)) {
+    const size_t b = line.find('`', a + 1);
+    if (b == std::string::npos) break;
+    const std::string span = line.substr(a + 1, b - a - 1);
+    const std::string before = line.substr(a >= 12 ? a - 12 : 0, a >= 12 ? 12 : a);
+    const size_t next = line.find('`', b + 1);  // the words after it, up to the next span
+    const std::string after = line.substr(b + 1, std::min<size_t>(30, next == std::string::npos ? 30 : next - b - 1));
+    a = b;
+    if (!is_command(span)) continue;
+    if (after.find("err") != std::string::npos || after.find("refused") != std::string::npos) continue;
+    Example e{file + ":" + std::to_string(line_no), span, ""};
+    e.hexapods_only = before.find("hexapod") != std::string::npos;
+    e.quadrupeds_only = before.find("quadruped") != std::string::npos;
+    g->examples.push_back(e);
+  }
+}
+
+std::vector<Group> examples_of(const std::string& path, const std::string& file) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << path;
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  std::vector<Group> groups;
+  std::string paragraph;  // the text of the paragraph so far
+  std::string last;       // the last paragraph (before a code block)
+  Group cur;
+  auto flush = [&] {
+    if (!cur.examples.empty()) {
+      cur.models = models_in(paragraph);
+      groups.push_back(cur);
+    }
+    cur = Group();
+  };
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const std::string& l = lines[i];
+    if (l.rfind("```", 0) == 0) {  // a code block: with the paragraph before it
+      std::string block = paragraph.empty() ? last : paragraph;
+      Group g;
+      size_t j = i + 1;
+      for (; j < lines.size() && lines[j].rfind("```", 0) != 0; ++j) {
+        const std::string& c = lines[j];
+        block += "\n" + c;
+        const size_t arrow = c.find("->");
+        const std::vector<std::string> words = shell_words(c);
+        if (arrow != std::string::npos) {
+          const std::string cmd = trim(c.substr(0, arrow));
+          std::string reply = trim(c.substr(arrow + 2));
+          if (cmd.empty() || (!is_command(cmd) && cmd[0] != '$')) continue;
+          g.examples.push_back(Example{file + ":" + std::to_string(j + 1), cmd, reply});
+        } else if (!words.empty() && words[0] == "robotctl") {
+          bool after_send = false;
+          for (size_t k = 1; k < words.size(); ++k) {
+            if (words[k] == "send") { after_send = true; continue; }
+            if (after_send && words[k][0] != '-' && is_command(words[k]))
+              g.examples.push_back(Example{file + ":" + std::to_string(j + 1), words[k], ""});
+          }
+        }
+      }
+      flush();
+      if (!g.examples.empty()) {
+        g.models = models_in(block);
+        groups.push_back(g);
+      }
+      paragraph.clear();
+      last.clear();
+      i = j;
+      continue;
+    }
+    if (trim(l).empty() || l[0] == '|' || l[0] == '#') {  // a table row is a paragraph of its own
+      flush();
+      if (!paragraph.empty()) last = paragraph;
+      paragraph.clear();
+      if (l[0] == '|') {
+        paragraph = l;
+        add_spans(file, int(i + 1), l, &cur);
+        flush();
+        paragraph.clear();
+      }
+      continue;
+    }
+    paragraph += "\n" + l;
+    add_spans(file, int(i + 1), l, &cur);
+  }
+  flush();
+  return groups;
+}
+
+struct Lines {
+  std::vector<std::string> sent;
+  void send_line(uint8_t, const char* line) { sent.push_back(line); }
+};
+
+using App = strider::RobotApp<float, strider_test::RecordingServo, strider_test::FakeStore>;
+
+struct Robot {
+  strider_test::RecordingServo out;
+  strider_test::FakeStore store;
+  Lines lines;
+  App app;
+  uint32_t now_us = 1000;
+  explicit Robot(const strider::RobotModel& m) : app(m, out, store) {
+    EXPECT_TRUE(app.begin(now_us, lines));
+    run_ms(3000);  // standing
+  }
+  void run_ms(uint32_t ms) {
+    for (uint32_t t = 0; t < ms; t += 20) {
+      now_us += strider::kTickPeriodUs;
+      app.tick(now_us, lines);
+      out.writes.clear();
+      out.relaxed.clear();
+    }
+  }
+  std::string reply(const std::string& line) {
+    const size_t before = lines.sent.size();
+    for (unsigned char b : line + "\r\n") app.on_byte(1, b, now_us, lines);
+    run_ms(100);
+    for (size_t i = before; i < lines.sent.size(); ++i)
+      if (lines.sent[i].rfind("info", 0) != 0) return lines.sent[i];
+    return "(no reply)";
+  }
+};
+
+const char* const kDocs[] = {"README.md", "docs/protocol.md", "docs/robotctl.md", "docs/vbench.md",
+                             "docs/calibration.md", "docs/simulator.md", "docs/reliability.md",
+                             "docs/firmware.md", "docs/robots.md", "docs/gaits.md", "docs/wiring.md"};
+
+TEST(DocExamples, WorkOnTheModelsTheyName) {
+  int run = 0;
+  for (const char* file : kDocs) {
+    for (const Group& g : examples_of(std::string(STRIDER_SOURCE_DIR) + "/" + file, file)) {
+      for (const strider::RobotModel* m : strider::kAllRobots) {
+        bool named = g.models.empty();
+        for (const std::string& n : g.models) named = named || n == m->name;
+        if (!named) continue;
+        for (const Example& e : g.examples) {
+          if ((e.hexapods_only && m->leg_count != 6) || (e.quadrupeds_only && m->leg_count != 4)) continue;
+          Robot r(*m);
+          const bool cal_step = e.line.rfind("cal ", 0) == 0 && e.line != "cal start" && e.line != "cal show";
+          if (cal_step) EXPECT_EQ(r.reply("cal start"), "ok cal start");
+          const std::string got = r.reply(e.line);
+          ++run;
+          const size_t dots = e.expect.find("...");
+          if (e.expect.empty()) {
+            EXPECT_EQ(got.rfind("ok", 0), 0u) << e.where << " `" << e.line << "` on " << m->name << ": " << got;
+          } else if (dots != std::string::npos) {
+            EXPECT_EQ(got.rfind(trim(e.expect.substr(0, dots)), 0), 0u)
+                << e.where << " `" << e.line << "` on " << m->name << ": " << got;
+          } else {
+            EXPECT_EQ(got, e.expect) << e.where << " `" << e.line << "` on " << m->name;
+          }
+        }
+      }
+    }
+  }
+  std::printf("%d doc examples run\n", run);
+  EXPECT_GT(run, 100);
+}
+
+// The extraction itself: what it finds in a small doc, so that the test
+// above cannot pass by finding nothing.
+TEST(DocExamples, FindsSpansBlocksAndModels) {
+  const std::string path = testing::TempDir() + "doc_examples_probe.md";
+  {
+    std::ofstream out(path);
+    out << "On hexapod18: `walk 100`, `gait ripple`, `walk V` and `deadman 0` (refused).\n\n"
+           "Any robot: `stop`, `gait trot` (hexapods: `gait tripod`). `height 120` is refused on sprawl8.\n\n"
+           "| `speed 40` | row |\n\n"
+           "Examples, sprawl8:\n\n```\ngait ripple    ->  err 23 unknown gait: walk trot pace crawl\n"
+           "robotctl --port sim:dog12 send \"walk 80\" status\n```\n";
+  }
+  const auto groups = examples_of(path, "probe");
+  ASSERT_EQ(groups.size(), 4u);
+  EXPECT_EQ(groups[0].models, std::vector<std::string>{"hexapod18"});
+  ASSERT_EQ(groups[0].examples.size(), 2u);
+  EXPECT_EQ(groups[0].examples[1].line, "gait ripple");
+  EXPECT_EQ(groups[1].models, std::vector<std::string>{"sprawl8"});  // named in the paragraph
+  ASSERT_EQ(groups[1].examples.size(), 3u);                          // not `height 120`: refused
+  EXPECT_TRUE(groups[1].examples[2].hexapods_only);
+  EXPECT_TRUE(groups[2].models.empty());
+  ASSERT_EQ(groups[3].examples.size(), 3u);
+  EXPECT_EQ(groups[3].examples[0].expect, "err 23 unknown gait: walk trot pace crawl");
+  EXPECT_EQ(groups[3].models, (std::vector<std::string>{"sprawl8", "dog12"}));
+  Robot r(strider::kSprawl8);
+  EXPECT_EQ(r.reply("gait ripple"), groups[3].examples[0].expect);
+  EXPECT_EQ(r.reply("height 120").rfind("err 24 height refused: ", 0), 0u);
+}
+
+}  // namespace
