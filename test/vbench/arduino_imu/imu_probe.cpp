@@ -1,6 +1,7 @@
 // The IMU probe: the real Adafruit_MPU6050 library on the virtual Mega,
-// answering one-letter commands on Serial (USB, 115200 baud) so that a test
-// can feed vbench's MPU-6050 and compare:
+// answering one-letter commands on Serial (USB, 115200 baud) or Serial1 (the
+// HC-05's port, 9600 baud; strider-sim's link) on the port they came from,
+// so that a test can feed vbench's MPU-6050 and compare:
 //   r        `event ax ay az gx gy gz t` from getEvent() [m/s^2, rad/s, deg C]
 //   b        `burst` + the 14 data bytes read with Adafruit BusIO, then
 //            `strider` + the same converted by strider::mpu6050_sample<Fixed>
@@ -35,18 +36,19 @@ bool g_ok = false;
 strider::Mpu6050AccelRange g_accel = strider::Mpu6050AccelRange::k2g;   // begin()'s
 strider::Mpu6050GyroRange g_gyro = strider::Mpu6050GyroRange::k500Dps;  // begin()'s
 char g_command = 0;
+Print* g_out = &Serial;  // the port of the command being answered
 
 void event() {
   sensors_event_t a, g, t;
   g_mpu.getEvent(&a, &g, &t);
   const float v[7] = {a.acceleration.x, a.acceleration.y, a.acceleration.z, g.gyro.x, g.gyro.y, g.gyro.z,
                       t.temperature};
-  Serial.print("event");
+  g_out->print("event");
   for (float f : v) {
-    Serial.print(' ');
-    Serial.print(f, 6);
+    g_out->print(' ');
+    g_out->print(f, 6);
   }
-  Serial.println();
+  g_out->println();
 }
 
 float deg(strider::Fixed v) { return v.to_float() * 57.29578f; }
@@ -54,21 +56,21 @@ float deg(strider::Fixed v) { return v.to_float() * 57.29578f; }
 void burst() {
   uint8_t b[strider::kMpu6050BurstBytes];
   const bool ok = read_burst(b);
-  Serial.print(ok ? "burst" : "burst failed");
+  g_out->print(ok ? "burst" : "burst failed");
   for (uint8_t x : b) {
-    Serial.print(' ');
-    Serial.print(x);
+    g_out->print(' ');
+    g_out->print(x);
   }
-  Serial.println();
+  g_out->println();
   const strider::ImuSample<strider::Fixed> s = strider::mpu6050_sample<strider::Fixed>(b, g_accel, g_gyro);
-  Serial.print("strider");
+  g_out->print("strider");
   const strider::Fixed v[7] = {s.accel_m_s2.x, s.accel_m_s2.y, s.accel_m_s2.z, s.gyro_rad_s.x,
                                s.gyro_rad_s.y, s.gyro_rad_s.z, s.temp_c};
   for (strider::Fixed f : v) {
-    Serial.print(' ');
-    Serial.print(f.raw());  // Q16.16: exact
+    g_out->print(' ');
+    g_out->print(f.raw());  // Q16.16: exact
   }
-  Serial.println();
+  g_out->println();
 }
 
 void filter() {
@@ -95,41 +97,50 @@ void filter() {
     }
     delay(20);
   }
-  Serial.print("filter ");
-  Serial.print(f.roll_rad() * 57.29578f, 3);
-  Serial.print(' ');
-  Serial.print(f.pitch_rad() * 57.29578f, 3);
-  Serial.print(' ');
-  Serial.print(deg(x.roll_rad()), 3);
-  Serial.print(' ');
-  Serial.print(deg(x.pitch_rad()), 3);
-  Serial.print(' ');
-  Serial.print(us_f / (kUpdates - 1));
-  Serial.print(' ');
-  Serial.println(us_x / (kUpdates - 1));
+  g_out->print("filter ");
+  g_out->print(f.roll_rad() * 57.29578f, 3);
+  g_out->print(' ');
+  g_out->print(f.pitch_rad() * 57.29578f, 3);
+  g_out->print(' ');
+  g_out->print(deg(x.roll_rad()), 3);
+  g_out->print(' ');
+  g_out->print(deg(x.pitch_rad()), 3);
+  g_out->print(' ');
+  g_out->print(us_f / (kUpdates - 1));
+  g_out->print(' ');
+  g_out->println(us_x / (kUpdates - 1));
 }
 
 void adc() {
-  Serial.print("adc");
+  g_out->print("adc");
   const uint8_t pins[8] = {A0, A1, A2, A3, A4, A5, A6, A7};
   for (uint8_t p : pins) {
-    Serial.print(' ');
-    Serial.print(analogRead(p));
+    g_out->print(' ');
+    g_out->print(analogRead(p));
   }
-  Serial.println();
+  g_out->println();
 }
 
 }  // namespace
 
 void setup() {
   Serial.begin(115200);
+  Serial1.begin(9600);
   g_ok = g_mpu.begin();
   Serial.println(g_ok ? "begin ok" : "begin failed");
 }
 
 void loop() {
-  if (!Serial.available()) return;
-  const char c = char(Serial.read());
+  char c;
+  if (Serial.available()) {
+    c = char(Serial.read());
+    g_out = &Serial;
+  } else if (Serial1.available()) {
+    c = char(Serial1.read());
+    g_out = &Serial1;
+  } else {
+    return;
+  }
   if (g_command == 'a' || g_command == 'g') {
     const uint8_t n = uint8_t((c - '0') & 3);
     if (g_command == 'a') {
@@ -139,8 +150,8 @@ void loop() {
       g_mpu.setGyroRange(mpu6050_gyro_range_t(n));
       g_gyro = strider::Mpu6050GyroRange(n);
     }
-    Serial.print(g_command == 'a' ? "ok accel " : "ok gyro ");
-    Serial.println(n);
+    g_out->print(g_command == 'a' ? "ok accel " : "ok gyro ");
+    g_out->println(n);
     g_command = 0;
     return;
   }
