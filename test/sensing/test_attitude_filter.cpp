@@ -8,6 +8,8 @@
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 #include "math_test_util.h"
 #include "scalar_conv.h"
 #include "sensing/attitude_filter.h"
+#include "sensing/gyro_calibration.h"
 
 using strider::AttitudeFilter;
 using strider::AttitudeStatus;
@@ -50,6 +53,8 @@ struct Tol<float> {
   static constexpr double kRockingSway = 0.035;  // rocking with 0.05-0.1 g of sway and bounce
   static constexpr double kNoisy = 6e-3;         // MPU-6050 noise and a gyro bias, after 20 s
   static constexpr double kBias = 6e-3;          // its bias estimate, across the vertical
+  static constexpr double kRecordedHexapod = 0.017; // recorded: hexapod18's tripod
+  static constexpr double kRecordedSprawl = 0.15;   // recorded: sprawl8's trot
 };
 template <>
 struct Tol<Fixed> {
@@ -63,6 +68,8 @@ struct Tol<Fixed> {
   static constexpr double kRockingSway = 0.035;
   static constexpr double kNoisy = 6e-3;
   static constexpr double kBias = 6e-3;
+  static constexpr double kRecordedHexapod = 0.017;
+  static constexpr double kRecordedSprawl = 0.15;
 };
 
 template <typename S>
@@ -289,6 +296,80 @@ TYPED_TEST(AttitudeFilterTest, NoiseAndGyroBiasConvergence) {
   p.vs_ref.expect_below(Tol<S>::kVsReference);
   p.vs_truth.expect_below(Tol<S>::kNoisy);
   bias.expect_below(Tol<S>::kBias);
+}
+
+// Recorded in the simulator (test/sensing/data: the IMU model's tick means
+// while hexapod18 walks its tripod and sprawl8 trots, with MPU-6050 noise and
+// a 2/-3/1.5 deg/s gyro offset): calibrated on the first still second
+// (GyroCalibration), then the filter from the accelerometer's attitude, as a
+// firmware would run it. Against the double reference fed the same, and
+// against the body's true roll and pitch (which include the walking body's
+// accelerations: the sprawl8 trot's are the roughest here).
+struct Recorded {
+  std::vector<double> t, roll, pitch;
+  std::vector<Eigen::Vector3d> accel, gyro;
+};
+
+Recorded load_recorded(const std::string& name) {
+  Recorded r;
+  std::ifstream in(std::string(STRIDER_SENSING_DATA) + "/" + name);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 't') continue;
+    std::istringstream f(line);
+    double v[9];
+    char comma;
+    for (int i = 0; i < 9; ++i) {
+      f >> v[i];
+      if (i < 8) f >> comma;
+    }
+    r.t.push_back(v[0]);
+    r.accel.emplace_back(v[1], v[2], v[3]);
+    r.gyro.emplace_back(v[4], v[5], v[6]);
+    r.roll.push_back(v[7] * kDeg);
+    r.pitch.push_back(v[8] * kDeg);
+  }
+  return r;
+}
+
+template <typename S>
+void run_recorded(const char* name, double bound_truth) {
+  const Recorded rec = load_recorded(name);
+  ASSERT_GT(rec.t.size(), 500u) << name;
+  AttitudeFilter<S> f;
+  AttitudeReference ref;
+  strider::GyroCalibration<S> cal;
+  MaxError vs_ref(named<S>(name) + ": up vs double reference [rad]");
+  MaxError vs_truth(named<S>(name) + ": roll and pitch vs the body, after calibrating [rad]");
+  double calibrated_t = -1;
+  for (size_t k = 0; k < rec.t.size(); ++k) {
+    const Vec3<S> a = to_s<S>(rec.accel[k]), w = to_s<S>(rec.gyro[k]);
+    if (calibrated_t < 0 && cal.add(w) == strider::GyroCalibrationStatus::kDone) {
+      f = AttitudeFilter<S>();
+      f.set_gyro_bias(cal.offset());
+      ref = AttitudeReference();
+      ref.set_gyro_bias(to_e(f.gyro_bias_rad_s()));
+      calibrated_t = rec.t[k];
+    }
+    f.update(a, w, sc<S>(kDt));
+    ref.update(to_e(a), to_e(w), dbl(sc<S>(kDt)));
+    if (calibrated_t < 0) continue;
+    vs_ref.add(strider_test::angle_between(to_e(f.up()), ref.up()), rec.t[k]);
+    vs_truth.add(dbl(f.roll_rad()) - rec.roll[k], rec.t[k]);
+    vs_truth.add(dbl(f.pitch_rad()) - rec.pitch[k], rec.t[k]);
+  }
+  EXPECT_GT(calibrated_t, 0) << name;
+  EXPECT_LT(calibrated_t, 5) << name;
+  EXPECT_NEAR(dbl(cal.offset().x), 2 * kDeg, 0.2 * kDeg);
+  EXPECT_NEAR(dbl(cal.offset().y), -3 * kDeg, 0.2 * kDeg);
+  vs_ref.expect_below(Tol<S>::kVsReference);
+  vs_truth.expect_below(bound_truth);
+}
+
+TYPED_TEST(AttitudeFilterTest, RecordedSimulatorTraces) {
+  using S = TypeParam;
+  run_recorded<S>("hexapod18_tripod_imu.csv", Tol<S>::kRecordedHexapod);
+  run_recorded<S>("sprawl8_forward_imu.csv", Tol<S>::kRecordedSprawl);
 }
 
 // --- edge cases ---------------------------------------------------------
