@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -239,7 +240,8 @@ TEST_F(ImuProbe, AttitudeFilterOnTheMega) {
 }
 
 std::string run_vbench(const std::string& args, const std::string& script_text) {
-  const std::string script = std::string("/tmp/strider_vbench_imu_") + std::to_string(getpid()) + ".vb";
+  const char* dir = std::getenv("TMPDIR");
+  const std::string script = std::string(dir ? dir : "/tmp") + "/strider_vbench_imu_" + std::to_string(getpid()) + ".vb";
   {
     std::ofstream s(script);
     s << script_text;

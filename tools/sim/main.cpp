@@ -25,6 +25,7 @@ int usage() {
                "                   [--solver mlcp|pgs] [--cfm CFM] [--friction MU] [--foot-pad MM]\n"
                "                   [--step-height MM] [--step-length MM] [--cycle S] [--swing SHAPE]\n"
                "                   [--imu] [--imu-ideal] [--imu-seed N] [--imu-gyro-bias X,Y,Z] [--imu-accel-bias X,Y,Z]\n"
+               "                   [--imu-bandwidth HZ] [--imu-single-sample]\n"
                "                   [--battery-cells N] [--battery-mah C] [--battery-ohm R] [--battery-soc S]\n"
                "                   [--battery-divider K] [--battery-pin P] [--quiet]\n"
                "  SCENARIO  scenario file (robot, duration, obstacle box, at T send TEXT)\n"
@@ -46,7 +47,9 @@ int usage() {
                "            full; dog12: 3 cells, 5000 mAh, 0.04 ohm); --battery-divider, --battery-pin:\n"
                "            pack volts per pin volt (3) on A0..A7 (0)\n"
                "  --imu-bandwidth HZ  the IMU's low-pass (default 260, no filter; firmware mode: the\n"
-               "            firmware's DLPF setting)\n");
+               "            firmware's DLPF setting)\n"
+               "  --imu-single-sample  the trace's attitude filter takes one reading a tick, not the\n"
+               "            tick's mean\n");
   return 2;
 }
 
@@ -113,6 +116,8 @@ int main(int argc, char** argv) {
       if (!value(&v)) return usage();
       opt.sensors.imu.bandwidth_hz = std::atof(v.c_str());
       if (!(opt.sensors.imu.bandwidth_hz >= 1 && opt.sensors.imu.bandwidth_hz <= 1000)) return usage();
+    } else if (a == "--imu-single-sample") {
+      opt.sensors.filter_takes_mean = false;
     } else if (a == "--imu-seed") {
       if (!value(&v)) return usage();
       opt.sensors.imu.seed = uint32_t(std::strtoul(v.c_str(), nullptr, 0));

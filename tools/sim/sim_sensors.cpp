@@ -24,7 +24,7 @@ void RobotSensors::step(const World& world, double dt) {
   if (time_s_ >= next_filter_s_ - 1e-9) {
     float m[6];
     for (int i = 0; i < 6; ++i) {
-      m[i] = float(tick_sum_[i] / tick_samples_);
+      m[i] = float(options_.filter_takes_mean ? tick_sum_[i] / tick_samples_ : v[i]);
       tick_sum_[i] = 0;
     }
     tick_samples_ = 0;

@@ -42,6 +42,9 @@ struct SensorOptions {
   ImuConfig imu;
   BatteryOverrides battery;
   double filter_period_s = 0.02;  // the firmware's tick
+  // The filter takes the mean of the readings over each tick (true), or only
+  // the one at the tick, as a firmware reading the part once a tick does.
+  bool filter_takes_mean = true;
   // The filter's bias starts from the gyro's mean over the first still
   // second (strider::GyroCalibration at the tick: 50 readings within 2 deg/s
   // of each other), as a firmware calibrates at power-up, and the filter
