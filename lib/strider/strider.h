@@ -77,6 +77,12 @@
 #include "control/servo_stage.h"
 #include "control/robot_app.h"
 
+// sensing: IMU samples, MPU-6050 register words, gyro offset, roll and pitch
+#include "sensing/imu_sample.h"
+#include "sensing/mpu6050_sample.h"
+#include "sensing/gyro_calibration.h"
+#include "sensing/attitude_filter.h"
+
 #pragma pop_macro("degrees")
 #pragma pop_macro("radians")
 #pragma pop_macro("sq")

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "imu_model.h"
 #include "robots/robot_model.h"
 #include "servo_model.h"
 
@@ -18,6 +19,15 @@ namespace strider_sim {
 // The HC-SR04's view of the world: distance to the nearest echo [mm], or a
 // negative value when nothing is within range. Called when the robot pings.
 using RangeFn = std::function<double()>;
+
+// What the robot's own sensors read, set before each advance_to(): the
+// MPU-6050 (when fitted) and the battery divider's output on an analog pin.
+struct SensorInputs {
+  bool imu_fitted = false;   // an MPU-6050 at 0x68 (firmware mode: vbench's, fed every physics step)
+  ImuReading imu;            // body frame = the chip's, mounted flat with its x arrow forward
+  int battery_pin = 0;       // A0..A7
+  double battery_pin_v = 0;  // [V]
+};
 
 class Driver {
  public:
@@ -30,6 +40,12 @@ class Driver {
   virtual void send(const std::string& bytes, uint64_t at_us) = 0;
   // Runs the robot's controller up to simulated time now_us.
   virtual void advance_to(uint64_t now_us) = 0;
+  // The sensors' readings from now on (a driver ignores what its robot has no use for).
+  virtual void set_sensors(const SensorInputs& s) { sensors_ = s; }
+  const SensorInputs& sensors() const { return sensors_; }
+  // The bandwidth the robot set its IMU's low-pass filter to [Hz]; 0: not
+  // known (library mode, or no IMU), the IMU model keeps its own.
+  virtual double imu_bandwidth_hz() const { return 0; }
   // What every channel sends now (kMaxChannels entries).
   virtual const ChannelPulse* pulses() const = 0;
   // Lines the robot sent on either port since the last call (without endings).
@@ -40,6 +56,9 @@ class Driver {
     (void)x_mm, (void)y_mm, (void)yaw_rad;
     return false;
   }
+
+ protected:
+  SensorInputs sensors_;  // library mode: for the robot's code once it reads an IMU and a battery
 };
 
 // Gait defaults to walk instead of the model's (gait_params.h), for trying a

@@ -1,7 +1,8 @@
 // FirmwareDriver: the real firmware ELF on the virtual Mega (tools/vbench):
 // scenario bytes go into its UART1 (HC-05) at the baud it programmed, its
-// PCA9685 boards' pulse widths drive the joint motors, and the HC-SR04's
-// echo comes from the world's ray cast.
+// PCA9685 boards' pulse widths drive the joint motors, the HC-SR04's echo
+// comes from the world's ray cast, the MPU-6050 (when fitted) reads the IMU
+// model and the battery divider's pin the battery model.
 #include "driver.h"
 
 #ifdef STRIDER_SIM_HAVE_VMEGA
@@ -51,6 +52,22 @@ class FirmwareDriver : public Driver {
   }
 
   const ChannelPulse* pulses() const override { return pulses_; }
+
+  double imu_bandwidth_hz() const override {
+    if (!mega_.imu_present()) return 0;
+    return ImuModel::dlpf_bandwidth_hz(mega_.imu().reg(strider_vmega::Mpu6050::kConfig) & 7);
+  }
+
+  void set_sensors(const SensorInputs& s) override {
+    Driver::set_sensors(s);
+    if (s.imu_fitted != mega_.imu_present()) mega_.set_imu_present(s.imu_fitted);
+    if (s.imu_fitted) {
+      mega_.set_imu_accel_m_s2(s.imu.accel_m_s2.x, s.imu.accel_m_s2.y, s.imu.accel_m_s2.z);
+      mega_.set_imu_gyro_rad_s(s.imu.gyro_rad_s.x, s.imu.gyro_rad_s.y, s.imu.gyro_rad_s.z);
+      mega_.set_imu_temp_c(s.imu.temp_c);
+    }
+    mega_.set_adc_volts(s.battery_pin, s.battery_pin_v);
+  }
 
   std::vector<std::string> take_lines() override {
     partial_ += mega_.take_output(kBluetoothUart);

@@ -11,11 +11,24 @@
 
 namespace {
 
+// "X,Y,Z" -> v; false on anything else.
+bool parse_vec(const std::string& text, strider_sim::Vec* v) {
+  double x, y, z;
+  char tail;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &tail) != 3) return false;
+  *v = strider_sim::Vec{x, y, z};
+  return true;
+}
+
 int usage() {
   std::fprintf(stderr,
                "usage: strider-sim SCENARIO --out DIR [--firmware ELF] [--step SECONDS] [--iterations N]\n"
                "                   [--solver mlcp|pgs] [--cfm CFM] [--friction MU] [--foot-pad MM]\n"
-               "                   [--step-height MM] [--step-length MM] [--cycle S] [--swing SHAPE] [--quiet]\n"
+               "                   [--step-height MM] [--step-length MM] [--cycle S] [--swing SHAPE]\n"
+               "                   [--imu] [--imu-ideal] [--imu-seed N] [--imu-gyro-bias X,Y,Z] [--imu-accel-bias X,Y,Z]\n"
+               "                   [--imu-bandwidth HZ] [--imu-single-sample]\n"
+               "                   [--battery-cells N] [--battery-mah C] [--battery-ohm R] [--battery-soc S]\n"
+               "                   [--battery-divider K] [--battery-pin P] [--quiet]\n"
                "  SCENARIO  scenario file (robot, duration, obstacle box, at T send TEXT)\n"
                "  --out     output folder: metrics.json, trace.csv, robot.log\n"
                "  --firmware  run the firmware ELF on the virtual Mega instead of the library\n"
@@ -25,7 +38,19 @@ int usage() {
                "  --foot-pad  feet as capsules across the leg, MM to each side (default 0: balls)\n"
                "  --step-height, --step-length, --cycle, --swing  the gait defaults to walk instead of\n"
                "            the model's (library mode): swing apex [mm], preferred stride [mm], cycle\n"
-               "            at low speed [s], swing shape (rectangle semicircle ellipse cycloid parabola bezier)\n");
+               "            at low speed [s], swing shape (rectangle semicircle ellipse cycloid parabola bezier)\n"
+               "  --imu     an MPU-6050 is fitted (as the scenario's `imu on`): in firmware mode vbench's\n"
+               "            answers at 0x68, fed by the IMU model every physics step\n"
+               "  --imu-ideal  no noise and no offsets; --imu-seed: the noise and the drawn offsets\n"
+               "  --imu-gyro-bias, --imu-accel-bias  the offsets [deg/s], [mg] instead of drawn ones\n"
+               "            (default: drawn within the data sheet's +-20 deg/s, +-50/50/80 mg)\n"
+               "  --battery-cells, -mah, -ohm, -soc  the LiPo pack (default 2 cells, 2200 mAh, 0.06 ohm,\n"
+               "            full; dog12: 3 cells, 5000 mAh, 0.04 ohm); --battery-divider, --battery-pin:\n"
+               "            pack volts per pin volt (3) on A0..A7 (0)\n"
+               "  --imu-bandwidth HZ  the IMU's low-pass (default 260, no filter; firmware mode: the\n"
+               "            firmware's DLPF setting)\n"
+               "  --imu-single-sample  the trace's attitude filter takes one reading a tick, not the\n"
+               "            tick's mean\n");
   return 2;
 }
 
@@ -82,6 +107,43 @@ int main(int argc, char** argv) {
       if (!(opt.gait.cycle_s >= 0.1 && opt.gait.cycle_s <= 10)) return usage();
     } else if (a == "--swing") {
       if (!value(&opt.gait.swing) || opt.gait.swing.empty()) return usage();
+    } else if (a == "--imu") {
+      opt.sensors.imu_fitted = true;
+    } else if (a == "--imu-ideal") {
+      const strider_sim::Vec at = opt.sensors.imu.position_body_mm;
+      opt.sensors.imu = strider_sim::ImuConfig::ideal();
+      opt.sensors.imu.position_body_mm = at;
+    } else if (a == "--imu-bandwidth") {
+      if (!value(&v)) return usage();
+      opt.sensors.imu.bandwidth_hz = std::atof(v.c_str());
+      if (!(opt.sensors.imu.bandwidth_hz >= 1 && opt.sensors.imu.bandwidth_hz <= 1000)) return usage();
+    } else if (a == "--imu-single-sample") {
+      opt.sensors.filter_takes_mean = false;
+    } else if (a == "--imu-seed") {
+      if (!value(&v)) return usage();
+      opt.sensors.imu.seed = uint32_t(std::strtoul(v.c_str(), nullptr, 0));
+    } else if (a == "--imu-gyro-bias" || a == "--imu-accel-bias") {
+      if (!value(&v)) return usage();
+      strider_sim::ImuConfig& c = opt.sensors.imu;
+      if (!parse_vec(v, a == "--imu-gyro-bias" ? &c.gyro_bias_dps : &c.accel_bias_mg)) return usage();
+      if (c.random_bias) {  // the other offset, not given, is 0
+        c.random_bias = false;
+        (a == "--imu-gyro-bias" ? c.accel_bias_mg : c.gyro_bias_dps) = strider_sim::Vec{};
+      }
+    } else if (a == "--battery-cells" || a == "--battery-pin") {
+      if (!value(&v)) return usage();
+      const int n = std::atoi(v.c_str());
+      if (a == "--battery-cells" ? !(n >= 1 && n <= 12) : !(n >= 0 && n <= 7)) return usage();
+      (a == "--battery-cells" ? opt.sensors.battery.cells : opt.sensors.battery.adc_pin) = n;
+    } else if (a == "--battery-mah" || a == "--battery-ohm" || a == "--battery-soc" || a == "--battery-divider") {
+      if (!value(&v)) return usage();
+      const double x = std::atof(v.c_str());
+      strider_sim::BatteryOverrides& b = opt.sensors.battery;
+      if (a == "--battery-mah" && x > 0) b.capacity_mah = x;
+      else if (a == "--battery-ohm" && x >= 0) b.internal_ohm = x;
+      else if (a == "--battery-soc" && x >= 0 && x <= 1) b.soc = x;
+      else if (a == "--battery-divider" && x >= 1) b.divider = x;
+      else return usage();
     } else if (a == "--quiet") {
       quiet = true;
     } else if (a == "-h" || a == "--help") {
@@ -126,6 +188,9 @@ int main(int argc, char** argv) {
       std::printf("gait odometry %.0f mm, the body %.1f %% short of it\n", m.odometry_mm, m.odometry_error_pct);
     if (m.has_obstacles)
       std::printf("closest body-obstacle distance %.0f mm, %d collisions\n", m.min_clearance_mm, m.collisions);
+    std::printf("battery %.2f V -> %.2f V (min %.2f V, max %.1f A, %.1f mAh)%s\n", m.battery_start_v, m.battery_end_v,
+                m.battery_min_v, m.battery_max_a, m.battery_used_mah,
+                m.imu_fitted ? "; MPU-6050 fitted" : "");
     std::printf("wrote %s/metrics.json, trace.csv, robot.log\n", out_dir.c_str());
   }
   return 0;

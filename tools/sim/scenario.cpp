@@ -102,6 +102,11 @@ bool parse_scenario(const std::string& text, Scenario* out, std::string* error) 
       if (words >> extra) return fail("obstacle box takes X Y SX SY SZ [mm]");
       if (v[2] <= 0 || v[3] <= 0 || v[4] <= 0) return fail("obstacle sizes must be > 0");
       s.obstacles.push_back(ObstacleBox{v[0], v[1], v[2], v[3], v[4]});
+    } else if (word == "imu") {
+      std::string v, extra;
+      words >> v;
+      if ((v != "on" && v != "off") || (words >> extra)) return fail("imu takes on or off");
+      s.imu = v == "on";
     } else if (word == "at") {
       std::string t, verb;
       words >> t >> verb;

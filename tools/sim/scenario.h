@@ -3,6 +3,7 @@
 //   duration 20                      # seconds of simulated time
 //   obstacle box X Y SX SY SZ        # mm; axis-aligned box on the ground, centre at X,Y
 //   at T send TEXT                   # at T seconds, send TEXT to the Bluetooth link; \n \r escapes
+//   imu on                           # an MPU-6050 is fitted (firmware mode: vbench's, fed by the IMU model)
 // One directive per line; `#` starts a comment; blank lines are ignored.
 #pragma once
 
@@ -23,6 +24,7 @@ struct Scenario {
   double duration_s = 0;
   std::vector<ObstacleBox> obstacles;
   std::vector<TimedSend> sends;  // sorted by time (stable)
+  bool imu = false;              // `imu on`
 };
 
 // Parses scenario text. On error returns false and sets *error to

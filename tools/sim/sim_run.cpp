@@ -112,6 +112,10 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
     if (!driver) return r;
   }
   if (!driver->begin(&r.error)) return r;
+  SensorOptions so = opt.sensors;
+  so.imu_fitted = so.imu_fitted || sc.imu;
+  RobotSensors sensors(*model, so);
+  sensors.step(world, 0);  // at rest: the readings before the first step
 
   Metrics& m = r.metrics;
   m.robot = model->name;
@@ -132,6 +136,10 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   double all_on_s = -1;
   m.min_clearance_mm = m.min_robot_clearance_mm = 1e9;
   double ox = 0, oy = 0, oyaw = 0;
+  m.imu_fitted = so.imu_fitted;
+  m.imu_gyro_bias_dps = sensors.imu().gyro_bias_dps();
+  m.imu_accel_bias_mg = sensors.imu().accel_bias_mg();
+  m.battery_start_v = m.battery_min_v = sensors.battery().volts();
 
   auto record = [&](double t_s) {
     TraceRow row;
@@ -174,6 +182,17 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
       m.min_clearance_mm = std::min(m.min_clearance_mm, row.clearance_mm);
       m.min_robot_clearance_mm = std::min(m.min_robot_clearance_mm, world.robot_clearance_mm());
     }
+    row.imu = sensors.imu().reading();
+    row.imu_tick = sensors.filter_input();
+    row.imu_roll_deg = sensors.roll_deg();
+    row.imu_pitch_deg = sensors.pitch_deg();
+    row.battery_v = sensors.battery().volts();
+    row.battery_a = sensors.battery().current_a();
+    if (ready && (!so.gyro_calibration || sensors.calibrated_s() >= 0)) {
+      double d = std::fabs(row.imu_roll_deg - row.body.roll_deg);
+      d = std::min(d, 360.0 - d);
+      m.imu_max_error_deg = std::max({m.imu_max_error_deg, d, std::fabs(row.imu_pitch_deg - row.body.pitch_deg)});
+    }
     if (driver->odometry(&ox, &oy, &oyaw)) {
       m.has_odometry = true;
       row.odo_x_mm = ox;
@@ -203,10 +222,15 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
       driver->send(b, uint64_t(std::llround(sc.sends[next_send].at_s * 1e6)));
       ++next_send;
     }
+    driver->set_sensors(sensors.inputs());
     driver->advance_to(t_us);
     take_lines(t);
     world.set_pulses(driver->pulses());
     world.step();
+    if (const double hz = driver->imu_bandwidth_hz()) sensors.set_imu_bandwidth_hz(hz);
+    sensors.step(world, dt);
+    m.battery_min_v = std::min(m.battery_min_v, sensors.battery().volts());
+    m.battery_max_a = std::max(m.battery_max_a, sensors.battery().current_a());
     if (all_on_s < 0 && world.all_servos_on()) all_on_s = double(k + 1) * dt;
     const bool moving = motion_s >= 0 && all_on_s >= 0;
     if (!ready && ((all_on_s >= 0 && double(k + 1) * dt >= all_on_s + settle_s) || moving)) {
@@ -227,6 +251,9 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   m.cpu_time_s = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   m.real_time_factor = m.sim_time_s / std::max(1e-9, m.cpu_time_s);
   m.solver_fallbacks = world.solver_fallbacks();
+  m.imu_calibrated_s = sensors.calibrated_s();
+  m.battery_end_v = sensors.battery().volts();
+  m.battery_used_mah = sensors.battery().used_mah();
   compute_metrics(sc, r);
   r.obstacles = sc.obstacles;
   {
@@ -301,6 +328,18 @@ std::string metrics_json(const Metrics& m) {
   o << "  \"final_yaw_deg\": " << num(m.final_yaw_deg) << ",\n";
   o << "  \"replies_ok\": " << m.replies_ok << ",\n";
   o << "  \"replies_err\": " << m.replies_err << ",\n";
+  o << "  \"imu_fitted\": " << (m.imu_fitted ? "true" : "false") << ",\n";
+  o << "  \"imu_max_error_deg\": " << num(m.imu_max_error_deg) << ",\n";
+  o << "  \"imu_calibrated_s\": " << (m.imu_calibrated_s < 0 ? std::string("null") : num(m.imu_calibrated_s)) << ",\n";
+  o << "  \"imu_gyro_bias_dps\": [" << num(m.imu_gyro_bias_dps.x) << ", " << num(m.imu_gyro_bias_dps.y) << ", "
+    << num(m.imu_gyro_bias_dps.z) << "],\n";
+  o << "  \"imu_accel_bias_mg\": [" << num(m.imu_accel_bias_mg.x, 1) << ", " << num(m.imu_accel_bias_mg.y, 1) << ", "
+    << num(m.imu_accel_bias_mg.z, 1) << "],\n";
+  o << "  \"battery_start_v\": " << num(m.battery_start_v) << ",\n";
+  o << "  \"battery_min_v\": " << num(m.battery_min_v) << ",\n";
+  o << "  \"battery_end_v\": " << num(m.battery_end_v) << ",\n";
+  o << "  \"battery_max_a\": " << num(m.battery_max_a) << ",\n";
+  o << "  \"battery_used_mah\": " << num(m.battery_used_mah, 2) << ",\n";
  o << "  \"ready_s\": " << num(m.ready_s) << ",\n";
   o << "  \"sim_time_s\": " << num(m.sim_time_s) << ",\n";
   o << "  \"wall_time_s\": " << num(m.wall_time_s) << ",\n";
@@ -336,7 +375,9 @@ bool write_outputs(const RunResult& r, const std::string& dir, std::string* erro
     for (int i = 0; i < r.legs; ++i)
       for (int j = 0; j < r.dof; ++j) f << ",target_" << i << "_" << j;
     for (int i = 0; i < r.legs; ++i) f << ",foot_" << i << "_x,foot_" << i << "_y,foot_" << i << "_z,contact_" << i;
-    f << ",com_x_mm,com_y_mm,com_z_mm,sonar_mm,clearance_mm,odo_x_mm,odo_y_mm,odo_yaw_deg\n";
+    f << ",com_x_mm,com_y_mm,com_z_mm,sonar_mm,clearance_mm,odo_x_mm,odo_y_mm,odo_yaw_deg";
+    f << ",imu_ax_m_s2,imu_ay_m_s2,imu_az_m_s2,imu_gx_rad_s,imu_gy_rad_s,imu_gz_rad_s,imu_roll_deg,imu_pitch_deg";
+    f << ",battery_v,battery_a\n";
     for (const TraceRow& row : r.trace) {
       f << num(row.t_s) << ',' << num(row.body.pos_mm.x, 2) << ',' << num(row.body.pos_mm.y, 2) << ','
         << num(row.body.pos_mm.z, 2) << ',' << num(row.body.roll_deg, 2) << ',' << num(row.body.pitch_deg, 2) << ','
@@ -348,7 +389,12 @@ bool write_outputs(const RunResult& r, const std::string& dir, std::string* erro
           << (row.contact[i] ? 1 : 0);
       f << ',' << num(row.com_mm.x, 2) << ',' << num(row.com_mm.y, 2) << ',' << num(row.com_mm.z, 2);
       f << ',' << num(row.sonar_mm, 1) << ',' << num(row.clearance_mm, 1) << ',' << num(row.odo_x_mm, 2) << ','
-        << num(row.odo_y_mm, 2) << ',' << num(row.odo_yaw_deg, 2) << '\n';
+        << num(row.odo_y_mm, 2) << ',' << num(row.odo_yaw_deg, 2);
+      const ImuReading& u = row.imu_tick;
+      f << ',' << num(u.accel_m_s2.x, 4) << ',' << num(u.accel_m_s2.y, 4) << ',' << num(u.accel_m_s2.z, 4) << ','
+        << num(u.gyro_rad_s.x, 5) << ',' << num(u.gyro_rad_s.y, 5) << ',' << num(u.gyro_rad_s.z, 5) << ','
+        << num(row.imu_roll_deg, 3) << ',' << num(row.imu_pitch_deg, 3) << ',' << num(row.battery_v, 3) << ','
+        << num(row.battery_a, 3) << '\n';
     }
     if (!f) return *error = "cannot write trace.csv", false;
   }

@@ -8,6 +8,7 @@
 
 #include "driver.h"
 #include "scenario.h"
+#include "sim_sensors.h"
 #include "world.h"
 
 namespace strider_sim {
@@ -17,6 +18,9 @@ struct RunOptions {
   WorldConfig world;
   GaitOverrides gait;           // library mode only (driver.h)
   double trace_period_s = 0.02; // one trace row per control tick
+  // The IMU and the battery (sim_sensors.h); the scenario's `imu on` fits
+  // the IMU too.
+  SensorOptions sensors;
 };
 
 struct TraceRow {
@@ -30,6 +34,10 @@ struct TraceRow {
   double sonar_mm = -1;
   double clearance_mm = -1;     // body box to the nearest obstacle; -1 without obstacles
   double odo_x_mm = 0, odo_y_mm = 0, odo_yaw_deg = 0;
+  ImuReading imu;                       // what the IMU reads now (noise and offsets included)
+  ImuReading imu_tick;                  // what the filter took: its mean over the last tick (trace.csv's imu_*)
+  double imu_roll_deg = 0, imu_pitch_deg = 0;  // the attitude filter on it
+  double battery_v = 0, battery_a = 0;  // pack terminals, pack current
 };
 
 struct Metrics {
@@ -58,6 +66,12 @@ struct Metrics {
   double odometry_error_pct = 0;   // (odometry - distance along it) / odometry * 100 (seed 003 eq 16)
   double final_x_mm = 0, final_y_mm = 0, final_yaw_deg = 0;
   int replies_ok = 0, replies_err = 0;
+  bool imu_fitted = false;
+  double imu_max_error_deg = 0;     // attitude filter against the body, roll or pitch, from ready_s and the gyro calibration
+  double imu_calibrated_s = -1;     // the gyro's offset measured (sim_sensors.h); -1: never
+  Vec imu_gyro_bias_dps, imu_accel_bias_mg;  // the IMU's offsets (drawn or given)
+  double battery_start_v = 0, battery_min_v = 0, battery_end_v = 0;  // under load
+  double battery_max_a = 0, battery_used_mah = 0;
 };
 
 struct LogLine {

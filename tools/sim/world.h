@@ -68,6 +68,15 @@ struct BodyState {
   Vec vel_mm_s;               // velocity of the body part's COM (Bullet's base) [mm/s]
 };
 
+// How a point fixed to the body moves: what an IMU there senses
+// (imu_model.h turns it into readings).
+struct BodyMotion {
+  Vec vel_mm_s;          // velocity of the point, world frame [mm/s]
+  Vec omega_body_rad_s;  // the body's angular velocity, body frame [rad/s]
+  double rot[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // body -> world rotation: rot * v_body = v_world
+  Vec gravity_m_s2;      // the world's gravity, world frame [m/s^2]
+};
+
 class World {
  public:
   World(const strider::RobotModel& model, const WorldConfig& cfg, const std::vector<ObstacleBox>& obstacles);
@@ -111,6 +120,15 @@ class World {
   bool all_servos_on() const;
   // Centre of mass of the whole robot, world frame [mm].
   Vec com_mm() const;
+  // The motion of a point fixed in the body, given in the body frame from
+  // the body centre [mm] (world_motion.cpp).
+  BodyMotion body_motion(const Vec& point_body_mm) const;
+  // A joint's servo in the last step: the torque its motor applied along the
+  // joint axis [N m] (what it holds and moves), the joint's speed [rad/s],
+  // and whether it receives pulses.
+  double joint_torque_nm(int leg, int j) const;
+  double joint_speed_rad_s(int leg, int j) const;
+  bool joint_on(int leg, int j) const;
   // Steps the exact (MLCP) solver could not solve, so Bullet solved them
   // with PGS instead (always 0 with Solver::kPgs).
   long solver_fallbacks() const;

@@ -166,6 +166,57 @@ bool parse_script_line(const std::string& raw, ScriptEvent* event, bool* has_eve
       *error = "board needs off, on, detach or attach";
       return false;
     }
+  } else if (word == "imu") {
+    ev.kind = ScriptEvent::Kind::kImu;
+    const std::string action = take_word(&rest);
+    int count = 0;
+    if (action == "on") {
+      ev.imu_action = ScriptEvent::ImuAction::kOn;
+      ev.board_address = 0x68;
+      const std::string a = take_word(&rest);
+      if (!a.empty()) {
+        char* end = nullptr;
+        const long addr = std::strtol(a.c_str(), &end, 0);
+        if (*end != 0 || (addr != 0x68 && addr != 0x69)) {
+          *error = "imu on takes the address 0x68 or 0x69";
+          return false;
+        }
+        ev.board_address = int(addr);
+      }
+    } else if (action == "off") {
+      ev.imu_action = ScriptEvent::ImuAction::kOff;
+    } else if (action == "accel" || action == "gyro") {
+      ev.imu_action = action == "accel" ? ScriptEvent::ImuAction::kAccel : ScriptEvent::ImuAction::kGyro;
+      count = 3;
+    } else if (action == "tilt") {
+      ev.imu_action = ScriptEvent::ImuAction::kTilt;
+      count = 2;
+    } else if (action == "temp") {
+      ev.imu_action = ScriptEvent::ImuAction::kTemp;
+      count = 1;
+    } else {
+      *error = "imu needs on, off, accel X Y Z, gyro X Y Z, tilt ROLL PITCH or temp C";
+      return false;
+    }
+    for (int i = 0; i < count; ++i)
+      if (!parse_number(take_word(&rest), &ev.values[i])) {
+        *error = "imu " + action + " needs " + std::to_string(count) + (count == 1 ? " number" : " numbers");
+        return false;
+      }
+  } else if (word == "adc") {
+    ev.kind = ScriptEvent::Kind::kAdc;
+    std::string p = take_word(&rest);
+    if (!p.empty() && (p[0] == 'A' || p[0] == 'a')) p = p.substr(1);
+    double pin = -1;
+    if (!parse_number(p, &pin) || pin < 0 || pin > 7 || pin != std::floor(pin)) {
+      *error = "adc needs an analog pin A0..A7";
+      return false;
+    }
+    ev.pin = int(pin);
+    if (!parse_number(take_word(&rest), &ev.values[0]) || ev.values[0] < 0) {
+      *error = "adc needs volts >= 0 after the pin";
+      return false;
+    }
   } else if (word == "bus") {
     ev.kind = ScriptEvent::Kind::kBus;
     const std::string state = take_word(&rest);
@@ -250,6 +301,25 @@ void apply_event(const ScriptEvent& event, VirtualMega& mega) {
         }
       }
       break;
+    case ScriptEvent::Kind::kImu: {
+      const double* v = event.values;
+      switch (event.imu_action) {
+        case ScriptEvent::ImuAction::kOn: mega.set_imu_present(true, uint8_t(event.board_address)); break;
+        case ScriptEvent::ImuAction::kOff: mega.set_imu_present(false); break;
+        case ScriptEvent::ImuAction::kAccel: mega.set_imu_accel_m_s2(v[0], v[1], v[2]); break;
+        case ScriptEvent::ImuAction::kGyro: mega.set_imu_gyro_rad_s(v[0], v[1], v[2]); break;
+        case ScriptEvent::ImuAction::kTemp: mega.set_imu_temp_c(v[0]); break;
+        case ScriptEvent::ImuAction::kTilt: {
+          // Gravity's "up" in the body frame of Z-Y-X roll and pitch, at rest.
+          const double r = v[0] * M_PI / 180.0, p = v[1] * M_PI / 180.0, g = Mpu6050::kG;
+          mega.set_imu_accel_m_s2(-g * std::sin(p), g * std::sin(r) * std::cos(p), g * std::cos(r) * std::cos(p));
+          mega.set_imu_gyro_rad_s(0, 0, 0);
+          break;
+        }
+      }
+      break;
+    }
+    case ScriptEvent::Kind::kAdc: mega.set_adc_volts(event.pin, event.values[0]); break;
     case ScriptEvent::Kind::kFlood: {
       Flood f;
       f.units.push_back(event.text);

@@ -17,6 +17,13 @@
 //   at T flood R S TEXT   a link flood on UART1: TEXT R times a second (or
 //                      R = max: back to back) for S seconds
 //   at T flood0 R S TEXT  the same on UART0
+//   at T imu on [ADDR] | off   an MPU-6050 at ADDR (0x68) connected (in its
+//                      power-on state) / disconnected
+//   at T imu accel X Y Z   what it measures, its own axes: specific force [m/s^2]
+//   at T imu gyro X Y Z    rates [rad/s]
+//   at T imu tilt R P      at rest tilted by roll R and pitch P [deg] (Z-Y-X)
+//   at T imu temp C        die temperature [deg C]
+//   at T adc PIN V     V volts on analog pin PIN (A0..A7)
 // Without `at T` a directive applies at once (commands piped into vbench).
 #ifndef STRIDER_TOOLS_VBENCH_SCRIPT_H
 #define STRIDER_TOOLS_VBENCH_SCRIPT_H
@@ -30,7 +37,8 @@ namespace strider_vmega {
 class VirtualMega;
 
 struct ScriptEvent {
-  enum class Kind { kSend, kRange, kReset, kPowerCut, kEepromCut, kEchoStuck, kBoard, kBus, kHang, kFlood };
+  enum class Kind { kSend, kRange, kReset, kPowerCut, kEepromCut, kEchoStuck, kBoard, kBus, kHang, kFlood, kImu, kAdc };
+  enum class ImuAction { kOn, kOff, kAccel, kGyro, kTilt, kTemp };
   enum class BoardAction { kOff, kOn, kDetach, kAttach };
   bool immediate = false;  // no `at T`
   uint64_t time_us = 0;
@@ -45,6 +53,9 @@ struct ScriptEvent {
   bool bus_stuck = false;  // kBus
   double per_s = 0;        // kFlood: repetitions of text a second, 0 = back to back
   double duration_s = 0;   // kFlood: how long
+  ImuAction imu_action = ImuAction::kOn;  // kImu
+  double values[3] = {0, 0, 0};  // kImu: accel, gyro, tilt (roll, pitch), temp; kAdc: volts in [0]
+  int pin = 0;             // kAdc: analog pin 0..7
   int line = 0;            // source line, for messages
 };
 

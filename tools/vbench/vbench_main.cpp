@@ -1,7 +1,7 @@
 // vbench: runs a firmware ELF on the virtual Mega (see docs/vbench.md).
 //   vbench --elf F [--eeprom FILE] [--script FILE] [--duration S] [--pty]
 //          [--realtime] [--stdin] [--osc HZ] [--boards LIST] [--pulses CSV] [--log]
-//          [--eeprom-cut N[:erased]]
+//          [--eeprom-cut N[:erased]] [--imu[=ADDR]] [--avcc V]
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -38,12 +38,15 @@ void usage() {
   std::fprintf(stderr,
                "usage: vbench --elf FIRMWARE.elf [--eeprom FILE] [--script FILE] [--duration S]\n"
                "              [--pty] [--realtime] [--stdin] [--osc HZ] [--boards LIST] [--pulses CSV] [--log] [--i2c]\n"
-               "              [--eeprom-cut N[:erased]] [--range MM|none]\n"
+               "              [--eeprom-cut N[:erased]] [--range MM|none] [--imu[=ADDR]] [--avcc V]
+"
                "  --eeprom FILE  EEPROM image loaded at start (if present) and saved at the end\n"
                "  --script FILE  timed directives: at T send TEXT | at T range MM|none|stuck | at T reset |\n"
                "                 at T board ADDR off|on|detach|attach | at T bus stuck|free | at T hang |\n"
                "                 at T power_cut | at T eeprom_cut N [erased] |\n"
-               "                 at T flood RATE|max SECONDS TEXT (send0, flood0: UART0)\n"
+               "                 at T flood RATE|max SECONDS TEXT (send0, flood0: UART0) |\n"
+               "                 at T imu on [ADDR]|off | at T imu accel X Y Z (m/s^2) | at T imu gyro X Y Z (rad/s) |\n"
+               "                 at T imu tilt ROLL PITCH (deg) | at T imu temp C | at T adc A0..A7 VOLTS\n"
                "  --duration S   simulated seconds (default 10; with --pty or --stdin: until stopped)\n"
                "  --pty          bridge UART1 to a new pseudo-terminal (path on the first stdout line)\n"
                "  --realtime     pace simulated time to the wall clock (implied by --pty)\n"
@@ -56,7 +59,10 @@ void usage() {
                "  --log          print pulse changes, resets and an I2C summary\n"
                "  --i2c          print every I2C transaction\n"
                "  --eeprom-cut N[:erased]  the power fails as the firmware starts its (N+1)-th EEPROM\n"
-               "                 byte write (N kept; that byte as it was, or erased) and comes back\n");
+               "                 byte write (N kept; that byte as it was, or erased) and comes back\n"
+               "  --imu[=ADDR]   an MPU-6050 on the bus at 0x68 (or ADDR: 0x69), lying flat at rest;\n"
+               "                 without it nothing answers there\n"
+               "  --avcc V       the ADC's reference, AVCC (default 5.0)\n");
 }
 
 std::string seconds(uint64_t us) {
@@ -216,6 +222,25 @@ int main(int argc, char** argv) {
         return 2;
       }
       eeprom_cut = true;
+    }
+    else if (a == "--imu" || a.rfind("--imu=", 0) == 0) {
+      options.imu_address = 0x68;
+      if (a.size() > 6) {
+        char* end = nullptr;
+        const long addr = std::strtol(a.c_str() + 6, &end, 0);
+        if (*end != 0 || (addr != 0x68 && addr != 0x69)) {
+          std::fprintf(stderr, "vbench: --imu takes the address 0x68 or 0x69\n");
+          return 2;
+        }
+        options.imu_address = uint8_t(addr);
+      }
+    }
+    else if (a == "--avcc") {
+      options.avcc_volts = std::atof(value("--avcc").c_str());
+      if (!(options.avcc_volts >= 1.0 && options.avcc_volts <= 5.5)) {
+        std::fprintf(stderr, "vbench: --avcc out of range (1..5.5 V)\n");
+        return 2;
+      }
     }
     else if (a == "-h" || a == "--help") {
       usage();

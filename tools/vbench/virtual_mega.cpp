@@ -131,6 +131,11 @@ bool VirtualMega::load(const Options& options, std::string* error) {
   avr_connect_irq(s.twi_irq + TWI_IRQ_INPUT, avr_io_getirq(s.avr, AVR_IOCTL_TWI_GETIRQ(0), TWI_IRQ_INPUT));
   avr_connect_irq(avr_io_getirq(s.avr, AVR_IOCTL_TWI_GETIRQ(0), TWI_IRQ_OUTPUT), s.twi_irq + TWI_IRQ_OUTPUT);
   s.hook_twcr();
+  if (options.imu_address != 0) {
+    s.imu.set_address(options.imu_address);
+    s.imu_present = true;
+  }
+  s.hook_adc();
 
   // HC-SR04 on PE5 (trigger, D3) and PE4 (echo, D2 = INT4); LED on PB7 (D13).
   avr_irq_register_notify(avr_io_getirq(s.avr, AVR_IOCTL_IOPORT_GETIRQ('E'), 5), Impl::on_trigger, &s);

@@ -1,7 +1,8 @@
 // VirtualMega: an ATmega2560 at 16 MHz on libsimavr with what a Strider robot
 // wires to it: PCA9685 boards on TWI, the HC-05 on a UART, the HC-SR04 on
 // PE5 (trigger) / PE4 (echo, INT4), EEPROM kept in a file, a reset
-// counter, and power cuts (at once or at the N-th EEPROM write). Time only
+// counter, and power cuts (at once or at the N-th EEPROM write); on demand
+// an MPU-6050 on TWI and voltages on the analog pins (a battery divider). Time only
 // moves inside run_until_us()/run_for_us(), so a physics simulator can
 // advance the firmware in lock-step with its own steps.
 #ifndef STRIDER_TOOLS_VBENCH_VIRTUAL_MEGA_H
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "mpu6050.h"
 #include "pca9685.h"
 
 namespace strider_vmega {
@@ -33,6 +35,11 @@ struct Options {
   uint32_t sonar_echo_delay_us = 460;
   //! Initial sonar range [mm]; negative = no echo (the line stays low).
   double sonar_range_mm = -1;
+  //! An MPU-6050 on the bus at this 7-bit address (0x68, or 0x69 with AD0
+  //! high); 0 = none, the default: nothing answers there.
+  uint8_t imu_address = 0;
+  //! AVCC [V]: the ADC's reference under analogReference(DEFAULT).
+  double avcc_volts = 5.0;
   //! The pulse and I2C logs drop their older half beyond this many entries
   //! (long lock-step runs); clear them after reading to keep everything.
   size_t log_limit = 1000000;
@@ -194,6 +201,27 @@ class VirtualMega {
   double sonar_min_trigger_width_us() const;
   //! Shortest time between two accepted triggers [us] (0 before two).
   uint64_t sonar_min_trigger_interval_us() const;
+
+  // MPU-6050 (absent unless Options::imu_address or set_imu_present()).
+  //! Connects the IMU at address7 (0x68 or 0x69) in its power-on state, or
+  //! disconnects it (nothing answers at its address).
+  void set_imu_present(bool present, uint8_t address7 = 0x68);
+  bool imu_present() const;
+  //! What it measures, in its own axes: specific force [m/s^2] (+9.81 on z
+  //! lying flat), rates [rad/s], die temperature [deg C]. Kept while absent.
+  void set_imu_accel_m_s2(double x, double y, double z);
+  void set_imu_gyro_rad_s(double x, double y, double z);
+  void set_imu_temp_c(double c);
+  //! Register-level view.
+  const Mpu6050& imu() const;
+
+  // Analog inputs A0..A7 (libsimavr converts only those eight).
+  //! The voltage on analog pin `pin` [V] from now on (0 at load).
+  void set_adc_volts(int pin, double volts);
+  double adc_volts(int pin) const;
+  //! The code a conversion of `pin` gives against AVCC, as the chip
+  //! computes it: floor(V x 1024 / AVCC), 0..1023.
+  uint16_t adc_code(int pin) const;
 
   // EEPROM (4 KiB).
   std::vector<uint8_t> eeprom() const;

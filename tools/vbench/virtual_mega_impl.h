@@ -1,8 +1,8 @@
 // VirtualMega's implementation state (see virtual_mega.h), shared by its
 // parts: virtual_mega.cpp (loading, running, the public interface),
 // vmega_uart.cpp (the two UARTs), vmega_twi.cpp (the PCA9685 boards on TWI),
-// vmega_sonar.cpp (the HC-SR04 and the LED pin) and vmega_eeprom.cpp (EEPROM
-// writes and power cuts).
+// vmega_sonar.cpp (the HC-SR04 and the LED pin), vmega_eeprom.cpp (EEPROM
+// writes and power cuts) and vmega_imu.cpp (the MPU-6050 and the ADC).
 #ifndef STRIDER_VBENCH_VIRTUAL_MEGA_IMPL_H
 #define STRIDER_VBENCH_VIRTUAL_MEGA_IMPL_H
 
@@ -176,6 +176,16 @@ struct VirtualMega::Impl {
   void hook_twcr();
   static void twcr_write(avr_t* avr, avr_io_addr_t addr, uint8_t v, void* param);
   void release_bus();
+
+  // --- MPU-6050, ADC (vmega_imu.cpp) ------------------------------------------
+  Mpu6050 imu;
+  bool imu_present = false;
+  bool imu_selected = false;  // addressed in the current transaction
+  static constexpr int kAdcPins = 8;
+  double adc_volts[kAdcPins] = {};
+  void hook_adc();
+  void feed_adc();  // hands simavr the millivolts of every pin
+  static void on_adc_trigger(avr_irq_t*, uint32_t value, void* param);
 
   // --- HC-SR04 --------------------------------------------------------------
   avr_irq_t* echo_irq = nullptr;

@@ -85,6 +85,7 @@ void VirtualMega::Impl::power_cycle() {
   // The boards lost their power too; the HC-05's link and whatever was on
   // its way in is gone.
   for (Pca9685& b : boards) b.power_on_reset();
+  imu.power_on_reset();
   update_pulses();
   for (Uart& p : uart) p.input.clear();
   after_reset();

@@ -1,5 +1,6 @@
 // VirtualMega: the TWI bus with its PCA9685 boards (addressing, ALLCALL, general
-// call SWRST, repeated START) and the decoded pulse widths.
+// call SWRST, repeated START), the MPU-6050 when present, and the decoded
+// pulse widths.
 #include "virtual_mega_impl.h"
 
 #include "avr_twi.h"
@@ -16,6 +17,7 @@ void VirtualMega::Impl::end_transaction(bool stop) {
   if (stop)
     for (int i : selected) boards[size_t(i)].stop();
   selected.clear();
+  imu_selected = false;
   general_call = false;
   in_transaction = false;
 }
@@ -51,6 +53,9 @@ void VirtualMega::Impl::twi_message(uint32_t value) {
     } else if (!selected.empty()) {
       twi_ack(addr8);
       for (int i : selected) boards[size_t(i)].write_byte(data, now_us());
+    } else if (imu_selected) {
+      twi_ack(addr8);
+      imu.write_byte(data, now_us());
     }
     update_pulses();
   }
@@ -59,6 +64,8 @@ void VirtualMega::Impl::twi_message(uint32_t value) {
     if (selected.size() == 1) {
       const uint8_t v = boards[size_t(selected[0])].read_byte();
       avr_raise_irq(twi_irq + TWI_IRQ_INPUT, avr_twi_irq_msg(TWI_COND_READ, addr8, v));
+    } else if (imu_selected) {
+      avr_raise_irq(twi_irq + TWI_IRQ_INPUT, avr_twi_irq_msg(TWI_COND_READ, addr8, imu.read_byte()));
     }
   }
 }
@@ -80,15 +87,20 @@ void VirtualMega::Impl::begin_transaction(uint8_t addr8) {
                            t.address7 == (b.reg(0x05) >> 1);
       if (b.address() == t.address7 || allcall) selected.push_back(int(i));
     }
+    imu_selected = imu_present && selected.empty() && t.address7 == imu.address();
   }
   bool any_reachable = false;
   for (size_t i = 0; i < boards.size(); ++i) any_reachable = any_reachable || reachable(i);
   if (general_call && !any_reachable) general_call = false;  // nobody there to ACK it
-  t.acked = general_call || !selected.empty();
+  t.acked = general_call || !selected.empty() || imu_selected;
   if (t.acked) {
     twi_ack(addr8);
     if (!t.read)
       for (int i : selected) boards[size_t(i)].begin_write();
+    if (imu_selected) {
+      if (t.read) imu.begin_read(now_us());
+      else imu.begin_write();
+    }
   }
   i2c_log.push_back(t);
   trim_log(i2c_log);

@@ -1,0 +1,129 @@
+//! MPU-6050 register words -> an ImuSample in SI units.
+//!
+//! The 14-byte burst read from ACCEL_XOUT_H (0x3B): accel x, y, z, TEMP,
+//! gyro x, y, z, each a big-endian two's-complement word (register map rev
+//! 4.2, sec. 4.17-4.19). Scale factors (product specification rev 3.4, tables
+//! 6.1 and 6.2): accel 16384 / 8192 / 4096 / 2048 LSB per g for +-2 / 4 / 8 /
+//! 16 g (AFS_SEL, ACCEL_CONFIG bits 4:3); gyro 131 / 65.5 / 32.8 / 16.4 LSB
+//! per deg/s for +-250 / 500 / 1000 / 2000 deg/s (FS_SEL, GYRO_CONFIG bits
+//! 4:3); temperature = word / 340 + 36.53 deg C. The same figures as the
+//! Adafruit_MPU6050 library (g = 9.80665 m/s^2).
+//!
+//! Fixed: the word is multiplied as a Q16.16 raw value by the scale times
+//! 2^16, so the result is within 1 LSB of the exact one and no float code
+//! is involved (fixed-point firmwares link none).
+#ifndef STRIDER_SENSING_MPU6050_SAMPLE_H
+#define STRIDER_SENSING_MPU6050_SAMPLE_H
+
+#include <stdint.h>
+
+#include "../math/scalar.h"
+#include "imu_sample.h"
+
+namespace strider {
+
+enum class Mpu6050AccelRange : uint8_t { k2g = 0, k4g = 1, k8g = 2, k16g = 3 };  //!< AFS_SEL
+enum class Mpu6050GyroRange : uint8_t { k250Dps = 0, k500Dps = 1, k1000Dps = 2, k2000Dps = 3 };  //!< FS_SEL
+
+constexpr uint8_t kMpu6050BurstBytes = 14;  //!< ACCEL_XOUT_H (0x3B) .. GYRO_ZOUT_L (0x48)
+
+//! LSB per g of an accel range.
+constexpr double mpu6050_accel_lsb_per_g(Mpu6050AccelRange r) { return 16384.0 / double(1 << uint8_t(r)); }
+//! LSB per deg/s of a gyro range.
+constexpr double mpu6050_gyro_lsb_per_dps(Mpu6050GyroRange r) {
+  return r == Mpu6050GyroRange::k250Dps ? 131.0
+         : r == Mpu6050GyroRange::k500Dps ? 65.5
+         : r == Mpu6050GyroRange::k1000Dps ? 32.8
+                                           : 16.4;
+}
+
+//! The big-endian word at be[0], be[1].
+constexpr int16_t mpu6050_word(const uint8_t* be) { return int16_t(uint16_t(uint16_t(be[0]) << 8 | be[1])); }
+
+namespace detail {
+//! per_lsb in the form mpu6050_times() wants: as it is for float, times
+//! 2^16 for Fixed. Only for constexpr variables (evaluated at compile
+//! time: a call left to run time would pull in soft float).
+template <typename S>
+constexpr S mpu6050_scale(double per_lsb) {
+  return scalar<S>(ScalarTraits<S>::kIsFixed ? per_lsb * 65536.0 : per_lsb);
+}
+inline float mpu6050_times(int16_t word, float scale) { return float(word) * scale; }
+inline Fixed mpu6050_times(int16_t word, Fixed scale) { return Fixed::from_raw(word) * scale; }
+
+template <typename S>
+S mpu6050_accel(int16_t word, Mpu6050AccelRange r) {
+  switch (r) {
+    case Mpu6050AccelRange::k2g: {
+      constexpr S k = mpu6050_scale<S>(kStandardGravity / 16384.0);
+      return mpu6050_times(word, k);
+    }
+    case Mpu6050AccelRange::k4g: {
+      constexpr S k = mpu6050_scale<S>(kStandardGravity / 8192.0);
+      return mpu6050_times(word, k);
+    }
+    case Mpu6050AccelRange::k8g: {
+      constexpr S k = mpu6050_scale<S>(kStandardGravity / 4096.0);
+      return mpu6050_times(word, k);
+    }
+    default: {
+      constexpr S k = mpu6050_scale<S>(kStandardGravity / 2048.0);
+      return mpu6050_times(word, k);
+    }
+  }
+}
+
+template <typename S>
+S mpu6050_gyro(int16_t word, Mpu6050GyroRange r) {
+  constexpr double kRadPerDeg = 0.017453292519943295;
+  switch (r) {
+    case Mpu6050GyroRange::k250Dps: {
+      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 131.0);
+      return mpu6050_times(word, k);
+    }
+    case Mpu6050GyroRange::k500Dps: {
+      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 65.5);
+      return mpu6050_times(word, k);
+    }
+    case Mpu6050GyroRange::k1000Dps: {
+      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 32.8);
+      return mpu6050_times(word, k);
+    }
+    default: {
+      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 16.4);
+      return mpu6050_times(word, k);
+    }
+  }
+}
+}  // namespace detail
+
+//! An accel word [LSB] -> [m/s^2].
+template <typename S>
+S mpu6050_accel_m_s2(int16_t word, Mpu6050AccelRange r) { return detail::mpu6050_accel<S>(word, r); }
+//! A gyro word [LSB] -> [rad/s].
+template <typename S>
+S mpu6050_gyro_rad_s(int16_t word, Mpu6050GyroRange r) { return detail::mpu6050_gyro<S>(word, r); }
+//! The TEMP_OUT word -> [deg C].
+template <typename S>
+S mpu6050_temp_c(int16_t word) {
+  constexpr S k = detail::mpu6050_scale<S>(1.0 / 340.0), offset = scalar<S>(36.53);
+  return detail::mpu6050_times(word, k) + offset;
+}
+
+//! The 14-byte burst from ACCEL_XOUT_H -> a sample in the chip's axes.
+template <typename S>
+ImuSample<S> mpu6050_sample(const uint8_t* burst, Mpu6050AccelRange accel, Mpu6050GyroRange gyro) {
+  ImuSample<S> s;
+  s.accel_m_s2 = Vec3<S>(mpu6050_accel_m_s2<S>(mpu6050_word(burst), accel),
+                         mpu6050_accel_m_s2<S>(mpu6050_word(burst + 2), accel),
+                         mpu6050_accel_m_s2<S>(mpu6050_word(burst + 4), accel));
+  s.temp_c = mpu6050_temp_c<S>(mpu6050_word(burst + 6));
+  s.gyro_rad_s = Vec3<S>(mpu6050_gyro_rad_s<S>(mpu6050_word(burst + 8), gyro),
+                         mpu6050_gyro_rad_s<S>(mpu6050_word(burst + 10), gyro),
+                         mpu6050_gyro_rad_s<S>(mpu6050_word(burst + 12), gyro));
+  return s;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_SENSING_MPU6050_SAMPLE_H
