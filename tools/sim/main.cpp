@@ -14,7 +14,8 @@ int usage() {
   std::fprintf(stderr,
                "usage: strider-sim SCENARIO --out DIR [--firmware ELF] [--step SECONDS] [--iterations N]\n"
                "                   [--solver mlcp|pgs] [--cfm CFM] [--friction MU] [--foot-pad MM]\n"
-               "                   [--step-height MM] [--step-length MM] [--cycle S] [--swing SHAPE] [--quiet]\n"
+               "                   [--step-height MM] [--step-length MM] [--cycle S] [--swing SHAPE] [--duty D]\n"
+               "                   [--quiet]\n"
                "  SCENARIO  scenario file (robot, duration, obstacle box, at T send TEXT)\n"
                "  --out     output folder: metrics.json, trace.csv, robot.log\n"
                "  --firmware  run the firmware ELF on the virtual Mega instead of the library\n"
@@ -24,7 +25,8 @@ int usage() {
                "  --foot-pad  feet as capsules across the leg, MM to each side (default 0: balls)\n"
                "  --step-height, --step-length, --cycle, --swing  the gait defaults to walk instead of\n"
                "            the model's (library mode): swing apex [mm], preferred stride [mm], cycle\n"
-               "            at low speed [s], swing shape (rectangle semicircle ellipse cycloid parabola bezier)\n");
+               "            at low speed [s], swing shape (rectangle semicircle ellipse cycloid parabola bezier)\n"
+               "  --duty    fraction of the cycle each foot is on the ground, for every gait walked (library mode)\n");
   return 2;
 }
 
@@ -79,6 +81,10 @@ int main(int argc, char** argv) {
       if (!value(&v)) return usage();
       opt.gait.cycle_s = std::atof(v.c_str());
       if (!(opt.gait.cycle_s >= 0.1 && opt.gait.cycle_s <= 10)) return usage();
+    } else if (a == "--duty") {
+      if (!value(&v)) return usage();
+      opt.gait.duty = std::atof(v.c_str());
+      if (!(opt.gait.duty > 0 && opt.gait.duty < 1)) return usage();
     } else if (a == "--swing") {
       if (!value(&opt.gait.swing) || opt.gait.swing.empty()) return usage();
     } else if (a == "--quiet") {

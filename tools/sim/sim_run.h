@@ -30,6 +30,7 @@ struct TraceRow {
   double sonar_mm = -1;
   double clearance_mm = -1;     // body box to the nearest obstacle; -1 without obstacles
   double odo_x_mm = 0, odo_y_mm = 0, odo_yaw_deg = 0;
+  double servo_work_j = 0;      // since the start (World::servo_work_j)
 };
 
 struct Metrics {
@@ -58,6 +59,11 @@ struct Metrics {
   double odometry_error_pct = 0;   // (odometry - distance along it) / odometry * 100 (seed 003 eq 16)
   double final_x_mm = 0, final_y_mm = 0, final_yaw_deg = 0;
   int replies_ok = 0, replies_err = 0;
+  double mass_kg = 0;               // the model's
+  double servo_work_j = 0;          // the servos' mechanical work over the window [J]
+  double cost_of_transport = -1;    // servo_work_j / (mass g distance); -1: under 10 mm walked
+  bool has_gait = false;            // library mode: the gait walked at the end
+  GaitInfo gait;
 };
 
 struct LogLine {
