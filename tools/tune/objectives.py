@@ -98,6 +98,8 @@ class Objective:
                 values[name] = penalty if cot is None else min(cot, penalty)
             elif name == "stability":
                 values[name] = runs[0]["margin_mm"]
+            elif any(r["odometry_error_pct"] is None for r in runs):  # no odometry (firmware mode)
+                values[name] = penalty
             else:
                 values[name] = max(abs(r["odometry_error_pct"]) for r in runs)
         return values

@@ -41,7 +41,8 @@ def start_ray(workers, address=None):
 def make_sampler(name, seed):
     if name == "cmaes":  # the swing shape is categorical: CMA-ES samples it independently
         return optuna.samplers.CmaEsSampler(seed=seed, warn_independent_sampling=False)
-    return optuna.samplers.TPESampler(seed=seed, multivariate=True, n_startup_trials=8)
+    # constant_liar: trials still walking count as bad guesses, so parallel asks spread out.
+    return optuna.samplers.TPESampler(seed=seed, multivariate=True, n_startup_trials=8, constant_liar=True)
 
 
 def distributions(search_space):

@@ -80,10 +80,13 @@ def parse_args(argv):
     return a
 
 
-def firmware_check(a, robot, gait, objective, best, defaults, out):
+def firmware_check(a, robot, gait, objective, best, defaults, out, library_runs):
     """The best parameters on the firmware: the objective's runs with the
     parameters sent as `set` lines (Ray tasks too). A refused line means
-    the firmware walked its own values: reported as refused, not as a check."""
+    the firmware walked its own values: reported as refused, not as a check.
+    The firmware shows no gait odometry: a distance run's error is taken
+    against the odometry of the library run of the same commands
+    (`library_runs`: the same gait code, so the same dead reckoning)."""
     import ray
 
     elf = pathlib.Path(a.firmware) if a.firmware else objectives.default_firmware(a.sim, robot)
@@ -94,6 +97,10 @@ def firmware_check(a, robot, gait, objective, best, defaults, out):
     refs = [check.remote(a.sim, robot, gait, best["params"], defaults, spec, str(elf), str(out / f"firmware_run_{i}"))
             for i, spec in enumerate(specs)]
     results = ray.get(refs)
+    for fw_run, lib_run in zip(results, library_runs):
+        odo = lib_run.get("odometry_mm")
+        if fw_run["spec"]["kind"] == "distance" and fw_run.get("made_mm") is not None and odo:
+            fw_run["odometry_error_pct"] = (odo - fw_run["made_mm"]) / odo * 100.0
     import report
 
     pairs, refused = report.firmware_verdict(results)
@@ -149,17 +156,17 @@ def main(argv=None):
               f"{'' if beats else ' (does not beat the defaults)'}")
 
         # The best's runs again with their files kept (deterministic: the same numbers).
-        for i, spec in enumerate(objective.runs()):
-            objectives.walk_run(a.sim, a.model, gait, best["params"], defaults, spec, keep=out / f"best_run_{i}")
+        library_runs = [objectives.walk_run(a.sim, a.model, gait, best["params"], defaults, spec,
+                                            keep=out / f"best_run_{i}") for i, spec in enumerate(objective.runs())]
         fw = {"status": "skipped", "why": "--no-firmware-check"}
         if not a.no_firmware_check:
-            fw = firmware_check(a, a.model, gait, objective, best, defaults, out)
+            fw = firmware_check(a, a.model, gait, objective, best, defaults, out, library_runs)
         if fw["status"] == "ok":
             print(f"firmware check ({fw['elf']}): {fw['value']:.4g} with the best parameters sent as set lines "
                   f"(library mode {best['value']:.4g})")
         elif fw["status"] == "refused":
             print(f"firmware check: the firmware refused the parameters: {fw['why']}; it walked its own "
-                  f"values ({a.objective} {fw['value']:.4g}), so this checks nothing of the tune")
+                  f"values for those ({a.objective} {fw['value']:.4g}), so this is no check of the tune")
         else:
             print(f"firmware check skipped: {fw['why']}")
 
