@@ -80,13 +80,36 @@ def parse_args(argv):
     return a
 
 
-def firmware_check(a, robot, gait, objective, best, defaults, out, library_runs):
+def run_summary(results):
+    """The measures of a trial's runs, for best.json and the printout."""
+    keys = ("forward_speed_mm_s", "made_mm", "distance_error_pct", "odometry_mm", "odometry_error_pct",
+            "cost_of_transport", "margin_mm", "max_tilt_deg", "fell", "why")
+    out = []
+    for r in results:
+        row = dict(r["spec"])
+        row.update({k: (round(r[k], 3) if isinstance(r.get(k), float) else r.get(k)) for k in keys})
+        out.append(row)
+    return out
+
+
+def describe_runs(summary):
+    parts = []
+    for r in summary:
+        if r["kind"] == "distance" and r["made_mm"] is not None:
+            parts.append(f"{r['distance_mm']:g} mm: made {r['made_mm']:.0f} ({r['distance_error_pct']:+.1f} %)")
+        elif r["kind"] == "sprint" and r["forward_speed_mm_s"] is not None:
+            parts.append(f"sprint {r['forward_speed_mm_s']:.1f} mm/s, tilt {r['max_tilt_deg']:.1f} deg")
+        elif r["kind"] == "cruise" and r["margin_mm"] is not None:
+            parts.append(f"cruise: cost of transport {r['cost_of_transport']}, margin {r['margin_mm']:.1f} mm")
+        if r["why"]:
+            parts.append(r["why"])
+    return "; ".join(parts)
+
+
+def firmware_check(a, robot, gait, objective, best, defaults, out):
     """The best parameters on the firmware: the objective's runs with the
     parameters sent as `set` lines (Ray tasks too). A refused line means
-    the firmware walked its own values: reported as refused, not as a check.
-    The firmware shows no gait odometry: a distance run's error is taken
-    against the odometry of the library run of the same commands
-    (`library_runs`: the same gait code, so the same dead reckoning)."""
+    the firmware walked its own values: reported as refused, not as a check."""
     import ray
 
     elf = pathlib.Path(a.firmware) if a.firmware else objectives.default_firmware(a.sim, robot)
@@ -97,10 +120,6 @@ def firmware_check(a, robot, gait, objective, best, defaults, out, library_runs)
     refs = [check.remote(a.sim, robot, gait, best["params"], defaults, spec, str(elf), str(out / f"firmware_run_{i}"))
             for i, spec in enumerate(specs)]
     results = ray.get(refs)
-    for fw_run, lib_run in zip(results, library_runs):
-        odo = lib_run.get("odometry_mm")
-        if fw_run["spec"]["kind"] == "distance" and fw_run.get("made_mm") is not None and odo:
-            fw_run["odometry_error_pct"] = (odo - fw_run["made_mm"]) / odo * 100.0
     import report
 
     pairs, refused = report.firmware_verdict(results)
@@ -109,7 +128,7 @@ def firmware_check(a, robot, gait, objective, best, defaults, out, library_runs)
               for r in results]
     terms = objective.term_values(walked)
     res = {"elf": str(elf), "replies": [{"sent": s, "reply": r} for s, r in pairs],
-           "value": objective.value(terms), "terms": terms}
+           "value": objective.value(terms), "terms": terms, "runs": run_summary(results)}
     if refused:
         res.update(status="refused", why="; ".join(f"`{s}` -> `{r}`" for s, r in refused))
     else:
@@ -154,16 +173,18 @@ def main(argv=None):
         print(report.table(objective, s.records, base, a.top))
         print(f"defaults: {base['value']:.4g}; best: trial {best['trial']}, {best['value']:.4g}"
               f"{'' if beats else ' (does not beat the defaults)'}")
+        print(f"  defaults: {describe_runs(run_summary(base['runs']))}")
+        print(f"  best:     {describe_runs(run_summary(best['runs']))}")
 
         # The best's runs again with their files kept (deterministic: the same numbers).
-        library_runs = [objectives.walk_run(a.sim, a.model, gait, best["params"], defaults, spec,
-                                            keep=out / f"best_run_{i}") for i, spec in enumerate(objective.runs())]
+        for i, spec in enumerate(objective.runs()):
+            objectives.walk_run(a.sim, a.model, gait, best["params"], defaults, spec, keep=out / f"best_run_{i}")
         fw = {"status": "skipped", "why": "--no-firmware-check"}
         if not a.no_firmware_check:
-            fw = firmware_check(a, a.model, gait, objective, best, defaults, out, library_runs)
+            fw = firmware_check(a, a.model, gait, objective, best, defaults, out)
         if fw["status"] == "ok":
             print(f"firmware check ({fw['elf']}): {fw['value']:.4g} with the best parameters sent as set lines "
-                  f"(library mode {best['value']:.4g})")
+                  f"(library mode {best['value']:.4g}): {describe_runs(fw['runs'])}")
         elif fw["status"] == "refused":
             print(f"firmware check: the firmware refused the parameters: {fw['why']}; it walked its own "
                   f"values for those ({a.objective} {fw['value']:.4g}), so this is no check of the tune")
@@ -181,8 +202,10 @@ def main(argv=None):
             "trials": len(s.records), "workers": workers, "address": a.address, "ray_cpus": resources.get("CPU"),
             "rollouts": s.rollouts, "search_s": round(s.rollout_s, 3), "rollouts_per_s": round(rate, 3),
             "space": {k: list(v) for k, v in search_space.items()},
-            "defaults": {k: base[k] for k in ("params", "value", "terms", "failed")},
-            "best": {k: best[k] for k in ("trial", "params", "value", "terms", "failed")},
+            "defaults": dict({k: base[k] for k in ("params", "value", "terms", "failed")},
+                             runs=run_summary(base["runs"])),
+            "best": dict({k: best[k] for k in ("trial", "params", "value", "terms", "failed")},
+                         runs=run_summary(best["runs"])),
             "beats_defaults": beats, "firmware_check": fw,
         }
         (out / "best.json").write_text(json.dumps(summary, indent=1))
