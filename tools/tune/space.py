@@ -77,8 +77,13 @@ def snapped(defaults, space):
 
 
 def complete(params, defaults):
-    """A full parameter set: params with the defaults for what was not searched."""
-    return {key: params.get(key, defaults[key]) for key in PARAMS}
+    """A full parameter set: params (tidied of the grid's float noise) with the
+    defaults for what was not searched."""
+    out = {}
+    for key in PARAMS:
+        v = params.get(key, defaults[key])
+        out[key] = round(v, 6) if isinstance(v, float) and key in params else v
+    return out
 
 
 def fmt(value):
