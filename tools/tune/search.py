@@ -119,7 +119,10 @@ class Search:
             for ref in done:
                 name, i = in_flight.pop(ref)
                 job = jobs[name]
-                job["results"][i] = ray.get(ref)
+                try:
+                    job["results"][i] = ray.get(ref)
+                except (ray.exceptions.RayError, OSError) as e:  # a worker lost, strider-sim hung
+                    job["results"][i] = {"spec": specs[i], "failed": True, "why": f"rollout failed: {e}"[:200]}
                 self.rollouts += 1
                 job["left"] -= 1
                 if job["left"] == 0:
