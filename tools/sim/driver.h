@@ -29,6 +29,22 @@ struct SensorInputs {
   double battery_pin_v = 0;  // [V]
 };
 
+// What the robot walks with now (library mode): the gait, its parameters
+// and the body height, for metrics.json.
+struct GaitInfo {
+  std::string gait, swing;
+  double duty = 0, step_height_mm = 0, step_length_mm = 0, cycle_s = 0;
+  double body_height_mm = 0;  // the standing height with the `height` offset
+  // The rest of the gait table (gait_library.h) and of the model's gait
+  // defaults (gait_params.h), for writing a tuned row in their formats.
+  int leg_count = 0;
+  std::vector<double> offsets;
+  bool shift_body = false, relabel_by_direction = false;
+  std::string default_gait;
+  double stance_depth_mm = 0, foot_radius_mm = 0, com_x_mm = 0, com_y_mm = 0, margin_mm = 0, shift_budget_mm = 0;
+  double sit_drop_mm = 0, transition_s = 0;
+};
+
 class Driver {
  public:
   virtual ~Driver() = default;
@@ -56,6 +72,11 @@ class Driver {
     (void)x_mm, (void)y_mm, (void)yaw_rad;
     return false;
   }
+  // The gait parameters in use (library mode only).
+  virtual bool gait_info(GaitInfo* info) const {
+    (void)info;
+    return false;
+  }
 
  protected:
   SensorInputs sensors_;  // library mode: for the robot's code once it reads an IMU and a battery
@@ -69,8 +90,17 @@ struct GaitOverrides {
   double step_length_mm = 0;  // preferred stride [mm]
   double cycle_s = 0;         // cycle time at low speed [s]
   std::string swing;          // swing shape: rectangle, semicircle, ellipse, cycloid, parabola, bezier
-  bool any() const { return step_height_mm > 0 || step_length_mm > 0 || cycle_s > 0 || !swing.empty(); }
+  // Fraction of the cycle each foot is on the ground, for whichever gait
+  // the robot walks (its default, then every `gait NAME`): the gait table's
+  // duty with the same leg offsets. A gait it would leave without support
+  // (or without the four-foot windows its body shift needs) keeps its own,
+  // and the robot's log says so.
+  double duty = 0;
+  bool any() const {
+    return step_height_mm > 0 || step_length_mm > 0 || cycle_s > 0 || !swing.empty() || duty > 0;
+  }
 };
+
 
 // The library: strider::RobotApp<float> with an in-memory EEPROM (erased,
 // so the robot boots on default settings) and a PCA9685 with oscillator osc_hz.

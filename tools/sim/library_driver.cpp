@@ -1,6 +1,7 @@
 // LibraryDriver: the firmware's own control chain, compiled for the host:
 // Bluetooth bytes -> strider::RobotApp (parser, controller, walker, servo
 // stage) -> ServoOutput calls -> PCA9685 registers -> pulse widths.
+#include <cstdio>
 #include <deque>
 
 #include "driver.h"
@@ -34,7 +35,10 @@ class LibraryDriver : public Driver, private HostParts {
       *error = lines_.empty() ? "robot did not start" : lines_.back();
       return false;
     }
-    if (gait_.any() && !apply_gait_overrides(error)) return false;
+    params_ = *strider::gait_params_for(model_);
+    const bool params_changed = gait_.step_height_mm > 0 || gait_.step_length_mm > 0 || gait_.cycle_s > 0 || !gait_.swing.empty();
+    if (params_changed && !apply_gait_overrides(error)) return false;
+    apply_duty();
     update_pulses();
     return true;
   }
@@ -57,6 +61,7 @@ class LibraryDriver : public Driver, private HostParts {
       if (byte_at <= next_tick_us_) {
         app_.on_byte(kBluetoothPort, rx_.front().byte, uint32_t(byte_at), link);
         rx_.pop_front();
+        apply_duty();  // the byte may have ended a `gait NAME` line
         continue;
       }
       tick(next_tick_us_, link);
@@ -77,6 +82,32 @@ class LibraryDriver : public Driver, private HostParts {
     *x_mm = double(e.odometry_x());
     *y_mm = double(e.odometry_y());
     *yaw_rad = double(e.odometry_yaw());
+    return true;
+  }
+
+  bool gait_info(GaitInfo* info) const override {
+    const auto& motion = app_.motion();
+    info->gait = motion.gait().name;
+    info->duty = double(motion.gait().duty);
+    info->swing = strider::to_string(params_.shape);
+    info->step_height_mm = double(params_.step_height_mm);
+    info->step_length_mm = double(params_.step_length_mm);
+    info->cycle_s = double(params_.cycle_s);
+    info->body_height_mm = double(motion.stand_height_mm() + motion.offsets().translation_mm.z);
+    const strider::GaitTable& g = motion.gait();
+    info->leg_count = g.leg_count;
+    info->offsets.assign(g.offset, g.offset + g.leg_count);
+    info->shift_body = g.shift_body;
+    info->relabel_by_direction = g.relabel_by_direction;
+    info->default_gait = params_.default_gait;
+    info->stance_depth_mm = double(params_.stance_depth_mm);
+    info->foot_radius_mm = double(params_.foot_radius_mm);
+    info->com_x_mm = double(params_.com_x_mm);
+    info->com_y_mm = double(params_.com_y_mm);
+    info->margin_mm = double(params_.margin_mm);
+    info->shift_budget_mm = double(params_.shift_budget_mm);
+    info->sit_drop_mm = double(params_.sit_drop_mm);
+    info->transition_s = double(params_.transition_s);
     return true;
   }
 
@@ -107,10 +138,32 @@ class LibraryDriver : public Driver, private HostParts {
 
   void update_pulses() { boards.pulses(osc_hz_, pulses_); }
 
+  // The duty override on the gait walked now, when it does not have it yet
+  // and keeps its support with it (gait_library.h's checks of the built-in
+  // tables); refused once per gait, in the robot's log.
+  void apply_duty() {
+    if (!(gait_.duty > 0)) return;
+    auto& engine = app_.motion().walker().engine();
+    strider::GaitTable g = engine.gait();
+    if (g.duty == float(gait_.duty) || refused_duty_gait_ == g.name) return;
+    g.duty = float(gait_.duty);
+    const uint8_t min_support = g.leg_count == 4 ? 2 : 3;
+    if (!strider::gait_table::valid(g) || !strider::gait_table::keeps_support(g, min_support) ||
+        (g.shift_body && !strider::gait_table::swings_separated(g))) {
+      refused_duty_gait_ = g.name;
+      char line[96];
+      std::snprintf(line, sizeof line, "sim duty %.3f refused for gait %s: it keeps its %.3f", gait_.duty, g.name,
+                    double(engine.gait().duty));
+      lines_.push_back(line);
+      return;
+    }
+    engine.set_gait(g);
+  }
+
   // The model's gait defaults with the overrides in; the robot is still
   // sitting, as at power-up, when the walker takes them.
   bool apply_gait_overrides(std::string* error) {
-    strider::GaitParams p = *strider::gait_params_for(model_);
+    strider::GaitParams p = params_;
     if (gait_.step_height_mm > 0) p.step_height_mm = float(gait_.step_height_mm);
     if (gait_.step_length_mm > 0) p.step_length_mm = float(gait_.step_length_mm);
     if (gait_.cycle_s > 0) p.cycle_s = float(gait_.cycle_s);
@@ -122,12 +175,15 @@ class LibraryDriver : public Driver, private HostParts {
       *error = "the walker refused the gait parameters (a step the legs cannot reach, or a swing shape not built in)";
       return false;
     }
+    params_ = p;
     return true;
   }
 
   HostApp app_;
   const strider::RobotModel& model_;
   GaitOverrides gait_;
+  strider::GaitParams params_{};  // the gait parameters walked: the defaults with the overrides
+  std::string refused_duty_gait_;
   double osc_hz_;
   RangeFn range_;
   std::deque<Rx> rx_;

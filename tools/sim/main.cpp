@@ -24,7 +24,7 @@ int usage() {
   std::fprintf(stderr,
                "usage: strider-sim SCENARIO --out DIR [--firmware ELF] [--step SECONDS] [--iterations N]\n"
                "                   [--solver mlcp|pgs] [--cfm CFM] [--friction MU] [--foot-pad MM]\n"
-               "                   [--step-height MM] [--step-length MM] [--cycle S] [--swing SHAPE]\n"
+               "                   [--step-height MM] [--step-length MM] [--cycle S] [--swing SHAPE] [--duty D]\n"
                "                   [--imu] [--imu-ideal] [--imu-seed N] [--imu-gyro-bias X,Y,Z] [--imu-accel-bias X,Y,Z]\n"
                "                   [--imu-bandwidth HZ] [--imu-single-sample]\n"
                "                   [--battery-cells N] [--battery-mah C] [--battery-ohm R] [--battery-soc S]\n"
@@ -39,6 +39,8 @@ int usage() {
                "  --step-height, --step-length, --cycle, --swing  the gait defaults to walk instead of\n"
                "            the model's (library mode): swing apex [mm], preferred stride [mm], cycle\n"
                "            at low speed [s], swing shape (rectangle semicircle ellipse cycloid parabola bezier)\n"
+               "  --duty    fraction of the cycle each foot is on the ground, for every gait walked (library mode)\n"
+
                "  --imu     an MPU-6050 is fitted (as the scenario's `imu on`): in firmware mode vbench's\n"
                "            answers at 0x68, fed by the IMU model every physics step\n"
                "  --imu-ideal  no noise and no offsets; --imu-seed: the noise and the drawn offsets\n"
@@ -105,6 +107,10 @@ int main(int argc, char** argv) {
       if (!value(&v)) return usage();
       opt.gait.cycle_s = std::atof(v.c_str());
       if (!(opt.gait.cycle_s >= 0.1 && opt.gait.cycle_s <= 10)) return usage();
+    } else if (a == "--duty") {
+      if (!value(&v)) return usage();
+      opt.gait.duty = std::atof(v.c_str());
+      if (!(opt.gait.duty > 0 && opt.gait.duty < 1)) return usage();
     } else if (a == "--swing") {
       if (!value(&opt.gait.swing) || opt.gait.swing.empty()) return usage();
     } else if (a == "--imu") {

@@ -86,6 +86,8 @@ void compute_metrics(const Scenario& sc, RunResult& r) {
     m.odometry_error_pct = m.odometry_mm > 1e-6 ? (m.odometry_mm - along) / m.odometry_mm * 100.0 : 0.0;
   }
   m.fell = m.fell || m.max_tilt_deg > kFallTiltDeg;
+  m.servo_work_j = b.servo_work_j - a.servo_work_j;
+  m.cost_of_transport = m.distance_mm >= 10.0 ? m.servo_work_j / (m.mass_kg * 9.81 * m.distance_mm * 1e-3) : -1.0;
 }
 
 RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
@@ -120,6 +122,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   Metrics& m = r.metrics;
   m.robot = model->name;
   m.mode = driver->mode();
+  m.mass_kg = double(model->body.mass_kg);
   r.legs = model->leg_count;
   r.dof = model->dof();
   const double dt = wc.step_s;
@@ -199,6 +202,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
       row.odo_y_mm = oy;
       row.odo_yaw_deg = oyaw * 180.0 / M_PI;
     }
+    row.servo_work_j = world.servo_work_j();
     r.trace.push_back(std::move(row));
   };
   double motion_s = -1;  // the robot was first told to move (ok move, or an RC motion byte)
@@ -254,6 +258,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   m.imu_calibrated_s = sensors.calibrated_s();
   m.battery_end_v = sensors.battery().volts();
   m.battery_used_mah = sensors.battery().used_mah();
+  m.has_gait = driver->gait_info(&m.gait);
   compute_metrics(sc, r);
   r.obstacles = sc.obstacles;
   {
@@ -345,7 +350,28 @@ std::string metrics_json(const Metrics& m) {
   o << "  \"wall_time_s\": " << num(m.wall_time_s) << ",\n";
   o << "  \"cpu_time_s\": " << num(m.cpu_time_s) << ",\n";
   o << "  \"real_time_factor\": " << num(m.real_time_factor, 1) << ",\n";
-  o << "  \"solver_fallbacks\": " << m.solver_fallbacks << "\n";
+  o << "  \"solver_fallbacks\": " << m.solver_fallbacks << ",\n";
+  o << "  \"mass_kg\": " << num(m.mass_kg, 3) << ",\n";
+  o << "  \"servo_work_j\": " << num(m.servo_work_j, 4) << ",\n";
+  o << "  \"cost_of_transport\": " << (m.cost_of_transport < 0 ? std::string("null") : num(m.cost_of_transport, 4)) << ",\n";
+  if (m.has_gait) {
+    const GaitInfo& g = m.gait;
+    o << "  \"gait\": {\"name\": " << json_string(g.gait) << ", \"duty\": " << num(g.duty, 4)
+      << ", \"step_height_mm\": " << num(g.step_height_mm, 2) << ", \"step_length_mm\": " << num(g.step_length_mm, 2)
+      << ", \"cycle_s\": " << num(g.cycle_s, 3) << ", \"swing\": " << json_string(g.swing)
+      << ", \"body_height_mm\": " << num(g.body_height_mm, 2) << ",\n           \"table\": {\"legs\": " << g.leg_count
+      << ", \"offsets\": [";
+    for (size_t i = 0; i < g.offsets.size(); ++i) o << (i ? ", " : "") << num(g.offsets[i], 6);
+    o << "], \"shift_body\": " << (g.shift_body ? "true" : "false")
+      << ", \"relabel_by_direction\": " << (g.relabel_by_direction ? "true" : "false") << "},\n"
+      << "           \"defaults\": {\"default_gait\": " << json_string(g.default_gait)
+      << ", \"stance_depth_mm\": " << num(g.stance_depth_mm, 2) << ", \"foot_radius_mm\": " << num(g.foot_radius_mm, 2)
+      << ", \"com_x_mm\": " << num(g.com_x_mm, 2) << ", \"com_y_mm\": " << num(g.com_y_mm, 2)
+      << ", \"margin_mm\": " << num(g.margin_mm, 2) << ", \"shift_budget_mm\": " << num(g.shift_budget_mm, 2)
+      << ", \"sit_drop_mm\": " << num(g.sit_drop_mm, 2) << ", \"transition_s\": " << num(g.transition_s, 3) << "}}\n";
+  } else {
+    o << "  \"gait\": null\n";
+  }
   o << "}\n";
   return o.str();
 }

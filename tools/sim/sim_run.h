@@ -38,6 +38,7 @@ struct TraceRow {
   ImuReading imu_tick;                  // what the filter took: its mean over the last tick (trace.csv's imu_*)
   double imu_roll_deg = 0, imu_pitch_deg = 0;  // the attitude filter on it
   double battery_v = 0, battery_a = 0;  // pack terminals, pack current
+  double servo_work_j = 0;      // since the start (World::servo_work_j)
 };
 
 struct Metrics {
@@ -72,6 +73,11 @@ struct Metrics {
   Vec imu_gyro_bias_dps, imu_accel_bias_mg;  // the IMU's offsets (drawn or given)
   double battery_start_v = 0, battery_min_v = 0, battery_end_v = 0;  // under load
   double battery_max_a = 0, battery_used_mah = 0;
+  double mass_kg = 0;               // the model's
+  double servo_work_j = 0;          // the servos' mechanical work over the window [J]
+  double cost_of_transport = -1;    // servo_work_j / (mass g distance); -1: under 10 mm walked
+  bool has_gait = false;            // library mode: the gait walked at the end
+  GaitInfo gait;
 };
 
 struct LogLine {

@@ -31,9 +31,10 @@ import math
 import os
 import pathlib
 import random
-import subprocess
 import sys
 import tempfile
+
+import rollout
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 DEFAULT_SIM = ROOT / "out" / "build" / "tools" / "sim" / "strider-sim"
@@ -51,28 +52,17 @@ SETTLE_S = 5.0    # after `stop`: the ramp down and the last steps
 
 def scenario_text(robot, gait, speed, distance):
     stop_at = WALK_AT_S + distance / speed
-    return (f"robot {robot}\nduration {math.ceil(stop_at + SETTLE_S)}\n"
-            "at 0.5 send $deadman off*cb77\\n\n"  # the deadman off, a checked line (docs/protocol.md)
-            f"at 1 send gait {gait}\\n\n"
-            f"at {WALK_AT_S:g} send walk {speed:g}\\n\n"
-            f"at {stop_at:.3f} send stop\\n\n")
+    return rollout.scenario(robot, math.ceil(stop_at + SETTLE_S),
+                            [(0.5, rollout.DEADMAN_OFF), (1, f"gait {gait}"), (WALK_AT_S, f"walk {speed:g}"),
+                             (stop_at, "stop")])
 
 
 def walk_once(sim, work, robot, gait, cand, distance, sim_args):
     """One run; the metrics strider-sim wrote, or None and its error."""
     name = f"{gait}_{cand['speed_mm_s']:g}_{distance:g}_{os.getpid()}_{random.getrandbits(40):x}"
-    scenario = work / f"{name}.scenario"
-    scenario.write_text(scenario_text(robot, gait, cand["speed_mm_s"], distance))
-    out = work / name
-    args = [str(sim), str(scenario), "--out", str(out), "--quiet", *sim_args]
-    for key, opt in (("step_height_mm", "--step-height"), ("step_length_mm", "--step-length"), ("cycle_s", "--cycle")):
-        if cand[key]:
-            args += [opt, f"{cand[key]:g}"]
-    p = subprocess.run(args, capture_output=True, text=True)
-    if p.returncode != 0:
-        return None, (p.stderr.strip().splitlines() or ["strider-sim failed"])[-1]
-    metrics = json.loads((out / "metrics.json").read_text())
-    return metrics, None
+    run = rollout.run_scenario(sim, scenario_text(robot, gait, cand["speed_mm_s"], distance), work / name,
+                               [*sim_args, *rollout.gait_args(cand)])
+    return run["metrics"], run["error"]
 
 
 def score(runs):

@@ -47,6 +47,9 @@ void World::step() {
   Impl& w = *impl_;
   w.world.stepSimulation(btScalar(cfg_.step_s), 0, btScalar(cfg_.step_s));
   ++steps_;
+  // A joint motor's applied impulse over the step is torque x step [N m s].
+  for (const JointDrive& d : w.drive)
+    servo_work_j_ += std::fabs(double(d.motor->getAppliedImpulse(0)) * double(w.body->getJointVel(d.link)));
   // Contacts of this step.
   std::fill(w.foot_touch.begin(), w.foot_touch.end(), false);
   w.obstacle_touch = 0;

@@ -132,6 +132,10 @@ class World {
   // Steps the exact (MLCP) solver could not solve, so Bullet solved them
   // with PGS instead (always 0 with Solver::kPgs).
   long solver_fallbacks() const;
+  // Mechanical work of the servos since the start [J]: the sum over steps
+  // and joints of |motor torque x joint speed| x step (a hobby servo does
+  // not recover the work a load does on it, so negative work counts too).
+  double servo_work_j() const { return servo_work_j_; }
 
  private:
   struct Impl;
@@ -139,6 +143,7 @@ class World {
   WorldConfig cfg_;
   int joints_ = 0;
   long steps_ = 0;
+  double servo_work_j_ = 0;
   std::unique_ptr<Impl> impl_;
 };
 

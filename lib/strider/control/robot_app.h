@@ -299,6 +299,8 @@ class RobotApp {
   SonarFilter& sonar() { return sonar_; }
   const Controller<Sink, Store, false>& controller() const { return controller_; }
   const WalkerMotion<S>& motion() const { return motion_; }
+  //! The walker, for host tools that change it between ticks (the simulator's gait overrides).
+  WalkerMotion<S>& motion() { return motion_; }
   const ServoStage<S, kJoints, kStoredChannels>& servos() const { return stage_; }
   SettingsStatus load_status() const { return controller_.load_status(); }
   uint16_t overruns() const { return overruns_; }
