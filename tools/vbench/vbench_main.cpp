@@ -38,8 +38,7 @@ void usage() {
   std::fprintf(stderr,
                "usage: vbench --elf FIRMWARE.elf [--eeprom FILE] [--script FILE] [--duration S]\n"
                "              [--pty] [--realtime] [--stdin] [--osc HZ] [--boards LIST] [--pulses CSV] [--log] [--i2c]\n"
-               "              [--eeprom-cut N[:erased]] [--range MM|none] [--imu[=ADDR]] [--avcc V]
-"
+               "              [--eeprom-cut N[:erased]] [--range MM|none] [--imu[=ADDR]] [--avcc V]\n"
                "  --eeprom FILE  EEPROM image loaded at start (if present) and saved at the end\n"
                "  --script FILE  timed directives: at T send TEXT | at T range MM|none|stuck | at T reset |\n"
                "                 at T board ADDR off|on|detach|attach | at T bus stuck|free | at T hang |\n"
