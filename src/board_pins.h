@@ -14,6 +14,12 @@ constexpr uint32_t kUsbBaud = 115200;     // Serial (USB): same protocol as the 
 constexpr uint8_t kSonarTrig = 3;   // PE5
 constexpr uint8_t kSonarEcho = 2;   // PE4, INT4
 constexpr uint8_t kHeartbeatLed = 13;  // PB7, the board's LED
+// Battery: pack + -- 20 kOhm -- A0 -- 10 kOhm -- GND (docs/wiring.md): the
+// pin reads a third of the pack, up to 15 V against the 5 V reference. With
+// nothing wired the pin reads near 0 V and the firmware reports no battery.
+constexpr uint8_t kBatteryAdcChannel = 0;    // A0
+constexpr uint16_t kBatteryDividerX100 = 300;  // pack volts per pin volt, x100
+constexpr uint16_t kAdcReferenceMv = 5000;     // AVCC
 
 }  // namespace pins
 

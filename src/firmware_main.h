@@ -259,6 +259,10 @@ void setup() {
   // from them. After a power-up, every output starts off.
   g_servos.begin(kBoards, warm_prescale());
   g_app.set_stack_probe(stack_peak);
+  strider::BatteryConfig battery;
+  battery.adc_ref_mv = pins::kAdcReferenceMv;
+  battery.divider_x100 = pins::kBatteryDividerX100;
+  g_app.set_battery_config(battery);
   wdt_reset();
   g_app.begin(micros(), g_link, g_servos.held() != 0 ? g_servos.outputs() : nullptr, g_servos.channels());
   wdt_reset();
@@ -273,6 +277,8 @@ void loop() {
   g_link.poll();
   run_sonar();
   if (int32_t(now_us - g_next_tick_us) >= 0) {
+    // The battery divider, once a tick (analogRead: 0.11 ms).
+    g_app.battery(uint16_t(analogRead(pins::kBatteryAdcChannel)), g_link);
     const uint32_t start_us = micros();
     // The gait advances by the scheduled time since the last tick (a period,
     // more after skipped ones), not by the measured one: the loop wakes on

@@ -1012,4 +1012,42 @@ INSTANTIATE_TEST_SUITE_P(Models, FirmwareReset,
 // One board and float (sprawl8), two boards and fixed point (hexapod18).
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareBoards, ::testing::Values("sprawl8", "hexapod18"), param_name);
 
+// A draining battery on A0 (vbench's ADC, the 3:1 divider of the board
+// file): reported in status, a low notice while it still walks, a critical
+// one that stops the walk and sits the robot down with walking refused
+// (err 32), and back up once the pack is charged.
+class FirmwareBattery : public ::testing::TestWithParam<std::string> {};
+TEST_P(FirmwareBattery, DrainingPackWarnsThenSitsThenRecovers) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(500000, kSettleTimeoutUs)) << "outputs never settled";
+  auto pack = [&](double volts) { r.mega().set_adc_volts(0, volts / 3.0); };
+  auto wait_notice = [&](const std::string& head, uint64_t timeout_us) {
+    return r.wait_for_line([&](const std::string& l) { return l.rfind(head, 0) == 0; }, timeout_us);
+  };
+  EXPECT_EQ(r.status().count("battery_mv"), 0u) << "no battery wired: no field";
+  pack(7.6);
+  EXPECT_FALSE(wait_notice("info battery ok", 4000000).empty()) << r.transcript();  // after the 2 s hold
+  const auto st = r.status();
+  ASSERT_EQ(st.count("battery_mv"), 1u) << r.transcript();
+  EXPECT_NEAR(std::stoi(st.at("battery_mv")), 7600, 30);
+  EXPECT_EQ(r.command("walk 40").rfind("ok", 0), 0u);
+  pack(6.9);  // 3.45 V a cell
+  EXPECT_FALSE(wait_notice("info battery low", 4000000).empty()) << r.transcript();
+  EXPECT_EQ(r.command("walk 40").rfind("ok", 0), 0u) << "a low pack still walks";
+  pack(6.4);  // 3.2 V a cell
+  EXPECT_FALSE(wait_notice("info battery critical", 4000000).empty()) << r.transcript();
+  r.run_for(4000000);
+  EXPECT_EQ(r.status()["state"], "sitting");
+  EXPECT_EQ(r.command("walk 40").rfind("err 32", 0), 0u) << r.transcript();
+  pack(8.2);
+  EXPECT_FALSE(wait_notice("info battery ok", 6000000).empty()) << r.transcript();
+  r.run_for(4000000);
+  EXPECT_EQ(r.status()["state"], "standing");
+  EXPECT_EQ(r.command("walk 40").rfind("ok", 0), 0u);
+  EXPECT_EQ(r.mega().unexpected_resets(), 0);
+}
+INSTANTIATE_TEST_SUITE_P(Models, FirmwareBattery, ::testing::Values("sprawl8", "hexapod18"), param_name);
+
 }  // namespace

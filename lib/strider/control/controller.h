@@ -128,6 +128,13 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     servo_fault_ = fault;
   }
   bool servo_fault() const { return servo_fault_; }
+  //! The battery is critically low (RobotApp): like a servo fault, a walk
+  //! stops and motion commands are refused, with err 32, until it recovers.
+  void set_battery_critical(bool critical) {
+    if (critical && !battery_critical_ && mode_ == RobotMode::kWalking) stop();
+    battery_critical_ = critical;
+  }
+  bool battery_critical() const { return battery_critical_; }
 
   //! How far the body walks sideways after the sensor sees the way clear:
   //! the robot's half-width with its feet (RobotApp sets it from the model).
@@ -181,6 +188,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     if (mode_ == RobotMode::kCalibrating) return fail(w, ControlError::kBusy, FlashText{text::kCalibrating});
     const bool still = t.vx == 0 && t.vy == 0 && t.wz == 0;
     if (servo_fault_ && !still) return fail(w, ControlError::kServoFault, FlashText{text::kServoFault});
+    if (battery_critical_ && !still) return fail(w, ControlError::kBatteryCritical, FlashText{text::kBatteryCritical});
     cmd_ = t;
     if (still) {
       stop();
@@ -348,6 +356,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   uint16_t avoid_clear_mm_;
   uint8_t speed_pct_ = 50;
   bool servo_fault_;
+  bool battery_critical_ = false;
 };
 
 }  // namespace strider

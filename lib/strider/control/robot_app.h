@@ -21,6 +21,7 @@
 #include <stdint.h>
 
 #include "constant_given.h"
+#include "battery_monitor.h"
 #include "controller.h"
 #include "model_constants.h"
 #include "servo_boards.h"
@@ -66,6 +67,11 @@ constexpr char kInfoPca[] STRIDER_PROGMEM = "info pca9685 ";
 constexpr char kRestored[] STRIDER_PROGMEM = " restored";
 constexpr char kNothing[] STRIDER_PROGMEM = "";
 constexpr char kInfoHeld[] STRIDER_PROGMEM = "info servos held";
+constexpr char kInfoBattery[] STRIDER_PROGMEM = "info battery ";
+constexpr char kBatteryMv[] STRIDER_PROGMEM = "battery_mv";
+constexpr char kMv[] STRIDER_PROGMEM = "mv";
+constexpr char kBatteryLevelNames[] STRIDER_PROGMEM = "absent\0ok\0low\0critical";
+inline FlashText to_flash(BatteryLevel l) { return flash_name(kBatteryLevelNames, 4, uint8_t(l)); }
 constexpr char kWalkFmt[] STRIDER_PROGMEM = " walk_vx=" "\2" " walk_vy=" "\2" " walk_wz=" "\2";  // ReplyWriter::format()
 constexpr char kOverrunsFmt[] STRIDER_PROGMEM = " overruns=" "\1" " tick_max_us=" "\1";
 // The names of the gait engine's and the IK's states (to_string() in
@@ -224,6 +230,25 @@ class RobotApp {
     return true;
   }
 
+  //! The battery divider's ADC reading (the firmware: once a tick). A new
+  //! level is a notice, `info battery low mv=6950`; a critical pack stops a
+  //! walk and sits the robot down, and walking is refused (err 32) until it
+  //! recovers (battery_monitor.h: its hold and hysteresis). `status` has
+  //! `battery_mv` while a pack is seen.
+  template <typename Link>
+  void battery(uint16_t adc_code, Link& link) {
+    if (!battery_.add(adc_code)) return;
+    ReplyLine line;
+    line.w.text(FlashText{app_text::kInfoBattery}).text(app_text::to_flash(battery_.level()));
+    line.w.field(FlashText{app_text::kMv}, battery_.mv());
+    link.send_line(kAllPorts, line.buf);
+    controller_.set_battery_critical(battery_.critical());
+    if (battery_.critical()) motion_.walker().engine().sit_down();
+  }
+  const BatteryMonitor& battery_monitor() const { return battery_; }
+  //! The divider and thresholds (the firmware: from its board file).
+  void set_battery_config(const BatteryConfig& c) { battery_ = BatteryMonitor(c); }
+
   //! One byte from link `port` (0 or 1) at now_us; a reply goes back to that port.
   template <typename Link>
   void on_byte(uint8_t port, uint8_t b, uint32_t now_us, Link& link) {
@@ -268,7 +293,8 @@ class RobotApp {
     uint32_t dt_us = period_us != 0 ? period_us : elapsed(now_us, last_tick_us_);
     last_tick_us_ = now_us;
     if (dt_us > 5 * kTickPeriodUs) dt_us = 5 * kTickPeriodUs;
-    if (stage_.all_on() && motion_.sitting() && controller_.mode() != RobotMode::kRelaxed) motion_.stand_up();
+    if (stage_.all_on() && motion_.sitting() && controller_.mode() != RobotMode::kRelaxed && !battery_.critical())
+      motion_.stand_up();
     if (restoring_ && !stage_.starting()) {  // a board's legs are on again
       restoring_ = false;
       controller_.set_servo_fault(boards_faulted_ != 0);
@@ -520,6 +546,7 @@ class RobotApp {
     w.field(FlashText{app_text::kI2cErrors}, i2c_errors_);
     w.format(FlashText{app_text::kOverrunsFmt}, overruns_, int32_t(tick_max_us_));
     if (stack_probe_ != nullptr) w.field(FlashText{app_text::kStackPeak}, stack_probe_());
+    if (battery_.present()) w.field(FlashText{app_text::kBatteryMv}, battery_.mv());
   }
 
   const RobotModel& model_;  // in RAM or flash (model_in_flash_): read through copy_model() only
@@ -528,6 +555,7 @@ class RobotApp {
   uint8_t boards_;           // PCA9685 boards the model uses
   Output& out_;
   WalkerMotion<S> motion_;
+  BatteryMonitor battery_;
   ServoStage<S, kJoints, kStoredChannels> stage_;
   Sink sink_;
   Controller<Sink, Store, false> controller_;  // input from parsers_
