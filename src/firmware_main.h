@@ -27,6 +27,7 @@
 #include "control/rx_overflow.h"
 #include "eeprom_store.h"
 #include "hcsr04_sonar.h"
+#include "mpu6050_imu.h"
 #include "pca9685_output.h"
 #include "serial_link.h"
 
@@ -123,6 +124,7 @@ uint32_t g_last_tick_us = 0;  // the last tick's scheduled time
 // share the bus with it (unless a tick ran past 14 ms: then it runs late).
 constexpr uint32_t kBoardsAfterFrameUs = 6000;
 bool g_boards_due = false;
+bool g_imu = false;  // an MPU-6050 answered at start-up
 uint32_t g_boards_at_us = 0;
 uint32_t g_led_ms = 0;
 
@@ -263,6 +265,8 @@ void setup() {
   battery.adc_ref_mv = pins::kAdcReferenceMv;
   battery.divider_x100 = pins::kBatteryDividerX100;
   g_app.set_battery_config(battery);
+  g_imu = mpu6050_imu::begin();  // after the boards: the bus is up
+  g_app.set_imu_present(g_imu);
   wdt_reset();
   g_app.begin(micros(), g_link, g_servos.held() != 0 ? g_servos.outputs() : nullptr, g_servos.channels());
   wdt_reset();
@@ -277,6 +281,13 @@ void loop() {
   g_link.poll();
   run_sonar();
   if (int32_t(now_us - g_next_tick_us) >= 0) {
+    if (g_imu) {  // one burst a tick (14 bytes: 0.4 ms at 400 kHz)
+      uint8_t burst[strider::kMpu6050BurstBytes];
+      const bool read = mpu6050_imu::read(burst);
+      const strider::ImuSample<Scalar> s =
+          strider::mpu6050_sample<Scalar>(burst, mpu6050_imu::kAccelRange, mpu6050_imu::kGyroRange);
+      g_app.imu(read ? &s : nullptr, g_link);
+    }
     // The battery divider, once a tick (analogRead: 0.11 ms).
     g_app.battery(uint16_t(analogRead(pins::kBatteryAdcChannel)), g_link);
     const uint32_t start_us = micros();

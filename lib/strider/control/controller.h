@@ -135,6 +135,19 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     battery_critical_ = critical;
   }
   bool battery_critical() const { return battery_critical_; }
+  //! The robot tipped over (RobotApp, from the IMU): the servos go limp
+  //! (relaxed, so that no leg fights the ground) and motion commands are
+  //! refused, with err 33, until it is upright again; then a motion command
+  //! wakes it as after `relax`.
+  void set_fallen(bool fallen) {
+    if (fallen && !fallen_ && mode_ != RobotMode::kCalibrating) {
+      cmd_ = out_ = Twist{0, 0, 0};
+      sink_.relax();
+      mode_ = RobotMode::kRelaxed;
+    }
+    fallen_ = fallen;
+  }
+  bool fallen() const { return fallen_; }
 
   //! How far the body walks sideways after the sensor sees the way clear:
   //! the robot's half-width with its feet (RobotApp sets it from the model).
@@ -180,6 +193,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
 
   void stop() {
     cmd_ = out_ = Twist{0, 0, 0};
+    if (fallen_) return;  // limp until set upright (set_fallen())
     sink_.stand();
     if (mode_ == RobotMode::kWalking || mode_ == RobotMode::kRelaxed) mode_ = RobotMode::kStanding;
   }
@@ -189,6 +203,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     const bool still = t.vx == 0 && t.vy == 0 && t.wz == 0;
     if (servo_fault_ && !still) return fail(w, ControlError::kServoFault, FlashText{text::kServoFault});
     if (battery_critical_ && !still) return fail(w, ControlError::kBatteryCritical, FlashText{text::kBatteryCritical});
+    if (fallen_ && !still) return fail(w, ControlError::kFallen, FlashText{text::kFallen});
     cmd_ = t;
     if (still) {
       stop();
@@ -357,6 +372,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   uint8_t speed_pct_ = 50;
   bool servo_fault_;
   bool battery_critical_ = false;
+  bool fallen_ = false;
 };
 
 }  // namespace strider

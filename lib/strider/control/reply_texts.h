@@ -39,6 +39,7 @@ constexpr char kPoseRangesFmt[] STRIDER_PROGMEM = "roll " "\1" ".." "\1" " pitch
 constexpr char kPoseRanges2Fmt[] STRIDER_PROGMEM = ".." "\1" " yaw " "\1" ".." "\1" " one at a time";
 constexpr char kHeightRangeFmt[] STRIDER_PROGMEM = "\1" ".." "\1" " with the body level";
 constexpr char kServoFault[] STRIDER_PROGMEM = "servo fault: see pca9685= in status; stop, relax and the rest work";
+constexpr char kFallen[] STRIDER_PROGMEM = "fallen: set the robot upright; relax and the rest work";
 constexpr char kBatteryCritical[] STRIDER_PROGMEM = "battery critical: charge or swap it; stop, relax and the rest work";
 constexpr char kOkAvoid_[] STRIDER_PROGMEM = "ok avoid ";
 constexpr char kOn[] STRIDER_PROGMEM = "on";

@@ -23,6 +23,8 @@
 #include "constant_given.h"
 #include "battery_monitor.h"
 #include "controller.h"
+#include "fall_detector.h"
+#include "../sensing/attitude_filter.h"
 #include "model_constants.h"
 #include "servo_boards.h"
 #include "servo_stage.h"
@@ -69,6 +71,12 @@ constexpr char kNothing[] STRIDER_PROGMEM = "";
 constexpr char kInfoHeld[] STRIDER_PROGMEM = "info servos held";
 constexpr char kInfoBattery[] STRIDER_PROGMEM = "info battery ";
 constexpr char kBatteryMv[] STRIDER_PROGMEM = "battery_mv";
+constexpr char kImu[] STRIDER_PROGMEM = "imu";
+constexpr char kNone[] STRIDER_PROGMEM = "none";
+constexpr char kFallen[] STRIDER_PROGMEM = "fallen";
+constexpr char kImuFmt[] STRIDER_PROGMEM = " roll=" "\2" " pitch=" "\2";  // ReplyWriter::format()
+constexpr char kInfoFall[] STRIDER_PROGMEM = "info fall";
+constexpr char kInfoUpright[] STRIDER_PROGMEM = "info fall cleared";
 constexpr char kMv[] STRIDER_PROGMEM = "mv";
 constexpr char kBatteryLevelNames[] STRIDER_PROGMEM = "absent\0ok\0low\0critical";
 inline FlashText to_flash(BatteryLevel l) { return flash_name(kBatteryLevelNames, 4, uint8_t(l)); }
@@ -246,6 +254,24 @@ class RobotApp {
     if (battery_.critical()) motion_.walker().engine().sit_down();
   }
   const BatteryMonitor& battery_monitor() const { return battery_; }
+  //! Whether an MPU-6050 answered at start-up (the firmware probes the bus):
+  //! `status` then has `imu=none`, or `imu=ok` (`imu=fallen`) with roll and
+  //! pitch [deg]. Not called (the host tools): no imu field.
+  void set_imu_present(bool present) { imu_probed_ = true, imu_present_ = present; }
+  //! One IMU sample per tick, before tick() (nullptr: the read failed, the
+  //! attitude holds). The attitude filter (sensing/attitude_filter.h) runs at
+  //! the tick's period; a tilt past 50 deg for 0.2 s is a fall: `info fall`,
+  //! the servos go limp and walking is refused (err 33) until the robot has
+  //! stood upright (under 20 deg) for 1 s: `info fall cleared`.
+  template <typename Link>
+  void imu(const ImuSample<S>* sample, Link& link) {
+    if (sample == nullptr || !imu_present_) return;
+    attitude_.update(*sample, scalar<S>(double(kTickPeriodUs) * 1e-6));
+    if (!attitude_.has_attitude() || !fall_.update(attitude_.tilt_rad())) return;
+    notice(FlashText{fall_.fallen() ? app_text::kInfoFall : app_text::kInfoUpright}, link);
+    controller_.set_fallen(fall_.fallen());
+  }
+  const AttitudeFilter<S>& attitude() const { return attitude_; }
   //! The divider and thresholds (the firmware: from its board file).
   void set_battery_config(const BatteryConfig& c) { battery_ = BatteryMonitor(c); }
 
@@ -547,6 +573,13 @@ class RobotApp {
     w.format(FlashText{app_text::kOverrunsFmt}, overruns_, int32_t(tick_max_us_));
     if (stack_probe_ != nullptr) w.field(FlashText{app_text::kStackPeak}, stack_probe_());
     if (battery_.present()) w.field(FlashText{app_text::kBatteryMv}, battery_.mv());
+    if (imu_probed_) {
+      w.field_text(FlashText{app_text::kImu}, !imu_present_ ? FlashText{app_text::kNone}
+                                              : fall_.fallen() ? FlashText{app_text::kFallen} : FlashText{app_text::kOk});
+      constexpr S kDeg = scalar<S>(57.29577951308232);
+      if (imu_present_ && attitude_.has_attitude())
+        w.format(FlashText{app_text::kImuFmt}, to_tenths(attitude_.roll_rad() * kDeg), to_tenths(attitude_.pitch_rad() * kDeg));
+    }
   }
 
   const RobotModel& model_;  // in RAM or flash (model_in_flash_): read through copy_model() only
@@ -556,6 +589,10 @@ class RobotApp {
   Output& out_;
   WalkerMotion<S> motion_;
   BatteryMonitor battery_;
+  AttitudeFilter<S> attitude_;
+  FallDetector<S> fall_;
+  bool imu_probed_ = false;
+  bool imu_present_ = false;
   ServoStage<S, kJoints, kStoredChannels> stage_;
   Sink sink_;
   Controller<Sink, Store, false> controller_;  // input from parsers_

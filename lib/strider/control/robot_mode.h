@@ -18,7 +18,8 @@ enum class ControlError : uint8_t {
   kUnknownGait = 23,     //!< the robot has no gait of that name
   kRefused = 24,         //!< pose/height outside what the robot can do
   kServoFault = 31,      //!< walking while a servo board does not answer (or is starting again)
-  kBatteryCritical = 32  //!< walking on a critically low battery (RobotApp's BatteryMonitor)
+  kBatteryCritical = 32, //!< walking on a critically low battery (RobotApp's BatteryMonitor)
+  kFallen = 33           //!< walking while the robot lies tipped over (RobotApp's FallDetector)
 };
 
 enum class RobotMode : uint8_t { kStanding = 0, kWalking = 1, kRelaxed = 2, kCalibrating = 3 };
