@@ -1091,7 +1091,10 @@ TEST_P(FirmwareImu, TiltIsReportedAndATipOverIsAFall) {
   EXPECT_FALSE(r.wait_for_line([](const std::string& l) { return l == "info fall cleared"; }, 8000000).empty())
       << r.transcript();
   EXPECT_EQ(r.command("walk 40").rfind("ok", 0), 0u) << r.transcript();
+  r.run_for(2000000);
   EXPECT_EQ(r.mega().unexpected_resets(), 0);
+  EXPECT_LE(r.mega().stack_peak_bytes(), 1024u) << "with the IMU read every tick";
+  std::printf("%s with the IMU: stack peak %u bytes\n", GetParam().c_str(), unsigned(r.mega().stack_peak_bytes()));
 }
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareImu, ::testing::Values("sprawl8", "hexapod18"), param_name);
 

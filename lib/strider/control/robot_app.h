@@ -244,7 +244,7 @@ class RobotApp {
   //! recovers (battery_monitor.h: its hold and hysteresis). `status` has
   //! `battery_mv` while a pack is seen.
   template <typename Link>
-  void battery(uint16_t adc_code, Link& link) {
+  STRIDER_NOINLINE void battery(uint16_t adc_code, Link& link) {
     if (!battery_.add(adc_code)) return;
     ReplyLine line;
     line.w.text(FlashText{app_text::kInfoBattery}).text(app_text::to_flash(battery_.level()));
@@ -264,7 +264,7 @@ class RobotApp {
   //! the servos go limp and walking is refused (err 33) until the robot has
   //! stood upright (under 20 deg) for 1 s: `info fall cleared`.
   template <typename Link>
-  void imu(const ImuSample<S>* sample, Link& link) {
+  STRIDER_NOINLINE void imu(const ImuSample<S>* sample, Link& link) {
     if (sample == nullptr || !imu_present_) return;
     attitude_.update(*sample, scalar<S>(double(kTickPeriodUs) * 1e-6));
     if (!attitude_.has_attitude() || !fall_.update(attitude_.tilt_rad())) return;
