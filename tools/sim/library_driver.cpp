@@ -1,6 +1,7 @@
 // LibraryDriver: the firmware's own control chain, compiled for the host:
 // Bluetooth bytes -> strider::RobotApp (parser, controller, walker, servo
 // stage) -> ServoOutput calls -> PCA9685 registers -> pulse widths.
+#include <cmath>
 #include <cstdio>
 #include <deque>
 
@@ -132,8 +133,27 @@ class LibraryDriver : public Driver, private HostParts {
       echo_at_us_ = double(t_us) + echo_width_us_;
       echo_pending_ = true;
     }
+    feed_sensors(link);
     app_.tick(now, link);
     update_pulses();
+  }
+
+  // The robot's own sensors, as the firmware reads them before its tick: the
+  // MPU-6050 (when fitted) and the battery divider's pin through a 10-bit ADC
+  // against 5 V.
+  void feed_sensors(Lines& link) {
+    const SensorInputs& in = sensors();
+    if (in.imu_fitted) {
+      if (!imu_announced_) app_.set_imu_present(true);
+      imu_announced_ = true;
+      strider::ImuSample<float> s;
+      s.accel_m_s2 = strider::Vec3<float>(float(in.imu.accel_m_s2.x), float(in.imu.accel_m_s2.y), float(in.imu.accel_m_s2.z));
+      s.gyro_rad_s = strider::Vec3<float>(float(in.imu.gyro_rad_s.x), float(in.imu.gyro_rad_s.y), float(in.imu.gyro_rad_s.z));
+      s.temp_c = float(in.imu.temp_c);
+      app_.imu(&s, link);
+    }
+    const double code = std::floor(in.battery_pin_v * 1024.0 / 5.0);
+    app_.battery(uint16_t(code < 0 ? 0 : code > 1023 ? 1023 : code), link);
   }
 
   void update_pulses() { boards.pulses(osc_hz_, pulses_); }
@@ -180,6 +200,7 @@ class LibraryDriver : public Driver, private HostParts {
   }
 
   HostApp app_;
+  bool imu_announced_ = false;
   const strider::RobotModel& model_;
   GaitOverrides gait_;
   strider::GaitParams params_{};  // the gait parameters walked: the defaults with the overrides
