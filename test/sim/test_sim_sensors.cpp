@@ -264,4 +264,30 @@ TEST(SimSensors, LibraryRunTraceAndMetrics) {
   EXPECT_NE(strider_sim::metrics_json(r.metrics).find("\"battery_used_mah\""), std::string::npos);
 }
 
+// The robot's code reads them in library mode as the firmware does: the
+// status line carries the filter's roll and pitch (near the body's) and the
+// pack's voltage (near the model's).
+TEST(SimSensors, LibraryModeRobotReadsTheImuAndTheBattery) {
+  strider_sim::Scenario sc;
+  std::string err;
+  ASSERT_TRUE(strider_sim::parse_scenario("robot sprawl8\nduration 6\nimu on\nat 5.5 send status\\n\n", &sc, &err)) << err;
+  strider_sim::RunOptions o;
+  o.sensors.imu = ImuConfig::ideal();
+  const strider_sim::RunResult r = strider_sim::run_scenario(sc, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  std::string status, battery;
+  for (const auto& l : r.log) {
+    if (l.text.rfind("ok status", 0) == 0) status = l.text;
+    if (l.text.rfind("info battery", 0) == 0) battery = l.text;
+  }
+  ASSERT_FALSE(status.empty());
+  EXPECT_NE(status.find(" imu=ok roll="), std::string::npos) << status;
+  EXPECT_EQ(battery.rfind("info battery ok mv=", 0), 0u) << battery;
+  const size_t at = status.find("battery_mv=");
+  ASSERT_NE(at, std::string::npos) << status;
+  EXPECT_NEAR(std::stoi(status.substr(at + 11)), 1000.0 * r.trace.back().battery_v, 150.0) << status;
+  const size_t roll = status.find("roll=");
+  EXPECT_NEAR(std::stod(status.substr(roll + 5)), r.trace.back().body.roll_deg, 1.5) << status;
+}
+
 }  // namespace
