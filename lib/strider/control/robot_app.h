@@ -132,21 +132,6 @@ class RobotApp {
         restoring_(false),
         i2c_errors_(0),
         reply_buf_() {}
-  //! The same in zeroed storage (zeroed_storage.h: a firmware's global
-  //! array in .bss, built in place): only the members whose default is not
-  //! zero are written.
-  RobotApp(ZeroedStorage z, const RobotModel& model, Output& out, Store& store, ModelMemory where = ModelMemory::kRam)
-      : model_(model),
-        model_in_flash_(where == ModelMemory::kFlash),
-        out_(out),
-        motion_(z),
-        stage_(z),
-        sink_(*this),
-        controller_(z, sink_, store, LoadedSettings(store)),
-        parsers_{CommandParser(z), CommandParser(z)},
-        sonar_(z) {
-    static_assert(kLinkPorts == 2, "one parser per port in the list above");
-  }
 
   //! Power-up: walker (sitting), servo map, boot notices; the soft start
   //! begins with the first tick. False (and an `err` notice) when the model
