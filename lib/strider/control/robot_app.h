@@ -68,11 +68,10 @@ constexpr char kNothing[] STRIDER_PROGMEM = "";
 constexpr char kInfoHeld[] STRIDER_PROGMEM = "info servos held";
 constexpr char kWalkFmt[] STRIDER_PROGMEM = " walk_vx=" "\2" " walk_vy=" "\2" " walk_wz=" "\2";  // ReplyWriter::format()
 constexpr char kOverrunsFmt[] STRIDER_PROGMEM = " overruns=" "\1" " tick_max_us=" "\1";
-// The names of the gait engine's and the IK's states (to_string() in
-// gait_engine.h and ik_status.h), in flash; a test keeps them equal.
-constexpr char kGaitStateNames[] STRIDER_PROGMEM = "sitting\0standing_up\0standing\0walking\0stopping\0sitting_down";
+// The IK's states' names (to_string() in ik_status.h), in flash; a test
+// keeps them equal. The gait states' names: kGaitStateNames (gait_state.h).
 constexpr char kIkStatusNames[] STRIDER_PROGMEM = "ok\0clamped\0joint_limit\0unreachable";
-inline FlashText to_flash(GaitState s) { return flash_name(kGaitStateNames, 6, uint8_t(s)); }
+inline FlashText to_flash(GaitState s) { return flash_name(kGaitStateNames, kGaitStateCount, uint8_t(s)); }
 inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uint8_t(s)); }
 }  // namespace app_text
 
