@@ -32,7 +32,6 @@
 #include "serial_link.h"
 
 #include <Arduino.h>
-#include <new.h>
 #include <avr/sleep.h>
 #include <avr/wdt.h>
 
@@ -97,26 +96,9 @@ uint16_t g_servo_shadow[kBoards * strider::kPcaChannelsPerBoard];  // the boards
 Pca9685Output g_servos(g_servo_shadow, uint8_t(sizeof g_servo_shadow / sizeof g_servo_shadow[0]));
 EepromStore g_eeprom;
 SerialLink g_link;
-// The RobotApp is built at the start of setup() (make_app()), in place: its
-// constructor then stores through a pointer (2 bytes of code per byte it
-// sets) instead of to each member's address as a global constructor does
-// (4 bytes). Every access below is still to a fixed address.
-// A union, so that the bytes and the object alias by the language's rules;
-// its constructor only zeroes the bytes at compile time (.bss, no global
-// constructor).
-union AppStorage {
-  constexpr AppStorage() : bytes() {}
-  uint8_t bytes[sizeof(App)];
-  App app;
-};
-AppStorage g_app_storage;
-App& g_app = g_app_storage.app;
-__attribute__((noinline)) void make_app() {
-  // g_app_storage is in .bss and nothing has written it yet: the constructor
-  // for zeroed storage (zeroed_storage.h) stores only the members whose
-  // default is not zero.
-  new (&g_app_storage.app) App(strider::kZeroedStorage, kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
-}
+// The RobotApp, built in setup() once the watchdog is on: its constructor
+// reads the settings from EEPROM.
+App* g_app = nullptr;
 uint32_t g_next_tick_us = 0;
 uint32_t g_last_tick_us = 0;  // the last tick's scheduled time
 // The servo boards' check runs once per period, this long after the frame:
@@ -185,7 +167,7 @@ void report_reset_cause() {
 uint8_t warm_prescale() {
   if (g_reset_flags & _BV(PORF)) return 0;
   strider::Pca9685Timing timing;  // 25 MHz, 50 Hz unless the settings' oscillator is accepted
-  const strider::Settings& s = g_app.controller().settings();
+  const strider::Settings& s = g_app->controller().settings();
   timing.configure(s.pca_osc_hz, s.pwm_hz);
   return timing.prescale();
 }
@@ -219,8 +201,8 @@ void read_links(uint32_t now_us) {
         const uint32_t t = micros();
         if (t - start_us >= kLinkReadUs || int32_t(t - g_next_tick_us) >= 0) break;
       }
-      if (g_rx_watch[port].gap_before_next(uint16_t(waiting), kRxCapacity)) g_app.on_bytes_lost(port, now_us, g_link);
-      g_app.on_byte(port, uint8_t(s.read()), now_us, g_link);
+      if (g_rx_watch[port].gap_before_next(uint16_t(waiting), kRxCapacity)) g_app->on_bytes_lost(port, now_us, g_link);
+      g_app->on_byte(port, uint8_t(s.read()), now_us, g_link);
     }
   }
 }
@@ -231,8 +213,8 @@ void read_links(uint32_t now_us) {
 void run_sonar() {
   const uint32_t now_us = micros();
   strider::EchoSample sample;
-  if (hcsr04::poll(now_us, &sample)) g_app.sonar().add(sample, now_us);
-  if (!hcsr04::busy() && g_app.sonar().ping_due(now_us)) hcsr04::trigger(now_us);
+  if (hcsr04::poll(now_us, &sample)) g_app->sonar().add(sample, now_us);
+  if (!hcsr04::busy() && g_app->sonar().ping_due(now_us)) hcsr04::trigger(now_us);
 }
 
 }  // namespace
@@ -247,9 +229,9 @@ static __attribute__((noinline)) void read_sensors() {
     const bool read = mpu6050_imu::read(burst);
     const strider::ImuSample<Scalar> s =
         strider::mpu6050_sample<Scalar>(burst, mpu6050_imu::kAccelRange, mpu6050_imu::kGyroRange);
-    g_app.imu(read ? &s : nullptr, g_link);
+    g_app->imu(read ? &s : nullptr, g_link);
   }
-  g_app.battery(uint16_t(analogRead(pins::kBatteryAdcChannel)), g_link);  // 0.11 ms
+  g_app->battery(uint16_t(analogRead(pins::kBatteryAdcChannel)), g_link);  // 0.11 ms
 }
 
 // The heartbeat LED through its port's registers (no pinMode(), digitalRead()).
@@ -265,25 +247,26 @@ void setup() {
   // (the velocity limits come from a table, STRIDER_VELOCITY_SEARCH 0); a
   // reply that waits for a full ring feeds it (serial_link.h).
   wdt_enable(WDTO_500MS);
-  make_app();
+  static App app(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM
+  g_app = &app;
   DDRB |= _BV(PB7);
   Serial.begin(pins::kUsbBaud);
-  Serial1.begin(g_app.controller().settings().baud);
+  Serial1.begin(g_app->controller().settings().baud);
   hcsr04::begin();
   report_reset_cause();
   // After an MCU reset the boards may still run the last frame (the robot
   // stands on it): held() outputs keep their pulses and the robot stands up
   // from them. After a power-up, every output starts off.
   g_servos.begin(kBoards, warm_prescale());
-  g_app.set_stack_probe(stack_peak);
+  g_app->set_stack_probe(stack_peak);
   strider::BatteryConfig battery;
   battery.adc_ref_mv = pins::kAdcReferenceMv;
   battery.divider_x100 = pins::kBatteryDividerX100;
-  g_app.set_battery_config(battery);
+  g_app->set_battery_config(battery);
   g_imu = mpu6050_imu::begin();  // after the boards: the bus is up
-  g_app.set_imu_present(g_imu);
+  g_app->set_imu_present(g_imu);
   wdt_reset();
-  g_app.begin(micros(), g_link, g_servos.held() != 0 ? g_servos.outputs() : nullptr, g_servos.channels());
+  g_app->begin(micros(), g_link, g_servos.held() != 0 ? g_servos.outputs() : nullptr, g_servos.channels());
   wdt_reset();
   g_next_tick_us = micros();
   g_last_tick_us = g_next_tick_us - strider::kTickPeriodUs;
@@ -302,15 +285,15 @@ void loop() {
     // more after skipped ones), not by the measured one: the loop wakes on
     // Timer0's overflow every 1.024 ms, and that jitter of the start would
     // otherwise move the feet by a different amount every tick.
-    g_app.tick(start_us, g_link, g_next_tick_us - g_last_tick_us);
+    g_app->tick(start_us, g_link, g_next_tick_us - g_last_tick_us);
     g_last_tick_us = g_next_tick_us;
     const uint32_t took = micros() - start_us;
-    g_app.record_tick_time(took);
+    g_app->record_tick_time(took);
     g_next_tick_us += strider::kTickPeriodUs;
     const int32_t late = int32_t(micros() - g_next_tick_us);
     if (late > int32_t(strider::kTickPeriodUs)) {  // fell behind by whole ticks: skip them
       const uint32_t missed = uint32_t(late) / strider::kTickPeriodUs;
-      g_app.record_missed_ticks(uint16_t(missed > 0xFFFF ? 0xFFFF : missed));
+      g_app->record_missed_ticks(uint16_t(missed > 0xFFFF ? 0xFFFF : missed));
       g_next_tick_us += missed * strider::kTickPeriodUs;
     }
     if (!g_boards_due) {
@@ -323,7 +306,7 @@ void loop() {
   if (g_boards_due && int32_t(now_us - g_boards_at_us) >= 0) {
     g_boards_due = false;
     g_servos.service(now_us / 1000u);
-    g_app.servo_boards(g_servos.report(), now_us, g_link);
+    g_app->servo_boards(g_servos.report(), now_us, g_link);
   }
   const uint32_t now_ms = now_us / 1000u;
   if (now_ms - g_led_ms >= 500u) {  // heartbeat: the loop is alive

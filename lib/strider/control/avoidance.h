@@ -12,7 +12,6 @@
 
 #include <stdint.h>
 
-#include "../math/zeroed_storage.h"
 #include "hal_interfaces.h"
 #include "reply.h"
 #include "sonar_filter.h"
@@ -68,8 +67,6 @@ inline FlashText to_flash(AvoidState s) { return flash_name(kAvoidStateNames, 6,
 class Avoidance {
  public:
   Avoidance() : since_ms_(0), extra_ms_(0), last_ms_(0), cleared_(0), state_(AvoidState::kPassThrough), switched_(false) {}
-  //! In zeroed storage (zeroed_storage.h): only the non-zero members written.
-  explicit Avoidance(ZeroedStorage) {}
 
   //! One control tick: the operator's command, the sonar, the time -> the
   //! command to walk. Seed 000 only avoids while walking forward.

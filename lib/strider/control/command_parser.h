@@ -24,7 +24,6 @@
 
 #include <stdint.h>
 
-#include "../math/zeroed_storage.h"
 #include "command.h"
 #include "command_line.h"
 #include "line_check.h"
@@ -77,7 +76,6 @@ inline Command rc_command(uint8_t b) {
 class CommandParser {
  public:
   CommandParser() : len_(0), last_rc_(0), after_cr_(false), state_(State::kIdle) {}
-  explicit CommandParser(ZeroedStorage) {}  //!< zeroed_storage.h: all zero
 
   //! Feeds one received byte. On kCommand or kError, *out is filled.
   ParseResult feed(uint8_t b, Command* out) {

@@ -38,13 +38,11 @@ namespace controller_detail {
 template <bool kOwn>
 struct ParserSlot {
   ParserSlot() = default;
-  explicit ParserSlot(ZeroedStorage z) : parser_(z) {}
   CommandParser parser_;
 };
 template <>
 struct ParserSlot<false> {
   ParserSlot() = default;
-  explicit ParserSlot(ZeroedStorage) {}
 };
 }  // namespace controller_detail
 
@@ -64,13 +62,6 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   //! The same from the settings the store gave (settings_store.h).
   Controller(Sink& sink, Store& store, const LoadedSettings& loaded)
       : Controller(sink, store, loaded.settings, loaded.record.load_status, loaded.record) {}
-  //! The same in zeroed storage (zeroed_storage.h): only the non-zero
-  //! members written.
-  Controller(ZeroedStorage z, Sink& sink, Store& store, const LoadedSettings& loaded)
-      : controller_detail::ParserSlot<kOwnParser>(z), sink_(sink), store_(store), settings_(loaded.settings),
-        cal_(loaded.settings), record_(loaded.record), deadman_(z), avoid_(z) {
-    apply_loaded();
-  }
 
   //! One received byte at now_ms. Returns true when *w holds a reply line
   //! (without line ending) to send.

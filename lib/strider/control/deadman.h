@@ -6,7 +6,6 @@
 
 #include <stdint.h>
 
-#include "../math/zeroed_storage.h"
 #include "hal_interfaces.h"
 
 namespace strider {
@@ -14,8 +13,6 @@ namespace strider {
 class Deadman {
  public:
   explicit Deadman(uint16_t timeout_ms = 1000) : last_ms_(0), timeout_ms_(timeout_ms) {}
-  //! In zeroed storage (zeroed_storage.h): only the non-zero members written.
-  explicit Deadman(ZeroedStorage, uint16_t timeout_ms = 1000) : timeout_ms_(timeout_ms) {}
 
   void set_timeout(uint16_t timeout_ms) { timeout_ms_ = timeout_ms; }  //!< 0 = off
   uint16_t timeout_ms() const { return timeout_ms_; }

@@ -82,11 +82,10 @@ constexpr char kBatteryLevelNames[] STRIDER_PROGMEM = "absent\0ok\0low\0critical
 inline FlashText to_flash(BatteryLevel l) { return flash_name(kBatteryLevelNames, 4, uint8_t(l)); }
 constexpr char kWalkFmt[] STRIDER_PROGMEM = " walk_vx=" "\2" " walk_vy=" "\2" " walk_wz=" "\2";  // ReplyWriter::format()
 constexpr char kOverrunsFmt[] STRIDER_PROGMEM = " overruns=" "\1" " tick_max_us=" "\1";
-// The names of the gait engine's and the IK's states (to_string() in
-// gait_engine.h and ik_status.h), in flash; a test keeps them equal.
-constexpr char kGaitStateNames[] STRIDER_PROGMEM = "sitting\0standing_up\0standing\0walking\0stopping\0sitting_down";
+// The IK's states' names (to_string() in ik_status.h), in flash; a test
+// keeps them equal. The gait states' names: kGaitStateNames (gait_state.h).
 constexpr char kIkStatusNames[] STRIDER_PROGMEM = "ok\0clamped\0joint_limit\0unreachable";
-inline FlashText to_flash(GaitState s) { return flash_name(kGaitStateNames, 6, uint8_t(s)); }
+inline FlashText to_flash(GaitState s) { return flash_name(kGaitStateNames, kGaitStateCount, uint8_t(s)); }
 inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uint8_t(s)); }
 }  // namespace app_text
 
@@ -146,21 +145,6 @@ class RobotApp {
         restoring_(false),
         i2c_errors_(0),
         reply_buf_() {}
-  //! The same in zeroed storage (zeroed_storage.h: a firmware's global
-  //! array in .bss, built in place): only the members whose default is not
-  //! zero are written.
-  RobotApp(ZeroedStorage z, const RobotModel& model, Output& out, Store& store, ModelMemory where = ModelMemory::kRam)
-      : model_(model),
-        model_in_flash_(where == ModelMemory::kFlash),
-        out_(out),
-        motion_(z),
-        stage_(z),
-        sink_(*this),
-        controller_(z, sink_, store, LoadedSettings(store)),
-        parsers_{CommandParser(z), CommandParser(z)},
-        sonar_(z) {
-    static_assert(kLinkPorts == 2, "one parser per port in the list above");
-  }
 
   //! Power-up: walker (sitting), servo map, boot notices; the soft start
   //! begins with the first tick. False (and an `err` notice) when the model

@@ -108,8 +108,6 @@ class ServoStage {
       : fast_(false), unfit_(false), fitted_legs_(0), settings_(nullptr), model_(nullptr), where_(ModelMemory::kRam),
         next_leg_ms_(0), count_(0), dof_(0), legs_(0), enabled_legs_(0), soft_start_(false),
         status_(ServoStatus::kOk) {}
-  //! In zeroed storage (zeroed_storage.h): only the non-zero members written.
-  explicit ServoStage(ZeroedStorage z) : tick_map_(z) {}
 
   //! Channel map of `model` (readable: a copy of `source` if that is in
   //! flash); every output off. The stage reads `source` again later

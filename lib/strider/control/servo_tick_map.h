@@ -89,14 +89,9 @@ namespace servo_ticks_detail {
 //! them per joint. kSlots > 0: joint i's range in slot i % kSlots, shared
 //! with every joint of that slot (a firmware whose legs have one geometry:
 //! a slot per joint of a leg), the rest per joint.
-//! The arrays are members of anonymous unions so that the constructor for
-//! zeroed storage (zeroed_storage.h) need not build them element by element
-//! (Fixed's default constructor stores its zero); the default constructor
-//! value-initialises them (zero).
 template <typename S, uint8_t N, uint8_t kSlots>
 struct TickJoints {
   TickJoints() : own_(), range_() {}
-  explicit TickJoints(ZeroedStorage) {}
   const ServoTickOwn<S>& own(uint8_t i) const { return own_[i]; }
   ServoTickOwn<S>& own(uint8_t i) { return own_[i]; }
   const ServoTickRange<S>& range(uint8_t, uint8_t slot) const { return range_[slot]; }
@@ -106,25 +101,18 @@ struct TickJoints {
     if (i < kSlots) range_[i] = r;
   }
 
-  union {
-    ServoTickOwn<S> own_[N];
-  };
-  union {
-    ServoTickRange<S> range_[kSlots];
-  };
+  ServoTickOwn<S> own_[N];
+  ServoTickRange<S> range_[kSlots];
 };
 template <typename S, uint8_t N>
 struct TickJoints<S, N, 0> {
   TickJoints() : joint_() {}
-  explicit TickJoints(ZeroedStorage) {}
   const ServoTickOwn<S>& own(uint8_t i) const { return joint_[i]; }
   ServoTickOwn<S>& own(uint8_t i) { return joint_[i]; }
   const ServoTickRange<S>& range(uint8_t i, uint8_t) const { return joint_[i]; }
   void set_range(uint8_t i, const ServoTickRange<S>& r) { static_cast<ServoTickRange<S>&>(joint_[i]) = r; }
 
-  union {
-    ServoTickJoint<S> joint_[N];
-  };
+  ServoTickJoint<S> joint_[N];
 };
 }  // namespace servo_ticks_detail
 
@@ -136,8 +124,6 @@ template <typename S, uint8_t N = kMaxServoTickJoints, uint8_t kSlots = 0>
 class ServoTickMap {
  public:
   ServoTickMap() : count_(0) {}
-  //! In zeroed storage (zeroed_storage.h): count_ left at zero.
-  explicit ServoTickMap(ZeroedStorage z) : joints_(z) {}
 
   //! Folds count channels (trims settings.trim_decideg[first_trim + i]) and
   //! the PWM timing into per-joint constants. Call after configure of the

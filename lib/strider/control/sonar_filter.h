@@ -13,7 +13,6 @@
 
 #include <stdint.h>
 
-#include "../math/zeroed_storage.h"
 #include "hal_interfaces.h"
 
 namespace strider {
@@ -46,7 +45,6 @@ class SonarFilter {
   SonarFilter()
       : window_(), count_(0), next_(0), missing_(0), have_sample_(false), pinged_(false), last_sample_us_(0),
         last_ping_us_(0) {}
-  explicit SonarFilter(ZeroedStorage) {}  //!< zeroed_storage.h: all zero
 
   //! When the next ping should be triggered (non-blocking driver): true at
   //! most once per kSonarPingPeriodUs.

@@ -25,9 +25,6 @@ template <typename S>
 class WalkerMotion {
  public:
   WalkerMotion() = default;
-  //! In zeroed storage (zeroed_storage.h): only the non-zero defaults written.
-  explicit WalkerMotion(ZeroedStorage z)
-      : walker_(z), offsets_{z, z, z, z}, stand_height_mm_(z), last_(), have_command_() {}
 
   //! Builds the walker for `model` with its default gait and swing shape,
   //! sitting. Start-up only: takes the stored velocity limits (or, for a

@@ -41,10 +41,6 @@ template <typename S>
 class BodyShift {
  public:
   BodyShift() : x_(), y_(), from_x_(), from_y_() {}
-  //! In zeroed storage (zeroed_storage.h): Fixed's zeros named with the tag, float's left out.
-  explicit BodyShift(ZeroedStorage z) : BodyShift(z, ZeroedFor<S>()) {}
-  BodyShift(ZeroedStorage z, ZeroedFor<Fixed>) : x_(z), y_(z), from_x_(z), from_y_(z) {}
-  BodyShift(ZeroedStorage, ZeroedFor<float>) {}
   S x_mm() const { return x_; }
   S y_mm() const { return y_; }
 

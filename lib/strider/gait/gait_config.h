@@ -24,15 +24,6 @@ struct GaitConfig {
       : leg_count(0), step_height_mm(), stance_depth_mm(), foot_radius_mm(), com_x_mm(), com_y_mm(), margin_mm(),
         shift_budget_mm(), sit_drop_mm(), accel_mm_s2(), yaw_accel_rad_s2(), shift_speed_mm_s(), target_speed_mm_s(),
         pose_speed_mm_s(), pose_rate_rad_s(), home_tolerance_mm(), shift_x_only(false), unit_shift(0) {}
-  //! In zeroed storage (zeroed_storage.h): only the non-zero defaults
-  //! written (Fixed's zeros named with the tag, float's left out).
-  explicit GaitConfig(ZeroedStorage z) : GaitConfig(z, ZeroedFor<S>()) {}
-  GaitConfig(ZeroedStorage z, ZeroedFor<float>) : home{STRIDER_PER_WALKER_LEG(z)}, edge_mm{STRIDER_PER_WALKER_LEG(z)}, limits(z) {}
-  GaitConfig(ZeroedStorage z, ZeroedFor<Fixed>)
-      : home{STRIDER_PER_WALKER_LEG(z)}, step_height_mm(z), stance_depth_mm(z), foot_radius_mm(z), com_x_mm(z),
-        com_y_mm(z), margin_mm(z), shift_budget_mm(z), sit_drop_mm(z), accel_mm_s2(z), yaw_accel_rad_s2(z),
-        shift_speed_mm_s(z), target_speed_mm_s(z), pose_speed_mm_s(z), pose_rate_rad_s(z), home_tolerance_mm(z),
-        edge_mm{STRIDER_PER_WALKER_LEG(z)}, limits(z) {}
 
   // leg_count, shift_x_only and unit_shift are zero, by the constructors.
   uint8_t leg_count;

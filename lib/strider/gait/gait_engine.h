@@ -48,9 +48,6 @@ class GaitEngine {
         land_fresh_(false), odo_dx_(), odo_dy_(), odo_wx_(), odo_wy_(), held_(false), in_window_(false),
         window_start_(0), window_inv_(), pose_(), goal_pose_(), margin_(), margin_fresh_(false), step_cache_(),
         td_fresh_(false), td_sin_(), td_dx_(), td_dy_(), odo_x_(), odo_y_(), odo_yaw_(), odo_s_() {}
-  //! The same state in zeroed storage (zeroed_storage.h): only the members
-  //! whose default is not zero are written.
-  explicit GaitEngine(ZeroedStorage z) : GaitEngine(z, ZeroedFor<S>()) {}
 
   //! Takes the configuration and a gait; the robot stands (or sits).
   void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false);
@@ -338,23 +335,7 @@ class GaitEngine {
   static constexpr uint8_t kNoGroup = 0xFF;
   static constexpr double kEdgeShare = 0.53;
 
-  // The zeroed-storage constructor's two forms: Fixed's zeros named with
-  // the tag (its default constructor would store them), float's left out.
-  GaitEngine(ZeroedStorage z, ZeroedFor<Fixed>)
-      : cfg_(z), cmd_vx_(z), cmd_vy_(z), cmd_wz_(z), to_{z, z, z, z, false}, from_s_{z, z, z, z},
-        to_s_{z, z, z, z}, now_s_{z, z, z, z}, land_s_{z, z, z, z}, vx_(z), vy_(z), wz_(z), clock_(z),
-        support_(z),
-        next_support_(z),
-        odo_dx_(z), odo_dy_(z), odo_wx_(z), odo_wy_(z), shift_(z), window_inv_(z), pose_{z, z, z, z},
-        goal_pose_{z, z, z, z}, margin_(z), step_cache_{z, {z, z, z, z, z}}, td_sin_(z), td_dx_(z), td_dy_(z),
-        odo_x_(z), odo_y_(z), odo_yaw_(z), odo_s_(z) {}
-  GaitEngine(ZeroedStorage z, ZeroedFor<float>)
-      : cfg_(z), clock_(z), support_(z),
-        next_support_(z),
-        shift_(z) {}
-
-  // Members without a default here are set by the constructors (zero),
-  // which the zeroed-storage constructor leaves alone.
+  // Members without a default here are set by the constructor (zero).
   GaitConfig<S> cfg_;
   GaitTable base_;   // as given; as walked: table()
   Phase16 offset_[kWalkerLegs];
@@ -376,16 +357,13 @@ class GaitEngine {
   S vx_, vy_, wz_, hz_ = S(1);
 
   PhaseClock clock_;
-  // The scalar arrays in anonymous unions: the zeroed-storage constructor
-  // need not build them element by element (Fixed's default constructor
-  // stores its zero); the default constructor value-initialises them.
-  union { Vec3<S> foot_[kWalkerLegs]; };
+  Vec3<S> foot_[kWalkerLegs];
   bool contact_[kWalkerLegs];
   bool pending_[kWalkerLegs];
-  union { Vec3<S> lift_[kWalkerLegs]; };
-  union { Vec3<S> target_[kWalkerLegs]; };
-  union { S apex_[kWalkerLegs]; };
-  union { S leg_inv_swing_[kWalkerLegs]; };
+  Vec3<S> lift_[kWalkerLegs];
+  Vec3<S> target_[kWalkerLegs];
+  S apex_[kWalkerLegs];
+  S leg_inv_swing_[kWalkerLegs];
   uint32_t leg_swing_len_[kWalkerLegs];
   uint32_t swing_elapsed_[kWalkerLegs];
   int32_t stance_elapsed_[kWalkerLegs];  // phase since touch-down (may start negative)
@@ -394,7 +372,7 @@ class GaitEngine {
   mutable bool support_dirty_ = true;
   SupportPolygon<S> next_support_;
   // beyond_edge(): squared radius [unit^2] inside which no foot is at its edge
-  union { S edge_r2_[kWalkerLegs]; };
+  S edge_r2_[kWalkerLegs];
   bool settled_[kWalkerLegs];  // swinging foot's touch-down point already at touchdown_xy(i)
   bool vel_fresh_;       // vx_, vy_, wz_ are now_s_ x hz_
   bool land_fresh_;      // the ramp is over and land_s_ is now_s_ (update_landing() has nothing to do)

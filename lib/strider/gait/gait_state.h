@@ -5,6 +5,8 @@
 
 #include <stdint.h>
 
+#include "../math/flash_table.h"
+
 namespace strider {
 
 enum class GaitState : uint8_t {
@@ -16,16 +18,21 @@ enum class GaitState : uint8_t {
   kSittingDown = 5  //!< lowering the body
 };
 
+//! The states' names in GaitState's order, each ended by a NUL: the one
+//! list that to_string() and the firmware's replies (robot_app.h) read. In
+//! flash on the AVR (flash_u8()).
+constexpr char kGaitStateNames[] STRIDER_PROGMEM = "sitting\0standing_up\0standing\0walking\0stopping\0sitting_down";
+constexpr uint8_t kGaitStateCount = 6;
+
+//! The state's name: a pointer into kGaitStateNames (on the AVR an address
+//! in flash); "standing" for a value out of range.
 inline const char* to_string(GaitState s) {
-  switch (s) {
-    case GaitState::kSitting: return "sitting";
-    case GaitState::kStandingUp: return "standing_up";
-    case GaitState::kStanding: return "standing";
-    case GaitState::kWalking: return "walking";
-    case GaitState::kStopping: return "stopping";
-    case GaitState::kSittingDown: return "sitting_down";
+  const char* p = kGaitStateNames;
+  for (uint8_t i = uint8_t(s) < kGaitStateCount ? uint8_t(s) : uint8_t(GaitState::kStanding); i > 0; --i) {
+    while (flash_u8(p) != 0) ++p;
+    ++p;
   }
-  return "standing";
+  return p;
 }
 
 }  // namespace strider

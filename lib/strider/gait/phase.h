@@ -170,7 +170,6 @@ inline uint32_t cycles_to_q32(Fixed cycles) {
 class PhaseClock {
  public:
   PhaseClock() : phase_(0), previous_(0) {}
-  explicit PhaseClock(ZeroedStorage) {}  //!< zeroed_storage.h
   //! The current phase [2^-32 cycle].
   uint32_t raw() const { return phase_; }
   //! The current phase as Phase16.

@@ -34,8 +34,6 @@ template <typename S>
 class SupportPolygon {
  public:
   SupportPolygon() : count_(0), idx_(), inv_len_(), corner_(), radius_(S(0)), shift_(0) {}
-  //! In zeroed storage (zeroed_storage.h): nothing written.
-  explicit SupportPolygon(ZeroedStorage z) : radius_(z) {}
   //! The hull of the feet i < n with contact[i] (their x, y) [mm], feet of
   //! radius foot_radius_mm; shift: working units 2^shift mm (0 for float).
   void build(const Vec3<S>* feet, const bool* contact, uint8_t n, S foot_radius_mm, int8_t shift) {
@@ -261,16 +259,11 @@ class SupportPolygon {
     return S(0);
   }
 
-  // Initialised by the constructors (no defaults here: the zeroed-storage
-  // constructor leaves the zeros alone).
+  // Initialised by the constructor.
   uint8_t count_;
   uint8_t idx_[kWalkerLegs];
-  union {  // anonymous: not built element by element by the zeroed-storage constructor
-    S inv_len_[kWalkerLegs];
-  };
-  union {
-    S corner_[kWalkerLegs];  //!< vertex k of the shrunk polygon: a_k + d (n_k + corner_k u_k)
-  };
+  S inv_len_[kWalkerLegs];
+  S corner_[kWalkerLegs];  //!< vertex k of the shrunk polygon: a_k + d (n_k + corner_k u_k)
   S radius_;
   int8_t shift_;
 };

@@ -88,12 +88,6 @@ struct VelocityLimits {
 #endif
         preferred_stride_mm(), lift_ms(), swing_ms_per_mm(), stance_ms_per_mm() {
   }
-  //! In zeroed storage (zeroed_storage.h): only the non-zero defaults
-  //! written (Fixed's zeros named with the tag, float's left out).
-  explicit VelocityLimits(ZeroedStorage z) : VelocityLimits(z, ZeroedFor<S>()) {}
-  VelocityLimits(ZeroedStorage z, ZeroedFor<Fixed>)
-      : preferred_stride_mm(z), lift_ms(z), swing_ms_per_mm(z), stance_ms_per_mm(z) {}
-  VelocityLimits(ZeroedStorage, ZeroedFor<float>) {}
 
   uint8_t leg_count;  // zero, by the constructors
   //! False for planar legs (seed 003): they cannot step sideways, so a

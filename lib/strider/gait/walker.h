@@ -60,8 +60,6 @@ template <typename S>
 class Walker {
  public:
   Walker() : dof_(0), turn_(), proj_() {}
-  //! In zeroed storage (zeroed_storage.h): only the non-zero defaults written.
-  explicit Walker(ZeroedStorage z) : Walker(z, SharedLegs<(kWalkerSolvers < kWalkerLegs)>()) {}
 
   //! Builds the legs, the configuration (velocity limits: a few thousand IK
   //! calls) and the engine. Returns false for a gait of another leg count,
@@ -366,14 +364,6 @@ class Walker {
     return true;
   }
 
-  // The tag's constructors: legs of one geometry per solver built with the
-  // tag; an AnyLeg per leg by their default constructors (a loop: shorter
-  // than each leg built with the tag).
-  template <bool kShared>
-  struct SharedLegs {};
-  Walker(ZeroedStorage z, SharedLegs<true>)
-      : legs_(walker_detail::LegSolvers<S>::zeroed(z)), proj_{LegKind(), z, z, int8_t()}, engine_(z) {}
-  Walker(ZeroedStorage z, SharedLegs<false>) : proj_{LegKind(), z, z, int8_t()}, engine_(z) {}
 
   // dof_, turn_ and proj_ are zero, by the constructors.
   uint8_t dof_;  // joints per leg; 0 before the legs are built

@@ -145,16 +145,6 @@ struct LegSolvers<S, true> {
   static constexpr bool fits(const RobotModel& model) {
     return model.leg_count <= kWalkerLegs && leg_solver_count(model) <= kWalkerSolvers;
   }
-  //! The default legs, built in zeroed storage (zeroed_storage.h; the
-  //! result initialises the caller's member in place; sides and of are
-  //! stored, as an aggregate's members are).
-  static LegSolvers zeroed(ZeroedStorage z) {
-    return zeroed(z, typename MakeIndices<kWalkerSolvers>::type(), typename MakeIndices<kWalkerLegs>::type());
-  }
-  template <uint8_t... N, uint8_t... I>
-  static LegSolvers zeroed(ZeroedStorage z, Indices<N...>, Indices<I...>) {
-    return LegSolvers{{AnyLeg<S>((void(N), z))...}, {LegMount<S>{(void(I), z), z, z, z}...}, {}, {}};
-  }
   void mount_trig() {
     for (uint8_t n = 0; n < kWalkerSolvers; ++n) solvers[n].mount_trig();
     for (uint8_t i = 0; i < kWalkerLegs; ++i) mounts[i] = LegMount<S>::make(mounts[i].origin_mm, mounts[i].yaw_rad);

@@ -28,12 +28,6 @@ class AnyLeg {
   // The mount LegMount::make(Vec3(), 0) gives, as a constant (cos 0 = 1 and
   // sin 0 = 0 in both scalars): no trig call.
   AnyLeg() : kind_(LegKind::kSprawl), side_(BodySide::kLeft), mount_{Vec3<S>(), S(0), S(1), S(0)} {}
-  //! The same in zeroed storage (zeroed_storage.h): the mount's cos alone
-  //! written (kSprawl and kLeft are zero; the union's bytes stay zero, as a
-  //! default leg's are).
-  explicit AnyLeg(ZeroedStorage z) : mount_{z, z, S(1), z}, legs_(z) {
-    static_assert(uint8_t(LegKind::kSprawl) == 0 && uint8_t(BodySide::kLeft) == 0, "zero kind and side");
-  }
 
   //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S).
   //! Returns false and leaves `out` alone when index >= model.leg_count.
@@ -258,7 +252,6 @@ class AnyLeg {
   struct KindTag {};
   union Legs {
     constexpr Legs() : sprawl() {}
-    explicit Legs(ZeroedStorage) {}
     constexpr Legs(const SprawlLeg<S>& l, KindTag<LegKind::kSprawl>) : sprawl(l) {}
     constexpr Legs(const PlanarLeg<S>& l, KindTag<LegKind::kPlanar>) : planar(l) {}
     constexpr Legs(const CoxaFemurTibiaLeg<S>& l, KindTag<LegKind::kCoxaFemurTibia>) : cft(l) {}

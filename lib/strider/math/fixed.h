@@ -16,7 +16,6 @@
 #include <stdint.h>
 
 #include "mul16.h"
-#include "zeroed_storage.h"
 
 namespace strider {
 
@@ -28,9 +27,6 @@ class Fixed {
   static constexpr int32_t kMinRaw = -0x7FFFFFFF - 1;
 
   constexpr Fixed() : raw_(0) {}
-  //! In storage known to be zero (zeroed_storage.h): no store. Implicit, so
-  //! that an aggregate's members take it from a braced list too.
-  Fixed(ZeroedStorage) {}
   //! From an integer; saturates outside the range.
   constexpr explicit Fixed(int v) : raw_(from_long(v)) {}
   constexpr explicit Fixed(long v) : raw_(from_long(v)) {}

@@ -11,10 +11,6 @@ struct Vec3 {
   S x, y, z;
 
   constexpr Vec3() : x(), y(), z() {}
-  //! In zeroed storage (zeroed_storage.h): nothing stored.
-  Vec3(ZeroedStorage t) : Vec3(t, ZeroedFor<S>()) {}
-  Vec3(ZeroedStorage t, ZeroedFor<Fixed>) : x(t), y(t), z(t) {}
-  Vec3(ZeroedStorage, ZeroedFor<float>) {}
   constexpr Vec3(S x_, S y_, S z_) : x(x_), y(y_), z(z_) {}
 
   //! Converts between scalars (float <-> Fixed) through double.

@@ -63,15 +63,6 @@ constexpr uint8_t kMaxLegDof = 3;
 #endif
 constexpr uint8_t kWalkerLegs = uint8_t(STRIDER_WALKER_LEGS);
 static_assert(kWalkerLegs >= 4 && kWalkerLegs <= kMaxLegs, "STRIDER_WALKER_LEGS: 4 (a two-foot support region has four corners) to kMaxLegs");
-//! x once per walker leg, for an array's braced list (zeroed_storage.h:
-//! `home{STRIDER_PER_WALKER_LEG(z)}` builds every element with the tag).
-#if STRIDER_WALKER_LEGS == 4
-#define STRIDER_PER_WALKER_LEG(x) x, x, x, x
-#elif STRIDER_WALKER_LEGS == 5
-#define STRIDER_PER_WALKER_LEG(x) x, x, x, x, x
-#else
-#define STRIDER_PER_WALKER_LEG(x) x, x, x, x, x, x
-#endif
 
 //! Link lengths of a leg [mm]; the meaning of each slot depends on the kind.
 struct LinkLengths {
