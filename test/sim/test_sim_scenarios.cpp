@@ -277,7 +277,7 @@ TEST(SimScenarios, SameScenarioSameMetrics) {
 
 // ---- the seeds' figures ------------------------------------------------------
 
-// Seed 000: 155 mm/s forward (the gait asked for 330 mm/s, see the scenario).
+// Seed 000: 155 mm/s forward (`walk 155`: gait/speed_correction.h).
 // Measured: 163 mm/s, drift 0.25 % (1236-1239 mm from 1 to 4 ms steps; 178 mm/s
 // with the PGS solver).
 TEST(SimTargets, Sprawl8Reaches155MmPerSecond) {

@@ -503,7 +503,7 @@ class RobotApp {
     }
     ReplyLine line;
     ReplyWriter& w = line.w;
-    const int32_t walked_vy = to_tenths(motion_.walker().engine().vy());
+    const int32_t walked_vy = motion_.body_speed(to_tenths(motion_.walker().engine().vy()));
     if (controller_.tick(now_ms, sonar_.reading(now_us), w, walked_vy)) link.send_line(kAllPorts, line.buf);
   }
 
@@ -538,10 +538,12 @@ class RobotApp {
   }
 
   void write_status(ReplyWriter& w) {
-    // What the gait engine walks: the command after avoidance and the robot's limits.
+    // What the gait engine walks: the command after avoidance and the robot's
+    // limits, as the body speed it makes (speed_correction.h).
     const GaitEngine<S>& e = motion_.walker().engine();
-    w.format(FlashText{app_text::kWalkFmt}, to_tenths(e.vx()), to_tenths(e.vy()),
-             to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)));
+    w.format(FlashText{app_text::kWalkFmt}, motion_.body_speed(to_tenths(e.vx())),
+             motion_.body_speed(to_tenths(e.vy())),
+             motion_.body_speed(to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)), true));
     const FlashText servos = stage_.all_on() ? FlashText{app_text::kOn}
                              : stage_.starting() ? FlashText{app_text::kStarting} : FlashText{app_text::kOff};
     w.field_text(FlashText{app_text::kGait}, motion_.gait().name)

@@ -15,6 +15,7 @@
 
 #include "../gait/gait_library.h"
 #include "../gait/gait_params.h"
+#include "../gait/speed_correction.h"
 #include "../gait/walker.h"
 #include "avoidance.h"
 #include "motion_reach.h"
@@ -42,7 +43,7 @@ class WalkerMotion {
     if (!load_gait(model, params.default_gait, &gait) ||
         !walker_.configure(model, gait, params, params.shape, true, solve_now))
       return false;
-    configured();
+    configured(model);
     return true;
   }
 
@@ -55,7 +56,7 @@ class WalkerMotion {
     if (!load_gait(model, default_gait, &gait) ||
         !walker_.configure_stored(model, gait, flash_config, true, solve_now))
       return false;
-    configured();
+    configured(model);
     return true;
   }
 
@@ -67,7 +68,7 @@ class WalkerMotion {
     if (!load_gait(model, default_gait, &gait) ||
         !walker_.configure_stored(flash_legs, gait, flash_config, true, solve_now))
       return false;
-    configured();
+    configured(model);
     return true;
   }
 
@@ -84,8 +85,17 @@ class WalkerMotion {
     last_ = v;
     constexpr S tenth = scalar<S>(0.1);
     constexpr S decideg_to_rad = scalar<S>(kDegToRad / 10.0);
-    walker_.engine().set_command(S(int32_t(v.vx)) * tenth, S(int32_t(v.vy)) * tenth,
-                                 S(int32_t(v.wz)) * decideg_to_rad);
+    // The gait's own speed that makes the commanded body speed (speed_correction.h).
+    walker_.engine().set_command(S(speed_corrected(int32_t(v.vx), linear_per10k_)) * tenth,
+                                 S(speed_corrected(int32_t(v.vy), linear_per10k_)) * tenth,
+                                 S(speed_corrected(int32_t(v.wz), turn_per10k_)) * decideg_to_rad);
+  }
+
+  //! The gait's own speed [0.1 mm/s] -> the body speed it makes on the
+  //! ground (speed_correction.h); turn: a turn rate [0.1 deg/s].
+  int32_t body_speed(int32_t gait_tenths, bool turn = false) const {
+    const uint16_t p = turn ? turn_per10k_ : linear_per10k_;
+    return p == 0 ? gait_tenths : int32_t(int64_t(gait_tenths) * p / 10000);
   }
 
   //! Stop stepping; the feet finish their swing and the robot stands.
@@ -120,6 +130,11 @@ class WalkerMotion {
     GaitTable g;
     if (!load_gait(walker_.leg_count(), name, &g)) return false;
     walker_.engine().set_gait(g);
+    correct_for_gait();
+    if (have_command_) {  // the same body speed in the new gait
+      have_command_ = false;
+      set_velocity(last_);
+    }
     return true;
   }
 
@@ -167,8 +182,15 @@ class WalkerMotion {
   }
 
  private:
+  //! The speed correction of the model and the gait in force.
+  void correct_for_gait() {
+    if (robot_ != nullptr) speed_correction_of(robot_, gait().name, &linear_per10k_, &turn_per10k_);
+  }
+
   //! After the walker's configuration: no offsets, no command, the standing height.
-  void configured() {
+  void configured(const RobotModel& model) {
+    robot_ = model.name;
+    correct_for_gait();
     offsets_ = BodyOffsets<S>::zero();
     have_command_ = false;
     stand_height_mm_ = -walker_.engine().config().home[0].z;
@@ -207,6 +229,9 @@ class WalkerMotion {
   S stand_height_mm_ = S(0);
   Twist last_{0, 0, 0};
   bool have_command_ = false;
+  const char* robot_ = nullptr;     //!< the model's name (configure)
+  uint16_t linear_per10k_ = 0;    //!< speed_correction.h; 0: none
+  uint16_t turn_per10k_ = 0;
   MotionReach reach_{0, 0, {0, 0, 0}, {0, 0, 0}};
 };
 
