@@ -52,6 +52,11 @@ struct NullSink {
   void apply_settings(const strider::Settings& s) { g_sink = uint16_t(s.pwm_hz); }
   void write_status(strider::ReplyWriter& w) { w.text(" sink=null"); }
   const char* gait_names() const { return kNullGaits; }
+  const char* gait_name() const { return "trot"; }
+  bool tune(strider::TuneParam, int32_t v) { return v > 0; }
+  strider::TuneRange tune_range(strider::TuneParam) const { return strider::TuneRange{1, 2}; }
+  void write_tuning(strider::ReplyWriter& w) const { w.text(" tuning=null"); }
+  bool save_tuning() { return true; }
   const strider::MotionReach& reach() const { return reach_; }
   strider::MotionReach reach_{40, 90, {-10, -10, -20}, {10, 10, 20}};
 };

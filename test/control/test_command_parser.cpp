@@ -182,7 +182,7 @@ std::string error_reply(const std::string& line) {
 }
 
 TEST(CommandParser, ErrorRepliesNameTheValidValues) {
-  const std::string all = "walk strafe turn vel stop relax speed gait pose height avoid deadman baud cal save status help";
+  const std::string all = "walk strafe turn vel stop relax speed gait pose height set get avoid deadman baud cal save status help";
   const struct {
     std::string line;
     const char* reply;

@@ -62,7 +62,7 @@ TEST(Controller, OneReplyPerLine) {
   ASSERT_EQ(replies.size(), 7u);
   EXPECT_EQ(replies[0], "ok move vx=100.0 vy=0.0 wz=0.0");
   EXPECT_EQ(replies[1], "ok speed pct=70");
-  EXPECT_EQ(replies[2], "err 1 unknown command: walk strafe turn vel stop relax speed gait pose height avoid deadman baud cal save status help");
+  EXPECT_EQ(replies[2], "err 1 unknown command: walk strafe turn vel stop relax speed gait pose height set get avoid deadman baud cal save status help");
   EXPECT_EQ(replies[3], "ok gait trot");
   EXPECT_EQ(replies[4], "err 23 unknown gait: walk trot pace crawl");
   EXPECT_EQ(replies[5].rfind("ok status mode=walking speed=70", 0), 0u) << replies[5];
@@ -76,7 +76,7 @@ TEST(Controller, OneReplyPerLine) {
 // robot's gaits and heights.
 TEST(Controller, ErrorsAndHelpNameTheValidValues) {
   Rig r;
-  const std::string all = "walk strafe turn vel stop relax speed gait pose height avoid deadman baud cal save status help";
+  const std::string all = "walk strafe turn vel stop relax speed gait pose height set get avoid deadman baud cal save status help";
   auto replies = r.send("  \r\n\n\t\nhelp\nheight 160\ngait Trot\n");
   ASSERT_EQ(replies.size(), 5u);
   EXPECT_EQ(replies[0], "err 1 empty line: " + all);

@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "../gait/gait_tuning.h"
 #include "../math/flash_table.h"
 
 #include "command.h"
@@ -35,6 +36,7 @@ constexpr char kBaud[] STRIDER_PROGMEM = "baud";
 constexpr char kCal[] STRIDER_PROGMEM = "cal";
 constexpr char kDeadman[] STRIDER_PROGMEM = "deadman";
 constexpr char kGait[] STRIDER_PROGMEM = "gait";
+constexpr char kGet[] STRIDER_PROGMEM = "get";
 constexpr char kHeight[] STRIDER_PROGMEM = "height";
 constexpr char kHelp[] STRIDER_PROGMEM = "help";
 constexpr char kOff[] STRIDER_PROGMEM = "off";
@@ -44,6 +46,7 @@ constexpr char kPose[] STRIDER_PROGMEM = "pose";
 constexpr char kPwm[] STRIDER_PROGMEM = "pwm";
 constexpr char kRelax[] STRIDER_PROGMEM = "relax";
 constexpr char kSave[] STRIDER_PROGMEM = "save";
+constexpr char kSet[] STRIDER_PROGMEM = "set";
 constexpr char kShow[] STRIDER_PROGMEM = "show";
 constexpr char kSpeed[] STRIDER_PROGMEM = "speed";
 constexpr char kStart[] STRIDER_PROGMEM = "start";
@@ -180,6 +183,37 @@ inline ParseError parse_gait(const Token* t, uint8_t n, Command* cmd) {
 //! arg[slot..], all with `decimals` decimals and in [lo, hi]. A table in
 //! flash that one loop reads, instead of a call with its own constants per
 //! command.
+//! Entry of `count` NUL-separated words in flash that token t is, or count.
+inline uint8_t word_index(const Token& t, const char* names, uint8_t count) {
+  const char* p = names;
+  for (uint8_t i = 0; i < count; ++i) {
+    if (token_is(t, p)) return i;
+    while (flash_u8(p) != 0) ++p;
+    ++p;
+  }
+  return count;
+}
+
+//! `set PARAM VALUE`: arg[0] the TuneParam, arg[1] the value in hundredths
+//! (a swing shape: its SwingShape). The range is the walker's: the
+//! controller checks it (err 25 with the range).
+inline ParseError parse_set(const Token* t, uint8_t n, Command* cmd) {
+  cmd->kind = CommandKind::kSet;
+  cmd->usage = Usage::kSet;
+  if (n < 3) return ParseError::kMissingArgument;
+  if (n > 3) return ParseError::kExtraArgument;
+  const uint8_t p = word_index(t[1], kTuneParamNames, kTuneParamCount);
+  if (p == kTuneParamCount) return ParseError::kBadArgument;
+  cmd->arg[0] = p;
+  if (p == uint8_t(TuneParam::kSwing)) {
+    const uint8_t shape = word_index(t[2], kSwingShapeNames, kSwingShapeCount);
+    if (shape == kSwingShapeCount) return ParseError::kBadArgument;
+    cmd->arg[1] = shape;
+    return ParseError::kNone;
+  }
+  return number_arg(t[2], 2, 0, 65535, &cmd->arg[1]);
+}
+
 struct WordCommand {
   const char* word;  // words::, in flash
   CommandKind kind;
@@ -206,6 +240,7 @@ constexpr WordCommand kWordCommands[] STRIDER_PROGMEM = {
     {words::kSave, CommandKind::kSave, Usage::kNoArguments, 0, 0, 0, 0, 0},
     {words::kStatus, CommandKind::kStatus, Usage::kNoArguments, 0, 0, 0, 0, 0},
     {words::kHelp, CommandKind::kHelp, Usage::kNoArguments, 0, 0, 0, 0, 0},
+    {words::kGet, CommandKind::kGet, Usage::kNoArguments, 0, 0, 0, 0, 0},
 };
 constexpr uint8_t kWordCommandCount = uint8_t(sizeof kWordCommands / sizeof kWordCommands[0]);
 
@@ -215,6 +250,7 @@ inline ParseError parse_tokens(const Token* t, uint8_t n, const char* line, uint
   if (token_is(w, words::kGait)) return parse_gait(t, n, cmd);
   if (token_is(w, words::kAvoid)) return parse_avoid(t, n, cmd);
   if (token_is(w, words::kCal)) return parse_cal(t, n, cmd);
+  if (token_is(w, words::kSet)) return parse_set(t, n, cmd);
   if (token_is(w, words::kDeadman) && n >= 2 && token_is(t[1], words::kOff)) {
     cmd->kind = CommandKind::kDeadman;  // arg[0] = 0: off, from a checked line only (needs_checked_line())
     cmd->usage = Usage::kDeadman;

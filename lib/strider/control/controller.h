@@ -311,7 +311,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
       case CommandKind::kSave: {
         Settings s = settings_;
         s.speed_pct = speed_pct_;
-        if (save_settings(store_, s, &record_) != SettingsStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
+        if (save_settings(store_, s, &record_) != SettingsStatus::kOk || !sink_.save_tuning())
+          return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
         settings_ = s;
         w.text(FlashText{text::kOkSaved});
         return;
@@ -324,10 +325,38 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
         w.format(FlashText{text::kHelpHeightFmt}, r.height_min_mm, r.height_max_mm);
         return;
       }
+      case CommandKind::kSet: return set_tuning(c, w);
+      case CommandKind::kGet:
+        w.text(FlashText{text::kOkGet}).field_text(FlashText{text::kGaitKey}, sink_.gait_name());
+        sink_.write_tuning(w);
+        return;
       case CommandKind::kLight: w.text(FlashText{text::kOkLightIgnored}); return;
       case CommandKind::kRcEcho: w.text(FlashText{text::kOkRc_}).ch(char(c.arg[0])); return;
       default: w.text(FlashText{text::kOk}); return;
     }
+  }
+
+  //! `set PARAM VALUE`: `ok set step_height 15.00`, or err 25 with the
+  //! parameter's range (the swing: the shapes allowed).
+  void set_tuning(const Command& c, ReplyWriter& w) {
+    if (mode_ == RobotMode::kCalibrating) return fail(w, ControlError::kBusy, FlashText{text::kCalibrating});
+    const TuneParam p = TuneParam(c.arg[0]);
+    const FlashText name = flash_name(kTuneParamNames, kTuneParamCount, uint8_t(p));
+    if (!sink_.tune(p, c.arg[1])) {
+      const TuneRange r = sink_.tune_range(p);
+      write_error(w, uint8_t(ControlError::kTuneRefused), name);
+      if (p != TuneParam::kSwing) {
+        w.text(FlashText{text::kOutOfRange_}).hundredths(r.lo).ch('.').ch('.').hundredths(r.hi);
+        return;
+      }
+      w.text(FlashText{text::kNotWithin_});
+      for (uint8_t k = 0, n = 0; k < kSwingShapeCount; ++k)
+        if ((r.lo >> k) & 1) (n++ != 0 ? w.ch(' ') : w).text(flash_name(kSwingShapeNames, kSwingShapeCount, k));
+      return;
+    }
+    w.text(FlashText{text::kOkSet_}).text(name).ch(' ');
+    if (p == TuneParam::kSwing) w.text(flash_name(kSwingShapeNames, kSwingShapeCount, uint8_t(c.arg[1])));
+    else w.hundredths(c.arg[1]);
   }
 
   void status(ReplyWriter& w) {

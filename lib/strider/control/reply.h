@@ -81,6 +81,17 @@ class ReplyWriter {
     return *this;
   }
 
+  //! Value given in hundredths, printed with two decimals (1505 -> "15.05").
+  ReplyWriter& hundredths(int32_t v) {
+    const uint32_t u = v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v);
+    if (v < 0) put('-');
+    integer(int32_t(u / 100u));
+    put('.');
+    put(char('0' + u / 10u % 10u));
+    put(char('0' + u % 10u));
+    return *this;
+  }
+
   //! `key=value` preceded by a space: the fields of ok and status lines.
   ReplyWriter& field(const char* key, int32_t v) { return ch(' ').text(key).ch('=').integer(v); }
   ReplyWriter& field_tenths(const char* key, int32_t v) { return ch(' ').text(key).ch('=').tenths(v); }

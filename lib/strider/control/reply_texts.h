@@ -50,6 +50,12 @@ constexpr char kStoreFailed[] STRIDER_PROGMEM = "store failed: the EEPROM did no
 constexpr char kOkCalSaved[] STRIDER_PROGMEM = "ok cal saved";
 constexpr char kOkCalAborted[] STRIDER_PROGMEM = "ok cal aborted";
 constexpr char kOkSaved[] STRIDER_PROGMEM = "ok saved";
+constexpr char kOkSet_[] STRIDER_PROGMEM = "ok set ";
+constexpr char kOkGet[] STRIDER_PROGMEM = "ok get";
+constexpr char kOutOfRange_[] STRIDER_PROGMEM = " out of range: ";
+constexpr char kNotWithin_[] STRIDER_PROGMEM = " not under the model's own swing: ";
+constexpr char kTune[] STRIDER_PROGMEM = "tune";
+constexpr char kGaitKey[] STRIDER_PROGMEM = "gait";
 // `help`: "ok help " + the command words (error_hints.h) + the model's gaits and heights.
 constexpr char kOkHelp_[] STRIDER_PROGMEM = "ok help ";
 constexpr char kHelpGaits_[] STRIDER_PROGMEM = "; gaits ";

@@ -24,6 +24,7 @@
 #include "battery_monitor.h"
 #include "controller.h"
 #include "fall_detector.h"
+#include "gait_tuner.h"
 #include "../sensing/attitude_filter.h"
 #include "model_constants.h"
 #include "servo_boards.h"
@@ -132,6 +133,7 @@ class RobotApp {
         model_in_flash_(where == ModelMemory::kFlash),
         boards_(0),
         out_(out),
+        store_(store),
         sink_(*this),
         controller_(sink_, store, LoadedSettings(store)),
         last_byte_ms_(),
@@ -163,6 +165,8 @@ class RobotApp {
     if (ok_) {
       motion_.walker().refresh();  // the legs' IK, with the model's copy off the stack
       motion_.find_reach();        // what `help` and err 24 name
+      tuner_.configure(motion_);
+      tuner_.use_gait(motion_, store_);  // the default gait's saved parameters
     }
     announce(link);
     if (!ok_) return false;
@@ -219,6 +223,7 @@ class RobotApp {
     if (!trial.configure(model, params)) return false;
     trial.find_reach();
     motion_ = trial;
+    tuner_.configure(motion_);
     return true;
   }
 
@@ -360,7 +365,16 @@ class RobotApp {
       app_.stage_.relax_all();
       app_.motion_.sit_now();
     }
-    bool set_gait(const char* name) { return app_.motion_.set_gait(name); }
+    bool set_gait(const char* name) {
+      if (!app_.motion_.set_gait(name)) return false;
+      app_.tuner_.use_gait(app_.motion_, app_.store_);
+      return true;
+    }
+    const char* gait_name() const { return app_.motion_.gait().name; }
+    bool tune(TuneParam p, int32_t v) { return app_.tuner_.set(app_.motion_, p, v); }
+    TuneRange tune_range(TuneParam p) const { return range_of(app_.tuner_.bounds(app_.motion_), p); }
+    void write_tuning(ReplyWriter& w) const { app_.tuner_.write(app_.motion_, w); }
+    bool save_tuning() { return app_.tuner_.save(app_.motion_, app_.store_) == SettingsStatus::kOk; }
     bool set_body_pose(int32_t r, int32_t p, int32_t y) { return app_.motion_.set_body_pose(r, p, y); }
     bool set_body_height(int32_t h) { return app_.motion_.set_body_height(h); }
     const char* gait_names() const { return strider::gait_names(app_.motion_.walker().leg_count()); }
@@ -551,6 +565,8 @@ class RobotApp {
         .field_text(FlashText{app_text::kIk}, app_text::to_flash(motion_.walker().worst_status()))
         .field_text(FlashText{app_text::kServos}, servos);
     if (stage_.last_status() != ServoStatus::kOk) w.field_text(FlashText{app_text::kServos}, FlashText{app_text::kLimited});
+    // Live gait parameters (gait_tuner.h) other than the model's own: saved or changed.
+    if (tuner_.origin() != TuneOrigin::kDefault) w.field_text(FlashText{text::kTune}, to_flash(tuner_.origin()));
     w.ch(' ').text(FlashText{app_text::kPca9685}).ch('=');
     if (boards_faulted_ == 0) w.text(FlashText{app_text::kOk});
     for (uint8_t b = 0, n = 0; b < kMaxPcaBoards; ++b)
@@ -573,7 +589,9 @@ class RobotApp {
   const char* name_ = "";    // the model's name (the string is in RAM either way)
   uint8_t boards_;           // PCA9685 boards the model uses
   Output& out_;
+  Store& store_;
   WalkerMotion<S> motion_;
+  GaitTuner<S> tuner_;
   BatteryMonitor battery_;
   AttitudeFilter<S> attitude_;
   FallDetector<S> fall_;

@@ -17,6 +17,7 @@ enum class ControlError : uint8_t {
   kStoreFailed = 22,     //!< EEPROM write failed
   kUnknownGait = 23,     //!< the robot has no gait of that name
   kRefused = 24,         //!< pose/height outside what the robot can do
+  kTuneRefused = 25,     //!< a live gait parameter outside what the walker allows (the reply gives the range)
   kServoFault = 31,      //!< walking while a servo board does not answer (or is starting again)
   kBatteryCritical = 32, //!< walking on a critically low battery (RobotApp's BatteryMonitor)
   kFallen = 33           //!< walking while the robot lies tipped over (RobotApp's FallDetector)

@@ -129,13 +129,16 @@ class WalkerMotion {
   bool set_gait(const char* name) {
     GaitTable g;
     if (!load_gait(walker_.leg_count(), name, &g)) return false;
-    walker_.engine().set_gait(g);
-    correct_for_gait();
-    if (have_command_) {  // the same body speed in the new gait
-      have_command_ = false;
-      set_velocity(last_);
-    }
+    set_gait_table(g);
     return true;
+  }
+
+  //! The gait walked now with another duty [0.01] (gait_tuning.h's
+  //! duty_allowed() checked it), also while walking.
+  void set_duty(uint8_t duty_pct) {
+    GaitTable g = gait();
+    g.duty = detail::ratio_float(duty_pct, 100);
+    set_gait_table(g);
   }
 
   //! Body rotation [0.1 deg]; refused when a standing foot would be out of reach.
@@ -182,6 +185,16 @@ class WalkerMotion {
   }
 
  private:
+  //! Walks table g from now on, the same body speed in it.
+  void set_gait_table(const GaitTable& g) {
+    walker_.engine().set_gait(g);
+    correct_for_gait();
+    if (have_command_) {  // the same body speed in the new gait
+      have_command_ = false;
+      set_velocity(last_);
+    }
+  }
+
   //! The speed correction of the model and the gait in force.
   void correct_for_gait() {
     if (robot_ != nullptr) speed_correction_of(robot_, gait().name, &linear_per10k_, &turn_per10k_);

@@ -44,7 +44,7 @@ class GaitEngine {
       : base_(), offset_(), swing_len_(0), start_phase_(0), relabel_(false), quarter_(0), sit_requested_(false),
         step_in_place_(false), cmd_vx_(), cmd_vy_(), cmd_wz_(), to_(), from_s_(), to_s_(), now_s_(), land_s_(),
         vx_(), vy_(), wz_(), foot_(), contact_(), pending_(), lift_(), target_(), apex_(), leg_inv_swing_(),
-        leg_swing_len_(), swing_elapsed_(), stance_elapsed_(), edge_r2_(), settled_(), vel_fresh_(false),
+        leg_swing_len_(), leg_shape_(), swing_elapsed_(), stance_elapsed_(), edge_r2_(), settled_(), vel_fresh_(false),
         land_fresh_(false), odo_dx_(), odo_dy_(), odo_wx_(), odo_wy_(), held_(false), in_window_(false),
         window_start_(0), window_inv_(), pose_(), goal_pose_(), margin_(), margin_fresh_(false), step_cache_(),
         td_fresh_(false), td_sin_(), td_dx_(), td_dy_(), odo_x_(), odo_y_(), odo_yaw_(), odo_s_() {}
@@ -78,6 +78,19 @@ class GaitEngine {
     cmd_vx_ = vx * k;
     cmd_vy_ = vy * k;
     cmd_wz_ = wz * k;
+    replan();
+  }
+  //! Live gait parameters (gait_tuning.h): the swing of the feet that lift
+  //! from now on, its apex [mm] and shape; feet in the air finish theirs.
+  void set_swing(S step_height_mm, SwingShape shape) {
+    cfg_.step_height_mm = step_height_mm;
+    cfg_.shape = shape;
+  }
+  //! The preferred stride [mm] and the step rate at low speed [Hz]: the
+  //! command is planned again and reached along the ramp.
+  void set_step(S stride_mm, S min_hz) {
+    cfg_.limits.preferred_stride_mm = stride_mm;
+    cfg_.limits.min_hz = min_hz;
     replan();
   }
   //! Keep stepping in place when the command is zero (default: stop).
@@ -365,6 +378,7 @@ class GaitEngine {
   S apex_[kWalkerLegs];
   S leg_inv_swing_[kWalkerLegs];
   uint32_t leg_swing_len_[kWalkerLegs];
+  SwingShape leg_shape_[kWalkerLegs];  // the shape each foot lifted with
   uint32_t swing_elapsed_[kWalkerLegs];
   int32_t stance_elapsed_[kWalkerLegs];  // phase since touch-down (may start negative)
 

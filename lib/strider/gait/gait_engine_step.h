@@ -146,6 +146,7 @@ void GaitEngine<S>::lift_foot(uint8_t i, bool crossed) {
   pending_[i] = false;
   leg_swing_len_[i] = swing_len_;
   leg_inv_swing_[i] = inv_swing_;
+  leg_shape_[i] = cfg_.shape;
   swing_elapsed_[i] = crossed ? uint32_t(Phase16(clock_.now() - offset_[i])) : 0u;
   Vec3<S>& t = target_[i];
   touchdown_xy(i, t.x, t.y);
@@ -168,14 +169,16 @@ void GaitEngine<S>::step_swing(S dt) {
   SwingPoint<S> sp{S(0), S(0)};
   uint32_t sp_elapsed = 0;
   S sp_inv = S(0), sp_apex = S(0), sp_lift = S(0);
+  SwingShape sp_shape = SwingShape::kRectangle;
   bool sp_known = false, lift_known = false;  // lift_known: sp_lift = sp_apex * sp.w
   for (uint8_t i = 0; i < n; ++i) {
     if (contact_[i]) continue;
     if (!settled_[i]) settle_target(i, max_step);
-    if (!sp_known || swing_elapsed_[i] != sp_elapsed || leg_inv_swing_[i] != sp_inv) {
+    if (!sp_known || swing_elapsed_[i] != sp_elapsed || leg_inv_swing_[i] != sp_inv || leg_shape_[i] != sp_shape) {
       sp_elapsed = swing_elapsed_[i];
       sp_inv = leg_inv_swing_[i];
-      sp = swing_point(cfg_.shape, phase_to<S>(sp_elapsed) * sp_inv);
+      sp_shape = leg_shape_[i];
+      sp = swing_point(sp_shape, phase_to<S>(sp_elapsed) * sp_inv);
       sp_known = true;
       lift_known = false;
     }

@@ -137,6 +137,24 @@ inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
 }
 
 //! The gait called `name` that `model` supports into *out; false when none.
+//! Where gait `name` is in the list of a robot with leg_count legs (the
+//! order of gait_names()); kNoGaitIndex: not there.
+constexpr uint8_t kNoGaitIndex = 0xFF;
+inline uint8_t gait_index(uint8_t leg_count, const char* name) {
+  const uint8_t count = gait_library_detail::list_count(leg_count);
+  for (uint8_t i = 0; i < count; ++i) {
+    GaitTable g;
+#if STRIDER_GAITS_IN_FLASH && defined(__AVR__)
+    const GaitTable* const* items = gait_library_detail::list_items(leg_count);
+    flash_copy(&g, reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i)), sizeof g);
+#else
+    g = *gait_library_detail::list_items(leg_count)[i];
+#endif
+    if (strcmp(g.name, name) == 0) return i;
+  }
+  return kNoGaitIndex;
+}
+
 inline bool load_gait(const RobotModel& model, const char* name, GaitTable* out) {
   return load_gait(model.leg_count, name, out);
 }

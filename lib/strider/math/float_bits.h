@@ -33,6 +33,23 @@ inline float bits_float(uint32_t u) {
   return f;
 }
 
+//! num / den (0 < num < den < 2^24) as the nearest float, ties to even,
+//! from integer operations only (the float division's result, without its
+//! soft-float call on the AVR).
+inline float ratio_float(uint32_t num, uint32_t den) {
+  uint8_t e = 0;
+  while (num < den) num <<= 1, ++e;  // num / den in [1, 2): the value is that x 2^-e
+  uint32_t q = 1, r = num - den;
+  for (uint8_t i = 0; i < 23; ++i) {
+    r <<= 1;
+    q <<= 1;
+    if (r >= den) r -= den, q |= 1u;
+  }
+  if (2 * r > den || (2 * r == den && (q & 1u))) ++q;
+  if (q == (uint32_t(1) << 24)) q >>= 1, --e;  // rounded up to the next power of two
+  return bits_float((uint32_t(127 - e) << 23) | (q & 0x7FFFFFu));
+}
+
 //! The bits of |f| (sign cleared).
 inline uint32_t magnitude_bits(float f) { return float_bits(f) & kFloatMagMask; }
 

@@ -11,6 +11,7 @@
 #include "control/motion_reach.h"
 #include "control/reply.h"
 #include "control/settings.h"
+#include "gait/gait_tuning.h"
 
 namespace strider_test {
 
@@ -49,6 +50,26 @@ struct FakeMotionSink {
   // What it pretends the legs reach: 10..150 mm (set_body_height() above).
   strider::MotionReach reach_mm_deg{10, 150, {-20, -15, -30}, {20, 12, 30}};
   const char* gait_names() const { return "walk trot pace crawl"; }
+  // Live gait parameters: it takes step heights of 1.00..20.00 mm and any
+  // other value, and records what it took.
+  int32_t tuned[strider::kTuneParamCount] = {};
+  bool save_tuning_fails = false;
+  int tunings_saved = 0;
+  const char* gait_name() const { return gait.c_str(); }
+  bool tune(strider::TuneParam p, int32_t v) {
+    if (!strider::tune_value_allowed(bounds(), p, v)) return false;
+    tuned[uint8_t(p)] = v;
+    return true;
+  }
+  strider::TuneRange tune_range(strider::TuneParam p) const { return strider::range_of(bounds(), p); }
+  void write_tuning(strider::ReplyWriter& w) const { w.text(" tuning=fake"); }
+  bool save_tuning() {
+    ++tunings_saved;
+    return !save_tuning_fails;
+  }
+  static strider::TuneBounds bounds() {
+    return strider::TuneBounds{{100, 2000}, {500, 10000}, {20, 500}, {50, 95}, 0x1E};
+  }
   const strider::MotionReach& reach() const { return reach_mm_deg; }
   void write_status(strider::ReplyWriter& w) { w.text(" sink=fake"); }
   void apply_settings(const strider::Settings& s) {

@@ -1,0 +1,188 @@
+//! GaitTuner: the live gait parameters of the gait walked now (gait_tuning.h)
+//! applied to a WalkerMotion, checked against what its walker was built
+//! for, kept per gait in the store (gait_tuning_record.h).
+//!
+//! Each gait has its own parameters: a gait switch takes the new gait's
+//! saved ones, or the model's defaults (its GaitParams, the gait table's
+//! duty) when it has none; `save` keeps those of the gait walked now, with
+//! the body height. A change applies at the next stride: a new swing (step
+//! height, shape) to the feet that lift from then on, a new stride or cycle
+//! through the command's ramp, a new duty as a gait change does.
+#ifndef STRIDER_CONTROL_GAIT_TUNER_H
+#define STRIDER_CONTROL_GAIT_TUNER_H
+
+#include <stdint.h>
+
+#include "../gait/gait_tuning.h"
+#include "gait_tuning_record.h"
+#include "walker_motion.h"
+
+namespace strider {
+
+//! Where the parameters walked now came from (`status`: tune=...).
+enum class TuneOrigin : uint8_t { kDefault = 0, kSaved = 1, kChanged = 2 };
+constexpr char kTuneOriginNames[] STRIDER_PROGMEM = "default\0saved\0changed";
+inline FlashText to_flash(TuneOrigin o) { return flash_name(kTuneOriginNames, 3, uint8_t(o)); }
+
+namespace gait_tuner_detail {
+//! v x 100, rounded half up (v >= 0, v x 100 < 2^31).
+inline int32_t hundredths(float v) { return int32_t(v * 100.0f + 0.5f); }
+inline int32_t hundredths(Fixed v) { return int32_t((int64_t(v.raw()) * 100 + 32768) >> 16); }
+//! n / 100 in the scalar.
+template <typename S>
+S from_hundredths(int32_t n) { return S(n) / S(100); }
+}  // namespace gait_tuner_detail
+
+template <typename S>
+class GaitTuner {
+ public:
+  //! Takes the model's defaults from a walker just configured at them
+  //! (before any tuning).
+  void configure(WalkerMotion<S>& motion) {
+    const GaitConfig<S>& c = motion.walker().engine().config();
+    own_ = Own{c.step_height_mm, c.limits.preferred_stride_mm, c.limits.min_hz, c.shape};
+    live_ = own_tuning();
+    live_.duty_pct = duty_pct_of(motion.gait());
+    origin_ = TuneOrigin::kDefault;
+  }
+
+  //! After a gait switch (and at start-up): the gait's saved parameters,
+  //! or the defaults; a saved set that the walker no longer allows (a
+  //! record of another build) is left unused.
+  template <typename Store>
+  void use_gait(WalkerMotion<S>& motion, const Store& store) {
+    live_ = own_tuning();
+    live_.duty_pct = own_duty_pct(motion);
+    origin_ = TuneOrigin::kDefault;
+    GaitTuning saved;
+    if (read_gait_tuning(store, gait_index(motion.walker().leg_count(), motion.gait().name), &saved) &&
+        tuning_allowed(bounds(motion), saved)) {
+      live_ = saved;
+      origin_ = TuneOrigin::kSaved;
+    }
+    apply(motion);
+    if (live_.height_dmm > 0) motion.set_body_height(live_.height_dmm);
+  }
+
+  //! Sets parameter p to v (its unit / 100; kSwing: a SwingShape); false
+  //! (nothing changed) when bounds() does not allow it.
+  bool set(WalkerMotion<S>& motion, TuneParam p, int32_t v) {
+    if (!tune_value_allowed(bounds(motion), p, v)) return false;
+    switch (p) {
+      case TuneParam::kStepHeight: live_.step_height_cmm = uint16_t(v); break;
+      case TuneParam::kStepLength: live_.step_length_cmm = uint16_t(v); break;
+      case TuneParam::kCycle: live_.cycle_cs = uint16_t(v); break;
+      case TuneParam::kDuty: live_.duty_pct = uint8_t(v); break;
+      case TuneParam::kSwing: live_.shape = uint8_t(v); break;
+    }
+    origin_ = TuneOrigin::kChanged;
+    apply(motion);
+    return true;
+  }
+
+  //! Writes the gait's parameters and the body height into the store.
+  template <typename Store>
+  SettingsStatus save(const WalkerMotion<S>& motion, Store& store) {
+    live_.height_dmm = int16_t(body_height_dmm(motion));
+    const SettingsStatus st = save_gait_tuning(store, gait_index(motion.walker().leg_count(), motion.gait().name), live_);
+    if (st == SettingsStatus::kOk) origin_ = TuneOrigin::kSaved;
+    return st;
+  }
+
+  //! What each parameter may be for the gait walked now: a step no higher
+  //! than the model's own (the stride limits were searched with it), any
+  //! preferred stride up to the longest a leg makes, a cycle the servos can
+  //! step at with the duty set, a duty that keeps the gait's support, a
+  //! swing under the model's own.
+  TuneBounds bounds(const WalkerMotion<S>& motion) const {
+    using namespace gait_tuner_detail;
+    const VelocityLimits<S>& lim = motion.walker().engine().config().limits;
+    S longest = S(0);
+    for (uint8_t i = 0; i < motion.walker().leg_count(); ++i)
+      for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) longest = max_of(longest, lim.stride_mm(i, k));
+    const int32_t length_max = hundredths(longest);
+    // The shortest cycle: 1 / the servos' fastest step rate, rounded up.
+    const S fastest_hz = lim.servo_hz(S(0), from_hundredths<S>(live_.duty_pct));
+    const int32_t cycle_min = hundredths(S(1) / fastest_hz) + 1;
+    GaitTable own;
+    load_gait(motion.walker().leg_count(), motion.gait().name, &own);
+    TuneBounds b;
+    const GaitTuning mine = own_tuning();
+    b.step_height = TuneRange{kMinStepHeightCmm, mine.step_height_cmm};
+    b.step_length = TuneRange{kMinStepLengthCmm, length_max > mine.step_length_cmm ? length_max : mine.step_length_cmm};
+    b.cycle = TuneRange{cycle_min > kMinCycleCs ? cycle_min : kMinCycleCs, kMaxCycleCs};
+    b.duty = duty_range(own);
+    b.shapes = swings_within(own_.shape);
+    return b;
+  }
+
+  //! `step_height=20.00 step_length=40.00 cycle=0.80 duty=0.75 swing=ellipse height=85.0`
+  void write(const WalkerMotion<S>& motion, ReplyWriter& w) const {
+    const int32_t v[4] = {live_.step_height_cmm, live_.step_length_cmm, live_.cycle_cs, live_.duty_pct};
+    for (uint8_t p = 0; p < 4; ++p)
+      w.ch(' ').text(flash_name(kTuneParamNames, kTuneParamCount, p)).ch('=').hundredths(v[p]);
+    w.ch(' ').text(flash_name(kTuneParamNames, kTuneParamCount, uint8_t(TuneParam::kSwing))).ch('=');
+    w.text(flash_name(kSwingShapeNames, kSwingShapeCount, live_.shape));
+    w.ch(' ').text(FlashText{kHeightName}).ch('=').tenths(body_height_dmm(motion));
+  }
+
+  const GaitTuning& live() const { return live_; }
+  TuneOrigin origin() const { return origin_; }
+  //! The model's own parameters (duty and height aside: the gait's own, the
+  //! standing height).
+  GaitTuning own_tuning() const {
+    using namespace gait_tuner_detail;
+    return GaitTuning{uint16_t(hundredths(own_.step_height_mm)), uint16_t(hundredths(own_.stride_mm)),
+                      uint16_t(hundredths(S(1) / own_.min_hz)), 0, uint8_t(own_.shape), 0};
+  }
+
+ private:
+  //! The model's own values as the walker was configured with them: a
+  //! parameter set back to its own value gets these bits again.
+  struct Own {
+    S step_height_mm, stride_mm, min_hz;
+    SwingShape shape;
+  };
+  static constexpr char kHeightName[] STRIDER_PROGMEM = "height";
+
+  static uint8_t own_duty_pct(const WalkerMotion<S>& motion) {
+    GaitTable own;
+    return load_gait(motion.walker().leg_count(), motion.gait().name, &own) ? duty_pct_of(own) : duty_pct_of(motion.gait());
+  }
+
+  //! The body's height above the ground now [0.1 mm] (the standing height
+  //! and the `height` offset).
+  static int32_t body_height_dmm(const WalkerMotion<S>& motion) {
+    const S mm = motion.stand_height_mm() + motion.offsets().translation_mm.z;
+    return (gait_tuner_detail::hundredths(mm) + 5) / 10;
+  }
+
+  //! live_ into the walker, what differs from what it walks: swing, stride
+  //! and cycle (planned again), duty (a gait change). A value equal to the
+  //! model's own is its own value, bit for bit.
+  void apply(WalkerMotion<S>& motion) {
+    using namespace gait_tuner_detail;
+    GaitEngine<S>& e = motion.walker().engine();
+    const GaitConfig<S>& c = e.config();
+    const GaitTuning mine = own_tuning();
+    const S height = live_.step_height_cmm == mine.step_height_cmm ? own_.step_height_mm
+                                                                   : from_hundredths<S>(live_.step_height_cmm);
+    const S stride = live_.step_length_cmm == mine.step_length_cmm ? own_.stride_mm
+                                                                   : from_hundredths<S>(live_.step_length_cmm);
+    const S hz = live_.cycle_cs == mine.cycle_cs ? own_.min_hz : S(100) / S(int32_t(live_.cycle_cs));
+    if (!(height == c.step_height_mm) || SwingShape(live_.shape) != c.shape) e.set_swing(height, SwingShape(live_.shape));
+    if (!(stride == c.limits.preferred_stride_mm) || !(hz == c.limits.min_hz)) e.set_step(stride, hz);
+    if (live_.duty_pct != duty_pct_of(motion.gait())) motion.set_duty(live_.duty_pct);
+  }
+
+  Own own_{};
+  GaitTuning live_{};
+  TuneOrigin origin_ = TuneOrigin::kDefault;
+};
+
+template <typename S>
+constexpr char GaitTuner<S>::kHeightName[];
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_GAIT_TUNER_H

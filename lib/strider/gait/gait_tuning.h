@@ -1,0 +1,172 @@
+//! GaitTuning: the gait parameters a user changes live over the link
+//! (`set step_height|step_length|cycle|duty|swing V`, docs/protocol.md), in
+//! the protocol's integer units, and the rules that bound them. Integers
+//! only: the firmware checks and converts them without soft float.
+//!
+//! What bounds them is what the walker was built for. The stored velocity
+//! limits (velocity_limit_table.h) give every leg's longest stride for the
+//! model's own swing shape and step height: a lower step, or a shape whose
+//! path stays under the model's own everywhere, keeps every swing inside the
+//! reach they were searched with; a higher one might not. A duty must keep
+//! at least as many feet down as the gait's own table, and the gaits that
+//! shift the body need a moment with every foot down between two swings.
+#ifndef STRIDER_GAIT_GAIT_TUNING_H
+#define STRIDER_GAIT_GAIT_TUNING_H
+
+#include <stdint.h>
+
+#include "../math/flash_table.h"
+#include "gait_table.h"
+#include "phase.h"
+#include "swing_trajectory.h"
+
+namespace strider {
+
+//! The parameters `set` takes, in the order of kTuneParamNames.
+enum class TuneParam : uint8_t { kStepHeight = 0, kStepLength = 1, kCycle = 2, kDuty = 3, kSwing = 4 };
+constexpr uint8_t kTuneParamCount = 5;
+constexpr char kTuneParamNames[] STRIDER_PROGMEM = "step_height\0step_length\0cycle\0duty\0swing";
+constexpr char kSwingShapeNames[] STRIDER_PROGMEM = "rectangle\0semicircle\0ellipse\0cycloid\0parabola\0bezier";
+
+//! One gait's live parameters. Two decimals, as the protocol takes them.
+struct GaitTuning {
+  uint16_t step_height_cmm;  //!< swing apex [0.01 mm]
+  uint16_t step_length_cmm;  //!< preferred stride [0.01 mm]
+  uint16_t cycle_cs;         //!< cycle at low speed [0.01 s]
+  uint8_t duty_pct;          //!< share of the cycle a foot is down [0.01]
+  uint8_t shape;             //!< SwingShape
+  int16_t height_dmm;        //!< body height [0.1 mm]; 0: the model's standing height
+};
+
+//! The range of one parameter [its unit / 100]; for kSwing, lo is a mask of
+//! the shapes allowed (bit = SwingShape) and hi is unused.
+struct TuneRange {
+  int32_t lo;
+  int32_t hi;
+};
+
+constexpr int32_t kMinStepHeightCmm = 100;   //!< 1 mm: a foot that lifts at all
+constexpr int32_t kMinStepLengthCmm = 500;   //!< 5 mm
+constexpr int32_t kMinCycleCs = 20;          //!< 0.2 s
+constexpr int32_t kMaxCycleCs = 500;         //!< 5 s
+constexpr int32_t kMaxDutyPct = 95;          //!< a swing of at least a twentieth of the cycle
+
+namespace gait_tuning_detail {
+//! A duty [0.01] as a phase span of the swing: round((1 - duty) 2^16).
+constexpr uint32_t swing_span_of(uint8_t duty_pct) { return (uint32_t(100 - duty_pct) * 65536u + 50u) / 100u; }
+//! Leg i's lift-off phase [2^-16 of a cycle] (integer conversion of the table's float).
+inline uint16_t lift_phase(const GaitTable& t, uint8_t i) { return uint16_t(table_fraction::q16(t.offset[i]) & 0xFFFFu); }
+}  // namespace gait_tuning_detail
+
+//! Phases this close [2^-16 of a cycle] are the same moment: the tables'
+//! fractions (sixths, thirds) rounded to 2^-16 differ by a unit or two.
+constexpr uint32_t kPhaseSlack = 2;
+
+//! The fewest feet on the ground over a cycle of gait t walked with a swing
+//! of `swing` [2^-16 of a cycle]: counted just after each lift-off, where
+//! the count is lowest. A foot that lands as another lifts counts as down.
+inline uint8_t fewest_feet_down(const GaitTable& t, uint32_t swing) {
+  uint8_t fewest = t.leg_count;
+  for (uint8_t j = 0; j < t.leg_count; ++j) {
+    const uint16_t pj = gait_tuning_detail::lift_phase(t, j);
+    uint8_t up = 0;
+    for (uint8_t i = 0; i < t.leg_count; ++i)
+      if (uint32_t(uint16_t(pj - gait_tuning_detail::lift_phase(t, i))) + kPhaseSlack < swing || i == j) ++up;
+    if (uint8_t(t.leg_count - up) < fewest) fewest = uint8_t(t.leg_count - up);
+  }
+  return fewest;
+}
+
+//! Whether legs with different lift-off phases are never in the air together
+//! and a moment with every foot down lies between any two swings (what a
+//! body-shifting gait needs, gait_table::swings_separated()), for `swing`.
+inline bool swings_apart(const GaitTable& t, uint32_t swing) {
+  for (uint8_t j = 0; j < t.leg_count; ++j)
+    for (uint8_t i = 0; i < t.leg_count; ++i) {
+      const uint32_t d = uint16_t(gait_tuning_detail::lift_phase(t, j) - gait_tuning_detail::lift_phase(t, i));
+      if (d > kPhaseSlack && d < 65536u - kPhaseSlack && (d <= swing + kPhaseSlack || d + swing + kPhaseSlack >= 65536u))
+        return false;
+    }
+  return true;
+}
+
+//! Whether gait t (at its own duty: `own`) may be walked with duty_pct.
+inline bool duty_allowed(const GaitTable& t, uint8_t duty_pct) {
+  if (duty_pct == 0 || duty_pct > kMaxDutyPct) return false;
+  const uint32_t swing = gait_tuning_detail::swing_span_of(duty_pct);
+  const uint8_t own = fewest_feet_down(t, table_fraction::swing_span(t.duty));
+  if (fewest_feet_down(t, swing) < own) return false;
+  return !t.shift_body || swings_apart(t, swing);
+}
+
+//! The duties gait t may be walked with [0.01]: from the least allowed one
+//! to kMaxDutyPct (the allowed duties are one interval: more feet down only
+//! adds support and shortens the swings).
+inline TuneRange duty_range(const GaitTable& t) {
+  int32_t lo = kMaxDutyPct;
+  for (uint8_t d = kMaxDutyPct; d > 0 && duty_allowed(t, d); --d) lo = d;
+  return TuneRange{lo, kMaxDutyPct};
+}
+
+//! t's duty in hundredths, rounded up (a sixth more than 0.83 is 0.84: as
+//! many feet down as the table's own) but for the table's float rounding
+//! (integer conversion of the table's float).
+inline uint8_t duty_pct_of(const GaitTable& t) {
+  return uint8_t((table_fraction::q16(t.duty) * 100u + 65536u - 100u) >> 16);
+}
+
+//! The swing shapes whose path never rises above shape `own`'s at the same
+//! horizontal progress, at the same step height (bit = SwingShape), each
+//! its own included. test/gait checks the table against the shapes' paths
+//! (swing_trajectory.h), sampled densely.
+//! A semicircle's apex is between half the step height and all of it
+//! (swing_apex_mm()): under the others as its highest, as their bound as
+//! its lowest. The Bezier overshoots behind the lift-off point, where no
+//! other path goes.
+//!   rectangle: all but the Bezier; semicircle: itself; ellipse: the
+//!   semicircle, itself, cycloid, parabola; cycloid: itself, parabola;
+//!   parabola: itself; bezier: itself.
+constexpr uint8_t kSwingsWithin[kSwingShapeCount] STRIDER_PROGMEM = {0x1F, 0x02, 0x1E, 0x18, 0x10, 0x20};
+inline uint8_t swings_within(SwingShape own) { return flash_u8(&kSwingsWithin[uint8_t(own)]); }
+
+//! Whether every value is within its range and the shape allowed.
+//! `step_height_max` and `own_shape` are the model's defaults, `length_max`
+//! the longest stride a leg makes, `cycle_min` what the servos allow.
+struct TuneBounds {
+  TuneRange step_height;
+  TuneRange step_length;
+  TuneRange cycle;
+  TuneRange duty;
+  uint8_t shapes;  //!< swings_within() of the model's own shape
+};
+
+//! The range of parameter p under bounds b (for kSwing: lo = the shapes' mask).
+inline TuneRange range_of(const TuneBounds& b, TuneParam p) {
+  switch (p) {
+    case TuneParam::kStepHeight: return b.step_height;
+    case TuneParam::kStepLength: return b.step_length;
+    case TuneParam::kCycle: return b.cycle;
+    case TuneParam::kDuty: return b.duty;
+    case TuneParam::kSwing: break;
+  }
+  return TuneRange{b.shapes, 0};
+}
+
+//! Whether v (the parameter's unit / 100; kSwing: a SwingShape) is allowed.
+inline bool tune_value_allowed(const TuneBounds& b, TuneParam p, int32_t v) {
+  const TuneRange r = range_of(b, p);
+  if (p == TuneParam::kSwing) return v >= 0 && v < kSwingShapeCount && (r.lo >> v) & 1;
+  return v >= r.lo && v <= r.hi;
+}
+
+//! Every parameter of `t` allowed (a record read back from EEPROM).
+inline bool tuning_allowed(const TuneBounds& b, const GaitTuning& t) {
+  return tune_value_allowed(b, TuneParam::kStepHeight, t.step_height_cmm) &&
+         tune_value_allowed(b, TuneParam::kStepLength, t.step_length_cmm) &&
+         tune_value_allowed(b, TuneParam::kCycle, t.cycle_cs) && tune_value_allowed(b, TuneParam::kDuty, t.duty_pct) &&
+         tune_value_allowed(b, TuneParam::kSwing, t.shape);
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_GAIT_TUNING_H
