@@ -1099,3 +1099,60 @@ TEST_P(FirmwareImu, TiltIsReportedAndATipOverIsAFall) {
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareImu, ::testing::Values("sprawl8", "hexapod18"), param_name);
 
 }  // namespace
+
+// Live gait parameters on the firmware (the phone's lines): `get` shows the
+// model's own, `set` changes them while the robot walks (no overrun, every
+// joint within its limits), refused values name their range, `save` keeps
+// them over a reset, and the status says where they came from.
+class FirmwareTuning : public ::testing::TestWithParam<std::string> {};
+TEST_P(FirmwareTuning, SetWalkSaveReset) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(500000, kSettleTimeoutUs)) << "outputs never settled";
+  const std::string own = r.command("get");
+  ASSERT_EQ(own.rfind("ok get gait=", 0), 0u) << own;
+  EXPECT_EQ(r.status().count("tune"), 0u);
+  const bool hexapod = GetParam() == "hexapod18";
+  const std::string swing = hexapod ? "parabola" : "cycloid";
+  EXPECT_EQ(r.command("deadman 60000"), "ok deadman ms=60000");
+  EXPECT_EQ(r.command("set step_height 12.50"), "ok set step_height 12.50");
+  EXPECT_EQ(r.command("set cycle 1.10"), "ok set cycle 1.10");
+  EXPECT_EQ(r.command("set swing " + swing), "ok set swing " + swing);
+  EXPECT_EQ(r.command("set step_height 99"), std::string("err 25 step_height out of range: 1.00..") +
+                                                  (hexapod ? "30.00" : "20.00"));
+  EXPECT_EQ(r.command("set duty 0.99").rfind("err 25 duty out of range: ", 0), 0u);
+  EXPECT_EQ(r.command("walk 30").rfind("ok move", 0), 0u);
+  const auto limits = r.pulse_limits();
+  r.mega().clear_pulse_log();
+  r.run_for(2000000);
+  EXPECT_EQ(r.command("set step_length 30"), "ok set step_length 30.00");
+  r.run_for(2000000);
+  size_t pulses = 0;
+  for (const auto& c : r.mega().pulse_log()) {
+    const auto lim = limits.find(c.channel);
+    if (lim == limits.end() || c.width_us == 0) continue;
+    ++pulses;
+    EXPECT_GE(c.width_us, lim->second.first - 1.0) << "channel " << c.channel;
+    EXPECT_LE(c.width_us, lim->second.second + 1.0) << "channel " << c.channel;
+  }
+  EXPECT_GT(pulses, 100u);
+  auto st = r.status();
+  EXPECT_EQ(st["state"], "walking");
+  EXPECT_EQ(st["tune"], "changed");
+  EXPECT_EQ(st["overruns"], "0") << "tick_max_us=" << st["tick_max_us"];
+  EXPECT_EQ(r.command("stop"), "ok stop");
+  r.run_for(3000000);
+  EXPECT_EQ(r.command("save"), "ok saved");
+  const std::string tuned = r.command("get");
+  EXPECT_NE(tuned.find(" step_height=12.50 step_length=30.00 cycle=1.10 "), std::string::npos) << tuned;
+  EXPECT_NE(tuned.find(" swing=" + swing + " "), std::string::npos) << tuned;
+  r.mega().reset();
+  ASSERT_TRUE(r.wait_ready(&error)) << error;
+  ASSERT_TRUE(r.settle(500000, kSettleTimeoutUs));
+  EXPECT_EQ(r.command("get"), tuned);
+  EXPECT_EQ(r.status()["tune"], "saved");
+  EXPECT_EQ(r.mega().unexpected_resets(), 0);
+  std::printf("%s: %s\n", GetParam().c_str(), tuned.c_str());
+}
+INSTANTIATE_TEST_SUITE_P(Models, FirmwareTuning, ::testing::Values("sprawl8", "hexapod18"), param_name);

@@ -67,7 +67,7 @@ class GaitTuner {
   //! Sets parameter p to v (its unit / 100; kSwing: a SwingShape); false
   //! (nothing changed) when bounds() does not allow it.
   bool set(WalkerMotion<S>& motion, TuneParam p, int32_t v) {
-    if (!tune_value_allowed(bounds(motion), p, v)) return false;
+    if (!in_tune_range(range(motion, p), p, v)) return false;
     switch (p) {
       case TuneParam::kStepHeight: live_.step_height_cmm = uint16_t(v); break;
       case TuneParam::kStepLength: live_.step_length_cmm = uint16_t(v); break;
@@ -89,31 +89,41 @@ class GaitTuner {
     return st;
   }
 
-  //! What each parameter may be for the gait walked now: a step no higher
+  //! What parameter p may be for the gait walked now: a step no higher
   //! than the model's own (the stride limits were searched with it), any
   //! preferred stride up to the longest a leg makes, a cycle the servos can
   //! step at with the duty set, a duty that keeps the gait's support, a
-  //! swing under the model's own.
-  TuneBounds bounds(const WalkerMotion<S>& motion) const {
+  //! swing under the model's own (kSwing: lo is the shapes' mask).
+  TuneRange range(const WalkerMotion<S>& motion, TuneParam p) const {
     using namespace gait_tuner_detail;
     const VelocityLimits<S>& lim = motion.walker().engine().config().limits;
-    S longest = S(0);
-    for (uint8_t i = 0; i < motion.walker().leg_count(); ++i)
-      for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) longest = max_of(longest, lim.stride_mm(i, k));
-    const int32_t length_max = hundredths(longest);
-    // The shortest cycle: 1 / the servos' fastest step rate, rounded up.
-    const S fastest_hz = lim.servo_hz(S(0), from_hundredths<S>(live_.duty_pct));
-    const int32_t cycle_min = hundredths(S(1) / fastest_hz) + 1;
-    GaitTable own;
-    load_gait(motion.walker().leg_count(), motion.gait().name, &own);
-    TuneBounds b;
     const GaitTuning mine = own_tuning();
-    b.step_height = TuneRange{kMinStepHeightCmm, mine.step_height_cmm};
-    b.step_length = TuneRange{kMinStepLengthCmm, length_max > mine.step_length_cmm ? length_max : mine.step_length_cmm};
-    b.cycle = TuneRange{cycle_min > kMinCycleCs ? cycle_min : kMinCycleCs, kMaxCycleCs};
-    b.duty = duty_range(own);
-    b.shapes = swings_within(own_.shape);
-    return b;
+    switch (p) {
+      case TuneParam::kStepHeight: return TuneRange{kMinStepHeightCmm, mine.step_height_cmm};
+      case TuneParam::kStepLength: {
+        S longest = S(0);
+        for (uint8_t i = 0; i < motion.walker().leg_count(); ++i)
+          for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) longest = max_of(longest, lim.stride_mm(i, k));
+        const int32_t hi = hundredths(longest);
+        return TuneRange{kMinStepLengthCmm, hi > mine.step_length_cmm ? hi : int32_t(mine.step_length_cmm)};
+      }
+      case TuneParam::kCycle: {
+        // 1 / the servos' fastest step rate at the duty set, rounded up.
+        const int32_t lo = hundredths(S(1) / lim.servo_hz(S(0), from_hundredths<S>(live_.duty_pct))) + 1;
+        return TuneRange{lo > kMinCycleCs ? lo : kMinCycleCs, kMaxCycleCs};
+      }
+      case TuneParam::kDuty: {
+        GaitTable own;
+        load_gait(motion.walker().leg_count(), motion.gait().name, &own);
+        return duty_range(own);
+      }
+      case TuneParam::kSwing: break;
+    }
+    return TuneRange{swings_within(own_.shape), 0};
+  }
+  TuneBounds bounds(const WalkerMotion<S>& motion) const {
+    return TuneBounds{range(motion, TuneParam::kStepHeight), range(motion, TuneParam::kStepLength),
+                      range(motion, TuneParam::kCycle), range(motion, TuneParam::kDuty), uint8_t(swings_within(own_.shape))};
   }
 
   //! `step_height=20.00 step_length=40.00 cycle=0.80 duty=0.75 swing=ellipse height=85.0`

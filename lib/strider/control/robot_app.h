@@ -372,7 +372,7 @@ class RobotApp {
     }
     const char* gait_name() const { return app_.motion_.gait().name; }
     bool tune(TuneParam p, int32_t v) { return app_.tuner_.set(app_.motion_, p, v); }
-    TuneRange tune_range(TuneParam p) const { return range_of(app_.tuner_.bounds(app_.motion_), p); }
+    TuneRange tune_range(TuneParam p) const { return app_.tuner_.range(app_.motion_, p); }
     void write_tuning(ReplyWriter& w) const { app_.tuner_.write(app_.motion_, w); }
     bool save_tuning() { return app_.tuner_.save(app_.motion_, app_.store_) == SettingsStatus::kOk; }
     bool set_body_pose(int32_t r, int32_t p, int32_t y) { return app_.motion_.set_body_pose(r, p, y); }

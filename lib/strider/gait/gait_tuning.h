@@ -54,57 +54,75 @@ constexpr int32_t kMaxDutyPct = 95;          //!< a swing of at least a twentiet
 namespace gait_tuning_detail {
 //! A duty [0.01] as a phase span of the swing: round((1 - duty) 2^16).
 constexpr uint32_t swing_span_of(uint8_t duty_pct) { return (uint32_t(100 - duty_pct) * 65536u + 50u) / 100u; }
-//! Leg i's lift-off phase [2^-16 of a cycle] (integer conversion of the table's float).
-inline uint16_t lift_phase(const GaitTable& t, uint8_t i) { return uint16_t(table_fraction::q16(t.offset[i]) & 0xFFFFu); }
 }  // namespace gait_tuning_detail
 
 //! Phases this close [2^-16 of a cycle] are the same moment: the tables'
 //! fractions (sixths, thirds) rounded to 2^-16 differ by a unit or two.
 constexpr uint32_t kPhaseSlack = 2;
 
-//! The fewest feet on the ground over a cycle of gait t walked with a swing
-//! of `swing` [2^-16 of a cycle]: counted just after each lift-off, where
-//! the count is lowest. A foot that lands as another lifts counts as down.
-inline uint8_t fewest_feet_down(const GaitTable& t, uint32_t swing) {
-  uint8_t fewest = t.leg_count;
-  for (uint8_t j = 0; j < t.leg_count; ++j) {
-    const uint16_t pj = gait_tuning_detail::lift_phase(t, j);
+//! A gait table's lift-off phases [2^-16 of a cycle], converted from its
+//! floats once (integer operations on their bits).
+struct LiftPhases {
+  uint16_t at[kMaxLegs];
+  uint8_t count;
+  explicit LiftPhases(const GaitTable& t) : at(), count(t.leg_count) {
+    for (uint8_t i = 0; i < count; ++i) at[i] = uint16_t(table_fraction::q16(t.offset[i]) & 0xFFFFu);
+  }
+};
+
+//! The fewest feet on the ground over a cycle of a gait lifting at `p`
+//! with a swing of `swing` [2^-16 of a cycle]: counted just after each
+//! lift-off, where the count is lowest. A foot that lands as another lifts
+//! counts as down.
+inline uint8_t fewest_feet_down(const LiftPhases& p, uint32_t swing) {
+  uint8_t fewest = p.count;
+  for (uint8_t j = 0; j < p.count; ++j) {
     uint8_t up = 0;
-    for (uint8_t i = 0; i < t.leg_count; ++i)
-      if (uint32_t(uint16_t(pj - gait_tuning_detail::lift_phase(t, i))) + kPhaseSlack < swing || i == j) ++up;
-    if (uint8_t(t.leg_count - up) < fewest) fewest = uint8_t(t.leg_count - up);
+    for (uint8_t i = 0; i < p.count; ++i)
+      if (i == j || uint32_t(uint16_t(p.at[j] - p.at[i])) + kPhaseSlack < swing) ++up;
+    if (uint8_t(p.count - up) < fewest) fewest = uint8_t(p.count - up);
   }
   return fewest;
 }
+inline uint8_t fewest_feet_down(const GaitTable& t, uint32_t swing) { return fewest_feet_down(LiftPhases(t), swing); }
 
 //! Whether legs with different lift-off phases are never in the air together
 //! and a moment with every foot down lies between any two swings (what a
 //! body-shifting gait needs, gait_table::swings_separated()), for `swing`.
-inline bool swings_apart(const GaitTable& t, uint32_t swing) {
-  for (uint8_t j = 0; j < t.leg_count; ++j)
-    for (uint8_t i = 0; i < t.leg_count; ++i) {
-      const uint32_t d = uint16_t(gait_tuning_detail::lift_phase(t, j) - gait_tuning_detail::lift_phase(t, i));
+inline bool swings_apart(const LiftPhases& p, uint32_t swing) {
+  for (uint8_t j = 0; j < p.count; ++j)
+    for (uint8_t i = 0; i < p.count; ++i) {
+      const uint32_t d = uint16_t(p.at[j] - p.at[i]);
       if (d > kPhaseSlack && d < 65536u - kPhaseSlack && (d <= swing + kPhaseSlack || d + swing + kPhaseSlack >= 65536u))
         return false;
     }
   return true;
 }
 
-//! Whether gait t (at its own duty: `own`) may be walked with duty_pct.
-inline bool duty_allowed(const GaitTable& t, uint8_t duty_pct) {
+namespace gait_tuning_detail {
+inline bool duty_allowed(const GaitTable& t, const LiftPhases& p, uint8_t own_down, uint8_t duty_pct) {
   if (duty_pct == 0 || duty_pct > kMaxDutyPct) return false;
-  const uint32_t swing = gait_tuning_detail::swing_span_of(duty_pct);
-  const uint8_t own = fewest_feet_down(t, table_fraction::swing_span(t.duty));
-  if (fewest_feet_down(t, swing) < own) return false;
-  return !t.shift_body || swings_apart(t, swing);
+  const uint32_t swing = swing_span_of(duty_pct);
+  if (fewest_feet_down(p, swing) < own_down) return false;
+  return !t.shift_body || swings_apart(p, swing);
+}
+}  // namespace gait_tuning_detail
+
+//! Whether gait t may be walked with duty_pct: as many feet down as at its
+//! own duty, and its swings apart if it shifts the body.
+inline bool duty_allowed(const GaitTable& t, uint8_t duty_pct) {
+  const LiftPhases p(t);
+  return gait_tuning_detail::duty_allowed(t, p, fewest_feet_down(p, table_fraction::swing_span(t.duty)), duty_pct);
 }
 
 //! The duties gait t may be walked with [0.01]: from the least allowed one
 //! to kMaxDutyPct (the allowed duties are one interval: more feet down only
 //! adds support and shortens the swings).
 inline TuneRange duty_range(const GaitTable& t) {
+  const LiftPhases p(t);
+  const uint8_t own = fewest_feet_down(p, table_fraction::swing_span(t.duty));
   int32_t lo = kMaxDutyPct;
-  for (uint8_t d = kMaxDutyPct; d > 0 && duty_allowed(t, d); --d) lo = d;
+  for (uint8_t d = kMaxDutyPct; d > 0 && gait_tuning_detail::duty_allowed(t, p, own, d); --d) lo = d;
   return TuneRange{lo, kMaxDutyPct};
 }
 
@@ -152,12 +170,14 @@ inline TuneRange range_of(const TuneBounds& b, TuneParam p) {
   return TuneRange{b.shapes, 0};
 }
 
-//! Whether v (the parameter's unit / 100; kSwing: a SwingShape) is allowed.
-inline bool tune_value_allowed(const TuneBounds& b, TuneParam p, int32_t v) {
-  const TuneRange r = range_of(b, p);
+//! Whether v (the parameter's unit / 100; kSwing: a SwingShape) is in
+//! parameter p's range r.
+inline bool in_tune_range(const TuneRange& r, TuneParam p, int32_t v) {
   if (p == TuneParam::kSwing) return v >= 0 && v < kSwingShapeCount && (r.lo >> v) & 1;
   return v >= r.lo && v <= r.hi;
 }
+//! Whether v is allowed for parameter p under bounds b.
+inline bool tune_value_allowed(const TuneBounds& b, TuneParam p, int32_t v) { return in_tune_range(range_of(b, p), p, v); }
 
 //! Every parameter of `t` allowed (a record read back from EEPROM).
 inline bool tuning_allowed(const TuneBounds& b, const GaitTuning& t) {
