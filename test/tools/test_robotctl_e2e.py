@@ -160,5 +160,28 @@ class VirtualMegaE2E(unittest.TestCase):
             else:
                 self.assertAlmostEqual(st["dist_mm"], dist, delta=5, msg=st)
 
+    def test_7_tune_sets_saves_and_keeps_the_parameters(self):
+        # A fresh virtual Mega with its own EEPROM file: the tune is saved,
+        # the board started again on the same file, the parameters are back.
+        with tempfile.TemporaryDirectory() as tmp:
+            common = ["--port", "sim:", "--vbench", os.environ["STRIDER_VBENCH"], "--elf", os.environ["STRIDER_ELF"],
+                      "--eeprom", os.path.join(tmp, "eeprom.bin"), "--timeout", "3"]
+            out = io.StringIO()
+            rc = cli.main(common + ["tune", "--gait", "trot", "--step-height", "14.5", "--cycle", "0.6",
+                                    "--swing", "cycloid", "--save", "--json"], out=out)
+            self.assertEqual(rc, cli.EXIT_OK, out.getvalue())
+            tuned = json.loads(out.getvalue())
+            self.assertEqual((tuned["gait"], tuned["step_height"], tuned["cycle"], tuned["swing"]),
+                             ("trot", "14.50", "0.60", "cycloid"), tuned)
+            out = io.StringIO()
+            rc = cli.main(common + ["tune", "--gait", "trot", "--json"], out=out)
+            self.assertEqual(rc, cli.EXIT_OK, out.getvalue())
+            self.assertEqual(json.loads(out.getvalue()), tuned)
+            out = io.StringIO()
+            rc = cli.main(common + ["tune", "--step-height", "99"], out=out)
+            self.assertEqual(rc, cli.EXIT_ERR_REPLY, out.getvalue())
+            self.assertIn("set step_height 99.00: err 25 step_height out of range: 1.00..20.00", out.getvalue())
+
+
 if __name__ == "__main__":
     unittest.main()

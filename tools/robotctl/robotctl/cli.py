@@ -78,6 +78,17 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--release", type=float, default=0.6, help="hold mode: seconds without a key that mean release")
     p.add_argument("--status-period", type=float, default=1.0, help="seconds between status refreshes (0 = off)")
 
+    p = sub.add_parser("tune", help="show or set the live gait parameters of a gait (set/get, docs/protocol.md)")
+    p.add_argument("--gait", help="switch to this gait first (each gait has its own parameters)")
+    p.add_argument("--step-height", type=float, metavar="MM", help="swing apex [mm]")
+    p.add_argument("--step-length", type=float, metavar="MM", help="preferred stride [mm]")
+    p.add_argument("--cycle", type=float, metavar="S", help="cycle time at low speed [s]")
+    p.add_argument("--duty", type=float, metavar="D", help="share of the cycle a foot is down, 0..1")
+    p.add_argument("--swing", metavar="SHAPE", help="swing path: rectangle semicircle ellipse cycloid parabola bezier")
+    p.add_argument("--height", type=float, metavar="MM", help="body height [mm]")
+    p.add_argument("--save", action="store_true", help="keep them in EEPROM (with the other settings)")
+    p.add_argument("--json", action="store_true", help="print the parameters as one JSON object")
+
     p = sub.add_parser("play", help="play a timed script (see docs/robotctl.md)")
     p.add_argument("script", help="script file, - for stdin")
     p.add_argument("--check", action="store_true", help="only parse the script, print its steps")
@@ -207,6 +218,48 @@ def cmd_status(s: Drive, a, out) -> int:
             s.link.poll(end - s.link.clock())
 
 
+def tune_lines(a) -> List[str]:
+    """The protocol lines of `robotctl tune`'s options, in the order the
+    robot needs them: the gait, then its parameters, then the height."""
+    lines = [f"gait {a.gait}"] if a.gait else []
+    for opt, name in (("step_height", "step_height"), ("step_length", "step_length"), ("cycle", "cycle"),
+                      ("duty", "duty")):
+        v = getattr(a, opt)
+        if v is not None:
+            lines.append(f"set {name} {v:.2f}")
+    if a.swing:
+        lines.append(f"set swing {a.swing}")
+    if a.height is not None:
+        lines.append(f"height {a.height:.1f}")
+    return lines
+
+
+def cmd_tune(s: Drive, a, out) -> int:
+    if s.booted and not s.link.wait_standing(15.0):
+        print("robotctl: the robot did not stand up within 15 s; sending anyway", file=sys.stderr)
+    try:
+        for line in tune_lines(a) + (["save"] if a.save else []):
+            r = s.link.command(line, a.timeout)
+            if not r.ok:
+                print(f"{line}: {r.line}", file=out)
+                return EXIT_ERR_REPLY
+        r = s.link.command("get", a.timeout)
+    except ReplyTimeout as e:
+        print(f"robotctl: {e}", file=sys.stderr)
+        return EXIT_TIMEOUT
+    if not r.ok:
+        print(r.line, file=out)
+        return EXIT_ERR_REPLY
+    fields = dict(kv.split("=", 1) for kv in r.line.split()[2:] if "=" in kv)
+    if a.json:
+        print(json.dumps(fields), file=out)
+    else:
+        width = max(len(k) for k in fields) if fields else 0
+        for k, v in fields.items():
+            print(f"{k:<{width}}  {v}", file=out)
+    return EXIT_OK
+
+
 def cmd_play(s: Optional[Drive], a, out, steps) -> int:
     res = play(s.link, steps, lambda t: (print(t, file=out), out.flush()), a.timeout)
     print(f"# {res.sent} lines, {res.errors} err replies, {res.timeouts} timeouts", file=out)
@@ -294,6 +347,8 @@ def main(argv: Optional[List[str]] = None, out=None) -> int:
             return cmd_status(s, a, out)
         if a.cmd == "play":
             return cmd_play(s, a, out, steps)
+        if a.cmd == "tune":
+            return cmd_tune(s, a, out)
         if a.cmd == "monitor":
             return cmd_monitor(s, a, out)
         return cmd_drive(s, a, out)
