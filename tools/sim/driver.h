@@ -43,6 +43,12 @@ struct GaitInfo {
   std::string default_gait;
   double stance_depth_mm = 0, foot_radius_mm = 0, com_x_mm = 0, com_y_mm = 0, margin_mm = 0, shift_budget_mm = 0;
   double sit_drop_mm = 0, transition_s = 0;
+  // What the robot accepts of each live parameter for this gait (`set`,
+  // gait_tuner.h): [lo, hi] in the parameter's unit, the swings allowed.
+  bool has_bounds = false;
+  double step_height_range[2] = {0, 0}, step_length_range[2] = {0, 0}, cycle_range[2] = {0, 0};
+  double duty_range[2] = {0, 0};
+  std::vector<std::string> swings;
 };
 
 class Driver {

@@ -108,6 +108,13 @@ class LibraryDriver : public Driver, private HostParts {
     info->margin_mm = double(params_.margin_mm);
     info->shift_budget_mm = double(params_.shift_budget_mm);
     info->sit_drop_mm = double(params_.sit_drop_mm);
+    const strider::TuneBounds b = app_.tune_bounds();
+    info->has_bounds = true;
+    const strider::TuneRange* r[4] = {&b.step_height, &b.step_length, &b.cycle, &b.duty};
+    double* out[4] = {info->step_height_range, info->step_length_range, info->cycle_range, info->duty_range};
+    for (int k = 0; k < 4; ++k) out[k][0] = r[k]->lo / 100.0, out[k][1] = r[k]->hi / 100.0;
+    for (uint8_t k = 0; k < strider::kSwingShapeCount; ++k)
+      if ((b.shapes >> k) & 1) info->swings.push_back(strider::to_string(strider::SwingShape(k)));
     info->transition_s = double(params_.transition_s);
     return true;
   }

@@ -368,7 +368,21 @@ std::string metrics_json(const Metrics& m) {
       << ", \"stance_depth_mm\": " << num(g.stance_depth_mm, 2) << ", \"foot_radius_mm\": " << num(g.foot_radius_mm, 2)
       << ", \"com_x_mm\": " << num(g.com_x_mm, 2) << ", \"com_y_mm\": " << num(g.com_y_mm, 2)
       << ", \"margin_mm\": " << num(g.margin_mm, 2) << ", \"shift_budget_mm\": " << num(g.shift_budget_mm, 2)
-      << ", \"sit_drop_mm\": " << num(g.sit_drop_mm, 2) << ", \"transition_s\": " << num(g.transition_s, 3) << "}}\n";
+      << ", \"sit_drop_mm\": " << num(g.sit_drop_mm, 2) << ", \"transition_s\": " << num(g.transition_s, 3) << "}";
+    if (g.has_bounds) {
+      const auto range = [&](const char* key, const double* r) {
+        o << ", \"" << key << "\": [" << num(r[0], 2) << ", " << num(r[1], 2) << "]";
+      };
+      o << ",\n           \"bounds\": {\"swings\": [";
+      for (size_t i = 0; i < g.swings.size(); ++i) o << (i ? ", " : "") << json_string(g.swings[i]);
+      o << "]";
+      range("step_height_mm", g.step_height_range);
+      range("step_length_mm", g.step_length_range);
+      range("cycle_s", g.cycle_range);
+      range("duty", g.duty_range);
+      o << "}";
+    }
+    o << "}\n";
   } else {
     o << "  \"gait\": null\n";
   }

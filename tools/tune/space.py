@@ -10,7 +10,7 @@ import math
 
 # key: (protocol line, unit, grid step, range as factors of the default)
 PARAMS = {
-    "step_height_mm": ("set step_height", "mm", 0.5, (0.3, 2.0)),
+    "step_height_mm": ("set step_height", "mm", 0.5, (0.3, 1.0)),
     "step_length_mm": ("set step_length", "mm", 0.5, (0.5, 2.5)),
     "cycle_s": ("set cycle", "s", 0.05, (0.4, 2.0)),
     "duty": ("set duty", "", 0.01, None),  # DUTY_RANGE
@@ -38,14 +38,17 @@ def on_grid(value, step):
     return round(round(value / step) * step, 6)
 
 
-def ranges(defaults, gait, names, overrides=None):
+def ranges(defaults, gait, names, overrides=None, bounds=None):
     """{key: (low, high, step) or tuple of choices} for the parameters in
     `names`, around `defaults` (a parameter set: the model's values), with
-    `overrides` {key: (low, high)} taking the place of the computed ones."""
+    `overrides` {key: (low, high)} taking the place of the computed ones,
+    within `bounds` (strider-sim's `gait.bounds`: what the robot accepts of
+    each `set`, so that the firmware takes what the tuner finds)."""
     out = {}
+    bounds = bounds or {}
     for key in names:
         if key == "swing":
-            out[key] = SWINGS
+            out[key] = tuple(s for s in SWINGS if s in bounds.get("swings", SWINGS))
             continue
         _, _, step, factors = PARAMS[key]
         if overrides and key in overrides:
@@ -56,6 +59,8 @@ def ranges(defaults, gait, names, overrides=None):
             lo, hi = defaults[key] * factors[0], defaults[key] * factors[1]
             if key == "cycle_s":
                 lo, hi = max(lo, 0.2), min(hi, 10.0)
+        if key in bounds:
+            lo, hi = max(lo, bounds[key][0]), min(hi, bounds[key][1])
         lo, hi = math.ceil(lo / step - 1e-9) * step, math.floor(hi / step + 1e-9) * step
         if not lo < hi:
             raise ValueError(f"{key}: empty range {lo:g}..{hi:g}")

@@ -147,7 +147,7 @@ def main(argv=None):
     gait = info["name"]
     objective = objectives.Objective(a.objective, a.weights, a.speed, a.sprint_speed, a.distances, a.walk_s)
     try:
-        search_space = space.ranges(defaults, gait, a.params, a.ranges)
+        search_space = space.ranges(defaults, gait, a.params, a.ranges, info.get("bounds"))
     except (ValueError, KeyError) as e:
         sys.exit(f"tune_gait.py: {e}")
     out = pathlib.Path(a.out or ROOT / "out" / "tune" / f"{a.model}_{gait}_{a.objective}")

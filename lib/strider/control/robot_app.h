@@ -340,6 +340,8 @@ class RobotApp {
   SonarFilter& sonar() { return sonar_; }
   const Controller<Sink, Store, false>& controller() const { return controller_; }
   const WalkerMotion<S>& motion() const { return motion_; }
+  //! What each live gait parameter may be for the gait walked now (gait_tuner.h).
+  TuneBounds tune_bounds() const { return tuner_.bounds(motion_); }
   //! The walker, for host tools that change it between ticks (the simulator's gait overrides).
   WalkerMotion<S>& motion() { return motion_; }
   const ServoStage<S, kJoints, kStoredChannels>& servos() const { return stage_; }
