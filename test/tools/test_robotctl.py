@@ -42,6 +42,9 @@ class FakeLink:
         self.notices = []
         self.answer = answer
         self.waiting = 0
+        self.get_reply = ("ok get gait=trot step_height=20.00 step_length=40.00 cycle=0.80 duty=0.50 swing=ellipse "
+                          "height=72.0")
+        self.refuse = {}  # line -> its err reply
 
     class Req:
         def __init__(self, text, t):
@@ -53,6 +56,10 @@ class FakeLink:
             word = text.split()[0] if text.split() else ""
             line = ("ok status mode=walking speed=70 vx=155.0 vy=0.0 wz=0.0 avoid=off sonar=none "
                     "deadman_ms=1000 eeprom=ok") if word == "status" else f"ok {text.strip()}"
+            if word == "get":
+                line = self.get_reply
+            elif text.strip() in self.refuse:
+                line = self.refuse[text.strip()]
             r.reply = protocol.parse_reply(line)
         return r
 
@@ -243,6 +250,31 @@ class DriveTest(unittest.TestCase):
         link.clock.t += 0.6
         ds.tick()
         self.assertEqual(sum(1 for _, k, p in link.writes if p == "status"), n + 1)
+
+    def test_tune_keys_step_the_gaits_parameters(self):
+        link, ds = self.make(status_period_s=0)
+        ds.key("u")  # nothing to step from yet: asks get first
+        ds.tick()
+        self.assertEqual(ds.tune["step_height"], "20.00")
+        self.assertIn("gait=trot", ds.tune_line)
+        for k in ("u", "k", "o", "y", "h"):
+            ds.key(k)
+            ds.tick()
+        link.refuse["set swing cycloid"] = "err 25 swing not under the model's own swing: semicircle ellipse"
+        ds.key("n")  # ellipse -> cycloid, refused: the next press tries the one after
+        ds.tick()
+        self.assertEqual(ds.last_reply, "err 25 swing not under the model's own swing: semicircle ellipse")
+        ds.key("n")
+        ds.tick()
+        ds.key("p")
+        ds.tick()
+        sets = [p for _, k, p in link.writes if k == "line" and p != "get"]
+        self.assertEqual(sets, ["set step_height 21.00", "set step_length 35.00", "set cycle 0.75", "set duty 0.51",
+                                "set duty 0.49", "set swing cycloid", "set swing parabola", "save"])
+        self.assertEqual(ds.last_reply, "ok save")
+        # After each set the values are asked again; no RC byte was sent.
+        self.assertEqual(sum(1 for _, k, p in link.writes if p == "get"), 1 + len(sets))
+        self.assertEqual(self.rc_writes(link), [])
 
     def test_typed_line_shows_its_reply(self):
         link, ds = self.make(status_period_s=0)

@@ -42,8 +42,22 @@ STOP_KEYS = (" ", "S", "x")
 QUIT_KEYS = ("ESC", "Q", "CTRL_C")
 LINE_KEYS = ("t", "ENTER")
 
+#: Tune keys: a step of one live gait parameter of the gait walked now
+#: (`set NAME VALUE`, docs/protocol.md), from the values of the last `get`.
+TUNE_KEYS: Dict[str, tuple] = {
+    "u": ("step_height", +1.0), "j": ("step_height", -1.0),
+    "i": ("step_length", +5.0), "k": ("step_length", -5.0),
+    "l": ("cycle", +0.05), "o": ("cycle", -0.05),
+    "y": ("duty", +0.01), "h": ("duty", -0.01),
+}
+SWING_KEY = "n"   # the next swing shape
+SAVE_KEY = "p"    # save: the gait's parameters stay over a power cycle
+SWINGS = ("rectangle", "semicircle", "ellipse", "cycloid", "parabola", "bezier")
+TUNE_FIELDS = ("gait", "step_height", "step_length", "cycle", "duty", "swing")
+
 HELP = ("arrows/WASD move  z/c turn  [ ] back-left/right  space stop  0-9 q speed  "
         "t or Enter: type a command  Esc/Q quit")
+TUNE_HELP = "tune: u/j step height  i/k step length  o/l cycle  y/h duty  n swing  p save"
 
 
 def speed_percent(ch: str) -> int:
@@ -70,6 +84,9 @@ class DriveState:
     _status_req: object = None
     _status_sent: float = -1e9
     _user_reqs: List[object] = field(default_factory=list)
+    tune: Dict[str, str] = field(default_factory=dict)  #: the last `get`: the gait's live parameters
+    _tune_reqs: List[tuple] = field(default_factory=list)  # (kind "get"/"set", request)
+    _swing_tried: Optional[str] = None
 
     @property
     def clock(self) -> Callable[[], float]:
@@ -90,6 +107,43 @@ class DriveState:
             self.speed_pct = speed_percent(k)
             self.link.write_rc(k)
             self.last_sent = f"{k} (speed {self.speed_pct} %)"
+        elif k in TUNE_KEYS or k in (SWING_KEY, SAVE_KEY):
+            self._tune_key(k)
+
+    def _tune_key(self, k: str) -> None:
+        """A tune key: `set` of the parameter a step from what `get` showed
+        (the robot refuses a value it cannot take, with its range, shown as
+        the reply), or `save`."""
+        if k == SAVE_KEY:
+            line = "save"
+        elif not self.tune:  # nothing to step from yet
+            self._ask_tune()
+            return
+        elif k == SWING_KEY:
+            now = self._swing_tried or self.tune.get("swing", SWINGS[0])
+            nxt = SWINGS[(SWINGS.index(now) + 1) % len(SWINGS)] if now in SWINGS else SWINGS[0]
+            self._swing_tried = nxt
+            line = f"set swing {nxt}"
+        else:
+            name, step = TUNE_KEYS[k]
+            try:
+                value = float(self.tune[name]) + step
+            except (KeyError, ValueError):
+                self._ask_tune()
+                return
+            line = f"set {name} {max(value, 0.0):.2f}"
+        self._tune_reqs.append(("set", self.link.write_line(line)))
+        self.last_sent = line
+
+    def _ask_tune(self) -> None:
+        if not any(kind == "get" for kind, _ in self._tune_reqs):
+            self._tune_reqs.append(("get", self.link.write_line("get")))
+
+    @property
+    def tune_line(self) -> str:
+        if not self.tune:
+            return "tune:    (press a tune key)"
+        return "tune:    " + "  ".join(f"{k}={self.tune[k]}" for k in TUNE_FIELDS if k in self.tune)
 
     def _move(self, byte: str, now: float) -> None:
         self.motion = byte
@@ -143,6 +197,21 @@ class DriveState:
             if r.reply is not None:
                 self.last_reply = r.reply.line
                 self._user_reqs.remove(r)
+                if self.tune:  # a typed `gait ...` or `set ...` changes what the tune line shows
+                    self._swing_tried = None
+                    self._ask_tune()
+        for kind, r in list(self._tune_reqs):
+            if r.reply is None:
+                continue
+            self._tune_reqs.remove((kind, r))
+            if kind == "get":
+                if r.reply.ok:
+                    self.tune = {k: v for k, v in (kv.split("=", 1) for kv in r.reply.line.split()[2:] if "=" in kv)}
+            else:  # a set or save: its reply, then the values as they are now
+                self.last_reply = r.reply.line
+                if r.reply.ok:
+                    self._swing_tried = None
+                self._ask_tune()
 
 
 # -- curses screen -------------------------------------------------------------
@@ -188,13 +257,13 @@ def run_curses(drive: DriveState, title: str) -> None:
     def draw(scr, typing):
         scr.erase()
         h, w = scr.getmaxyx()
-        rows = [title, HELP, "",
+        rows = [title, HELP, TUNE_HELP, "",
                 f"mode:    {'latch' if drive.latch else 'hold'}   motion: {drive.motion} "
                 f"({MOTION_NAMES[drive.motion]})   speed: "
                 f"{drive.speed_pct if drive.speed_pct is not None else '?'} %",
                 f"sent:    {drive.last_sent}",
                 f"reply:   {drive.last_reply}",
-                drive.status_line, "", "notices:"] + [f"  {n}" for n in drive.notices]
+                drive.status_line, drive.tune_line, "", "notices:"] + [f"  {n}" for n in drive.notices]
         if typing is not None:
             rows += ["", f"command> {typing}_"]
         for i, row in enumerate(rows[: h - 1]):
