@@ -94,6 +94,20 @@ class ProtocolTest(unittest.TestCase):
         r = protocol.parse_reply("err 23 unknown gait: walk trot pace crawl")
         self.assertEqual((r.code, r.reason, r.valid), (23, "unknown gait", "walk trot pace crawl"))
 
+    def test_error_codes_as_the_protocol_doc_lists_them(self):
+        # docs/protocol.md's error table: `| code | `reason` / `other reason` | ...`;
+        # robotctl knows every code, by a reason the row names.
+        rows = {}
+        with open(os.path.join(ROOT, "docs", "protocol.md"), encoding="utf-8") as f:
+            for line in f:
+                cells = line.split(" | ")
+                if line.startswith("| ") and len(cells) > 2 and cells[0][2:].strip().isdigit():
+                    rows[int(cells[0][2:])] = cells[1]
+        self.assertGreaterEqual(len(rows), 20)
+        self.assertEqual(sorted(protocol.ERROR_CODES), sorted(rows))
+        for code, reason in protocol.ERROR_CODES.items():
+            self.assertIn(f"`{reason}`", rows[code], code)
+
     def test_kinds(self):
         self.assertEqual(protocol.kind_of("info deadman stop"), "info")
         self.assertEqual(protocol.kind_of("ok"), "ok")
