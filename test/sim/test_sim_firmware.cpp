@@ -81,6 +81,28 @@ TEST(SimFirmware, Sprawl8FirmwareClearsTheWallByItsHalfWidth) {
   EXPECT_GT(fw.metrics.min_clearance_mm, 40.0);
 }
 
+// The demo (tools/dev demo) does what its summary and README say: walks
+// forward, turns a quarter left, walks on into the wall, which the sonar
+// hears, sidesteps round it and walks on, touching nothing. The wall stands
+// where the second leg of the walk passes, so a faster or slower first leg
+// (a gait change) shows here rather than as a demo that walks past it.
+TEST(SimFirmware, DemoWalksIntoTheWallAndRoundIt) {
+  const strider_sim::RunResult fw = run("sprawl8_demo", STRIDER_SIM_FIRMWARE_ELF);
+  ASSERT_TRUE(fw.ok);
+  double sidestep_s = -1, forward_s = -1;
+  for (const auto& l : fw.log) {
+    if (sidestep_s < 0 && l.text.find("info avoid sidestep") != std::string::npos) sidestep_s = l.t_s;
+    if (sidestep_s >= 0 && forward_s < 0 && l.text.find("info avoid forward") != std::string::npos) forward_s = l.t_s;
+  }
+  EXPECT_GT(sidestep_s, 10.0) << "the sonar never stopped it: the wall is not in its way";  // after the turn
+  EXPECT_GT(forward_s, sidestep_s) << "never walked forward again";
+  EXPECT_EQ(fw.metrics.replies_err, 0);
+  EXPECT_FALSE(fw.metrics.fell);
+  EXPECT_EQ(fw.metrics.collisions, 0);
+  EXPECT_NEAR(fw.metrics.heading_change_deg, 90.0, 15.0);
+  EXPECT_GT(fw.metrics.final_y_mm, 1000.0);  // walked on past the wall (it stands at y = 680..720)
+}
+
 }  // namespace
 
 // Issue 20: the phone pad at 100 % (`q`, then `F` or `G`) in trot makes the
