@@ -32,9 +32,7 @@
 #include <string>
 #include <vector>
 
-#include "control/robot_app.h"
-#include "fakes/fake_store.h"
-#include "fakes/recording_servo.h"
+#include "fakes/app_rig.h"
 #include "robots/all_robots.h"
 
 namespace {
@@ -211,39 +209,13 @@ std::vector<Group> examples_of(const std::string& path, const std::string& file)
   return groups;
 }
 
-struct Lines {
-  std::vector<std::string> sent;
-  void send_line(uint8_t, const char* line) { sent.push_back(line); }
-};
-
-using App = strider::RobotApp<float, strider_test::RecordingServo, strider_test::FakeStore>;
-
-struct Robot {
-  strider_test::RecordingServo out;
-  strider_test::FakeStore store;
-  Lines lines;
-  App app;
-  uint32_t now_us = 1000;
-  explicit Robot(const strider::RobotModel& m) : app(m, out, store) {
-    EXPECT_TRUE(app.begin(now_us, lines));
-    run_ms(3000);  // standing
+// A robot that has stood up; each reply after 100 ms of ticks.
+struct Robot : strider_test::AppRig {
+  explicit Robot(const strider::RobotModel& m) : AppRig(m) {
+    EXPECT_TRUE(began);
+    run_ms(3000);
   }
-  void run_ms(uint32_t ms) {
-    for (uint32_t t = 0; t < ms; t += 20) {
-      now_us += strider::kTickPeriodUs;
-      app.tick(now_us, lines);
-      out.writes.clear();
-      out.relaxed.clear();
-    }
-  }
-  std::string reply(const std::string& line) {
-    const size_t before = lines.sent.size();
-    for (unsigned char b : line + "\r\n") app.on_byte(1, b, now_us, lines);
-    run_ms(100);
-    for (size_t i = before; i < lines.sent.size(); ++i)
-      if (lines.sent[i].rfind("info", 0) != 0) return lines.sent[i];
-    return "(no reply)";
-  }
+  std::string reply(const std::string& line) { return AppRig::reply(line, 100); }
 };
 
 // README.md and every page in docs/: a new page is checked without being listed.

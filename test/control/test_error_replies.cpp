@@ -10,67 +10,20 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
-#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "control/robot_app.h"
-#include "fakes/fake_store.h"
-#include "fakes/recording_servo.h"
+#include "fakes/app_rig.h"
 #include "math/prng.h"
 #include "random_commands.h"
 #include "robots/all_robots.h"
 
 namespace {
 
-struct Lines {
-  std::vector<std::string> sent;
-  void send_line(uint8_t, const char* line) { sent.push_back(line); }
-};
-
-using App = strider::RobotApp<float, strider_test::RecordingServo, strider_test::FakeStore>;
-
-struct Robot {
-  strider_test::RecordingServo out;
-  strider_test::FakeStore store;
-  Lines lines;
-  std::unique_ptr<App> app;
-  uint32_t now_us = 1000;
-  std::vector<uint16_t> frames;  // every servo write (channel << 16 would not fit: pairs)
-  const strider::ImuSample<float>* imu = nullptr;  // fed every tick when set
-  uint16_t battery_code = 0;                       // fed every tick when non-zero
-
-  explicit Robot(const strider::RobotModel& m) : app(new App(m, out, store)) {
-    EXPECT_TRUE(app->begin(now_us, lines));
-  }
-  void run_ms(uint32_t ms) {
-    for (uint32_t t = 0; t < ms; t += 20) {
-      now_us += strider::kTickPeriodUs;
-      if (imu != nullptr) app->imu(imu, lines);
-      if (battery_code != 0) app->battery(battery_code, lines);
-      app->tick(now_us, lines);
-      for (const auto& w : out.writes) {
-        frames.push_back(w.channel);
-        frames.push_back(w.ticks);
-      }
-      for (uint8_t ch : out.relaxed) frames.push_back(uint16_t(0xF000u + ch));
-      out.writes.clear();
-      out.relaxed.clear();
-    }
-  }
-  void bytes(const std::string& s) {
-    for (unsigned char b : s) app->on_byte(1, b, now_us, lines);
-  }
-  //! The reply to `line` (info notices skipped), "(no reply)" if none.
-  std::string reply(const std::string& line) {
-    const size_t before = lines.sent.size();
-    bytes(line + "\r\n");
-    for (size_t i = before; i < lines.sent.size(); ++i)
-      if (lines.sent[i].rfind("info", 0) != 0) return lines.sent[i];
-    return "(no reply)";
-  }
+struct Robot : strider_test::AppRig {
+  explicit Robot(const strider::RobotModel& m) : AppRig(m) { EXPECT_TRUE(began); }
   //! What a user can ask about the robot's state, without changing it.
   std::string state() {
     return reply("status") + "\n" + reply("get") + "\n" + reply("cal show") + "\n" + reply("help");
@@ -154,7 +107,7 @@ std::vector<Case> cases(const strider::RobotModel& m, const std::string& help) {
       {"control byte", 7, nothing, line("walk \x01 10")},
       {"incomplete line", 8, nothing, [](Robot& r) { r.bytes("walk 30"); }},  // answered at the idle timeout
       {"bad checksum", 9, nothing, line("$speed 40*0154")},
-      {"bytes lost", 10, nothing, [](Robot& r) { r.bytes("wal"); r.app->on_bytes_lost(1, r.now_us, r.lines); r.bytes("k 30\r\n"); }},
+      {"bytes lost", 10, nothing, [](Robot& r) { r.bytes("wal"); r.app.on_bytes_lost(1, r.now_us, r.lines); r.bytes("k 30\r\n"); }},
       {"plain deadman off", 11, nothing, line("deadman off")},
       {"cal step outside", 20, nothing, line("cal trim 1 2")},
       {"cal save outside", 20, nothing, line("cal save")},
@@ -169,7 +122,7 @@ std::vector<Case> cases(const strider::RobotModel& m, const std::string& help) {
          strider::ServoBoardReport rep;
          rep.faulted = strider::board_bit(0);
          rep.errors = 1;
-         r.app->servo_boards(rep, r.now_us, r.lines);
+         r.app.servo_boards(rep, r.now_us, r.lines);
          r.run_ms(500);
        },
        line("walk 80")},
@@ -183,7 +136,7 @@ std::vector<Case> cases(const strider::RobotModel& m, const std::string& help) {
        line("walk 80")},
       {"fallen", 33,
        [](Robot& r) {
-         r.app->set_imu_present(true);
+         r.app.set_imu_present(true);
          r.imu = &kTipped;
          r.run_ms(2000);
        },

@@ -34,6 +34,13 @@ bool log_has(const strider_sim::RunResult& r, const std::string& text) {
   return false;
 }
 
+// When the robot first said `text` after after_s [s]; -1: never.
+double first_said(const strider_sim::RunResult& r, const std::string& text, double after_s = -1.0) {
+  for (const auto& l : r.log)
+    if (l.t_s > after_s && l.text.find(text) != std::string::npos) return l.t_s;
+  return -1.0;
+}
+
 TEST(SimFirmware, Sprawl8FirmwareWalksLikeTheLibrary) {
   const strider_sim::RunResult fw = run("sprawl8_forward", STRIDER_SIM_FIRMWARE_ELF);
   ASSERT_TRUE(fw.ok);
@@ -67,11 +74,8 @@ TEST(SimFirmware, Sprawl8FirmwareSeesTheWallThroughTheRayCast) {
 TEST(SimFirmware, Sprawl8FirmwareClearsTheWallByItsHalfWidth) {
   const strider_sim::RunResult fw = run("sprawl8_obstacle", STRIDER_SIM_FIRMWARE_ELF);
   ASSERT_TRUE(fw.ok);
-  double clearing_s = -1, forward_s = -1;
-  for (const auto& l : fw.log) {
-    if (clearing_s < 0 && l.text.find("info avoid clearing") != std::string::npos) clearing_s = l.t_s;
-    if (clearing_s >= 0 && forward_s < 0 && l.text.find("info avoid forward") != std::string::npos) forward_s = l.t_s;
-  }
+  const double clearing_s = first_said(fw, "info avoid clearing");
+  const double forward_s = first_said(fw, "info avoid forward", clearing_s);
   ASSERT_GE(clearing_s, 0.0) << "never cleared the wall";
   ASSERT_GE(forward_s, 0.0) << "never walked forward again";
   std::printf("[ metrics  ] firmware clearing lasted %.2f s\n", forward_s - clearing_s);
@@ -89,11 +93,8 @@ TEST(SimFirmware, Sprawl8FirmwareClearsTheWallByItsHalfWidth) {
 TEST(SimFirmware, DemoWalksIntoTheWallAndRoundIt) {
   const strider_sim::RunResult fw = run("sprawl8_demo", STRIDER_SIM_FIRMWARE_ELF);
   ASSERT_TRUE(fw.ok);
-  double sidestep_s = -1, forward_s = -1;
-  for (const auto& l : fw.log) {
-    if (sidestep_s < 0 && l.text.find("info avoid sidestep") != std::string::npos) sidestep_s = l.t_s;
-    if (sidestep_s >= 0 && forward_s < 0 && l.text.find("info avoid forward") != std::string::npos) forward_s = l.t_s;
-  }
+  const double sidestep_s = first_said(fw, "info avoid sidestep");
+  const double forward_s = first_said(fw, "info avoid forward", sidestep_s);
   EXPECT_GT(sidestep_s, 10.0) << "the sonar never stopped it: the wall is not in its way";  // after the turn
   EXPECT_GT(forward_s, sidestep_s) << "never walked forward again";
   EXPECT_EQ(fw.metrics.replies_err, 0);
