@@ -9,6 +9,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import unittest
 
@@ -293,6 +294,22 @@ class LinkOnPtyTest(unittest.TestCase):
         r = self.link.command("$deadman off*cb77")
         self.assertEqual(self.robot.lines[-1], "deadman off")
         self.assertEqual(self.robot.checked, [True, True])
+
+    def test_wait_standing(self):
+        # A robot that stands (or an older firmware without state=): at once.
+        self.assertTrue(self.link.wait_standing(2.0))
+        # One still rising, then standing.
+        self.robot.status_line = lambda: "ok status mode=standing speed=50 state=standing_up servos=on pca9685=ok"
+        threading.Timer(0.6, lambda: setattr(self.robot, "status_line",
+                                             lambda: "ok status mode=standing state=standing servos=on")).start()
+        t0 = time.monotonic()
+        self.assertTrue(self.link.wait_standing(5.0, every=0.1))
+        self.assertGreater(time.monotonic() - t0, 0.5)
+        # One that does not answer: not taken for standing.
+        self.robot.withhold = {"status"}
+        t0 = time.monotonic()
+        self.assertFalse(self.link.wait_standing(1.0))
+        self.assertLess(time.monotonic() - t0, 3.0)
 
     def test_rc_letter_line_goes_plain(self):
         r = self.link.command("F")
