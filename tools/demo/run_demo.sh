@@ -21,7 +21,7 @@ done
 
 mkdir -p "$OUT"
 echo "== sprawl8 firmware on the virtual Mega, in the Bullet world: $(basename "$SCENARIO")"
-"$SIM" "$SCENARIO" --out "$OUT" --firmware "$ELF"
+"$SIM" "$SCENARIO" --out "$OUT" --firmware "$ELF" --quiet   # the summary is at the end
 
 echo
 echo "== what the robot said over Bluetooth"
