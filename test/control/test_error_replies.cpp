@@ -3,8 +3,8 @@
 // reason as docs/protocol.md's error table lists them, and nothing changed.
 // "Nothing changed" is measured against a twin: two RobotApps with the same
 // history, walking; one gets the erroneous input, the other none; both then
-// run 2 s and must write the same servo frames, and answer `status`, `get`
-// and `cal show` alike.
+// run 2 s and must write the same servo frames, and answer `status`, `get`,
+// `cal show` and `help` alike.
 #include <gtest/gtest.h>
 
 #include <cmath>
