@@ -10,6 +10,7 @@
 // a walker that is either the old or the new one, never a mix.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -124,6 +125,68 @@ TYPED_TEST(GaitTunerTest, RefusedValuesNameTheRangeAndChangeNothing) {
   }
 }
 
+// What `get` shows is what the robot walks, and each value it shows is one
+// `set` takes back, in every gait of every model: a gait whose share down
+// leaves the servos too little swing time at the model's cycle (sprawl8's
+// walk, hexapod18's wave) shows the longer cycle it steps at. Setting the
+// values back changes nothing: no tune, the same servo pulses.
+TYPED_TEST(GaitTunerTest, EveryGaitsOwnValuesAreOnesSetTakes) {
+  using S = TypeParam;
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    std::string gaits = strider::gait_names(m->leg_count);
+    for (size_t from = 0; from < gaits.size();) {
+      const size_t end = std::min(gaits.find(' ', from), gaits.size());
+      const std::string gait = gaits.substr(from, end - from);
+      from = end + 1;
+      SCOPED_TRACE(std::string(m->name) + " " + gait);
+      strider_test::FakeStore store;
+      Robot<S> r(*m, store);
+      EXPECT_EQ(r.say("gait " + gait), "ok gait " + gait);
+      const std::string get = r.say("get");
+      const strider::VelocityLimits<S>& lim = r.engine().config().limits;
+      const double cycle = std::stod(r.field(get, "cycle")), duty = std::stod(r.field(get, "duty"));
+      // The servos' swing fits the cycle shown: (1 - duty) cycle >= lift.
+      EXPECT_GE((1.0 - duty) * cycle * 1000.0, strider::to_double(lim.lift_ms) - 0.5) << get;
+      const strider::GaitConfig<S> before = r.engine().config();
+      for (const char* key : {"duty", "cycle", "step_height", "step_length", "swing"})
+        EXPECT_EQ(r.say(std::string("set ") + key + " " + r.field(get, key)),
+                  std::string("ok set ") + key + " " + r.field(get, key));
+      EXPECT_EQ(r.say("get"), get);
+      EXPECT_TRUE(r.engine().config().limits.min_hz == before.limits.min_hz);
+      EXPECT_TRUE(r.engine().config().step_height_mm == before.step_height_mm);
+      EXPECT_TRUE(r.engine().config().limits.preferred_stride_mm == before.limits.preferred_stride_mm);
+    }
+  }
+}
+
+// The cycle's range depends on the duty and the duty's on the cycle: a
+// longer share down needs a longer cycle first (err 25 names the duties the
+// cycle set allows), and a saved pair that is only allowed together loads.
+TYPED_TEST(GaitTunerTest, DutyAndCycleAreCheckedTogether) {
+  using S = TypeParam;
+  const strider::RobotModel& m = strider::kSprawl8;  // crawl, cycle 0.80, duty 0.67
+  strider_test::FakeStore store;
+  std::string saved;
+  {
+    Robot<S> r(m, store);
+    const std::string refused = r.say("set duty 0.90");
+    EXPECT_EQ(refused.rfind("err 25 duty out of range: 0.51..0.7", 0), 0u) << refused;
+    const std::string cycle = r.say("set cycle 0.60");  // too short for duty 0.90 later
+    EXPECT_EQ(cycle, "ok set cycle 0.60");
+    EXPECT_EQ(r.say("set duty 0.90").rfind("err 25 duty out of range: ", 0), 0u);
+    EXPECT_EQ(r.say("set cycle 2.50"), "ok set cycle 2.50");
+    EXPECT_EQ(r.say("set duty 0.90"), "ok set duty 0.90");
+    // Now the cycle cannot go back below what duty 0.90 leaves the swing.
+    const std::string short_cycle = r.say("set cycle 0.80");
+    EXPECT_EQ(short_cycle.rfind("err 25 cycle out of range: 1.", 0), 0u) << short_cycle;
+    EXPECT_EQ(r.say("save"), "ok saved");
+    saved = r.say("get");
+  }
+  Robot<S> again(m, store);
+  EXPECT_EQ(again.say("get"), saved);
+  EXPECT_EQ(again.field(again.say("status"), "tune"), "saved");
+}
+
 // Each model walks its default gait; a lower step height reaches the swings
 // that lift after it, not the ones in the air; a shorter cycle raises the
 // step rate at low speed; a new duty is the table walked.
@@ -204,7 +267,7 @@ TYPED_TEST(GaitTunerTest, ChangesReachTheWalkAtTheNextStride) {
     std::printf("%-9s step height %.2f -> %.2f mm, cycle %.2f -> %.2f s: %.3f -> %.3f Hz at 10 mm/s\n", m->name,
                 double(p.step_height_mm), low, double(p.cycle_s), shorter, hz_before, hz);
 
-    const strider::TuneRange duties = strider::duty_range(r.engine().gait());
+    const strider::TuneRange duties = r.app->tune_bounds().duty;  // the gait's, at the cycle set
     const int32_t duty = (duties.lo + duties.hi) / 2;
     EXPECT_EQ(r.say("set duty " + hundredths(duty / 100.0)), "ok set duty " + hundredths(duty / 100.0));
     EXPECT_NEAR(double(r.engine().gait().duty), duty / 100.0, 1e-6);

@@ -21,6 +21,39 @@ MISSING = [m for m in ("optuna", "ray", "tqdm") if importlib.util.find_spec(m) i
 TRIALS = 12
 
 
+class TuneSpace(unittest.TestCase):
+    """The parameter sets the tuner makes are ones the robot takes: the cycle
+    against the duty (gait_tuner.h), and the lines in an order it accepts."""
+
+    @classmethod
+    def setUpClass(cls):
+        sys.path.insert(0, str(TUNE.parent))
+        import space
+        cls.space = space
+
+    def test_shortest_cycle_as_the_firmware_rounds(self):
+        # sprawl8: lift 186.4 ms (gait.bounds); crawl 0.67 -> 0.57 s (err 25's range), 0.90 -> 1.87 s.
+        self.assertAlmostEqual(self.space.shortest_cycle(0.67, 186.4), 0.57)
+        self.assertAlmostEqual(self.space.shortest_cycle(0.90, 186.4), 1.87)
+        self.assertAlmostEqual(self.space.shortest_cycle(0.50, 0.0), 0.2)
+
+    def test_a_cycle_too_short_for_its_duty_is_raised_onto_the_grid(self):
+        defaults = {"step_height_mm": 20.0, "step_length_mm": 40.0, "cycle_s": 0.8, "duty": 0.67,
+                    "swing": "ellipse", "body_height_mm": 72.0}
+        p = self.space.complete({"cycle_s": 0.6, "duty": 0.9}, defaults, 186.4)
+        self.assertAlmostEqual(p["cycle_s"], 1.9)  # 1.87 up to the 0.05 s grid
+        p = self.space.complete({"cycle_s": 2.5, "duty": 0.9}, defaults, 186.4)
+        self.assertAlmostEqual(p["cycle_s"], 2.5)
+        p = self.space.complete({"duty": 0.9}, defaults, 186.4)  # cycle not searched: left alone
+        self.assertAlmostEqual(p["cycle_s"], 0.8)
+
+    def test_a_longer_duty_goes_after_its_cycle_a_shorter_before(self):
+        up = self.space.command_lines("crawl", {"cycle_s": 2.5, "duty": 0.9}, from_duty=0.67)
+        self.assertEqual(up, ["gait crawl", "set cycle 2.5", "set duty 0.9"])
+        down = self.space.command_lines("crawl", {"cycle_s": 0.6, "duty": 0.55}, from_duty=0.67)
+        self.assertEqual(down, ["gait crawl", "set duty 0.55", "set cycle 0.6"])
+
+
 @unittest.skipIf(not os.access(SIM, os.X_OK), f"strider-sim is not built ({SIM or '$STRIDER_SIM unset'})")
 @unittest.skipIf(bool(MISSING), f"cannot import {', '.join(MISSING)} (tools/dev installs them into out/venv)")
 class TuneGait(unittest.TestCase):
@@ -81,7 +114,11 @@ class TuneGait(unittest.TestCase):
             lines = [s for s in script if not s.startswith("#")]
             self.assertEqual(lines[0], "gait crawl")
             self.assertEqual(lines[-1], "save")
-            self.assertEqual([s.split()[1] for s in lines[1:6]], ["step_height", "step_length", "cycle", "duty", "swing"])
+            # A shorter duty than the gait's own goes before its cycle (TuneSpace).
+            order = ["step_height", "step_length", "cycle", "duty", "swing"]
+            if best["best"]["params"]["duty"] < defaults["duty"]:
+                order = ["step_height", "step_length", "duty", "cycle", "swing"]
+            self.assertEqual([s.split()[1] for s in lines[1:6]], order)
             self.assertTrue(lines[6].startswith("height "))
             row = (out / "gait_row.txt").read_text()
             self.assertIn('{"sprawl8", "crawl", SwingShape::k', row)

@@ -48,6 +48,7 @@ struct GaitInfo {
   bool has_bounds = false;
   double step_height_range[2] = {0, 0}, step_length_range[2] = {0, 0}, cycle_range[2] = {0, 0};
   double duty_range[2] = {0, 0};
+  double swing_lift_ms = 0;  // the servos' lift alone: a cycle c takes duties up to 1 - lift / c
   std::vector<std::string> swings;
 };
 

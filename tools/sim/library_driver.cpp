@@ -113,6 +113,14 @@ class LibraryDriver : public Driver, private HostParts {
     const strider::TuneRange* r[4] = {&b.step_height, &b.step_length, &b.cycle, &b.duty};
     double* out[4] = {info->step_height_range, info->step_length_range, info->cycle_range, info->duty_range};
     for (int k = 0; k < 4; ++k) out[k][0] = r[k]->lo / 100.0, out[k][1] = r[k]->hi / 100.0;
+    // The duty's range at any cycle (the robot's is the part the cycle set
+    // leaves the servos: 1 - lift / cycle; the tuner keeps to it).
+    strider::GaitTable own;
+    if (strider::load_gait(motion.walker().leg_count(), motion.gait().name, &own)) {
+      const strider::TuneRange d = strider::duty_range(own);
+      info->duty_range[0] = d.lo / 100.0, info->duty_range[1] = d.hi / 100.0;
+    }
+    info->swing_lift_ms = double(motion.walker().engine().config().limits.lift_ms);
     for (uint8_t k = 0; k < strider::kSwingShapeCount; ++k)
       if ((b.shapes >> k) & 1) info->swings.push_back(strider::to_string(strider::SwingShape(k)));
     info->transition_s = double(params_.transition_s);

@@ -386,6 +386,7 @@ std::string metrics_json(const Metrics& m) {
       range("step_length_mm", g.step_length_range);
       range("cycle_s", g.cycle_range);
       range("duty", g.duty_range);
+      o << ", \"swing_lift_ms\": " << num(g.swing_lift_ms, 3);
       o << "}";
     }
     o << "}\n";

@@ -118,18 +118,15 @@ class Objective:
         return a > b if self.direction == "maximize" else a < b
 
 
-def run_lines(gait, params, defaults, spec, t0=0.0, set_lines=False):
+def run_lines(gait, params, defaults, spec, t0=0.0):
     """(time, line) pairs of one run: deadman off, the gait, the parameters
-    (firmware mode: as `set` lines; library mode the simulator's options set
-    them, and only `height` is sent), the walk and, for a distance, the stop."""
+    as the `set` and `height` lines a phone sends (in the order the robot
+    takes them), the walk and, for a distance, the stop."""
     sends = [(t0 + 0.5, rollout.DEADMAN_OFF), (t0 + 1.0, f"gait {gait}")]
     t = t0 + 1.2
-    if set_lines:
-        for line in space.command_lines(gait, params)[1:]:
-            sends.append((t, line))
-            t += 0.2
-    elif abs(params["body_height_mm"] - defaults["body_height_mm"]) > 1e-6:
-        sends.append((t, f"height {params['body_height_mm']:g}"))
+    for line in space.command_lines(gait, params, defaults["duty"])[1:]:
+        sends.append((t, line))
+        t += 0.2
     walk_at = max(t0 + WALK_AT_S, t + 0.2)
     sends.append((walk_at, f"walk {spec['speed']:g}"))
     if spec["kind"] == "distance":
@@ -192,12 +189,11 @@ def walk_run(sim, robot, gait, params, defaults, spec, firmware=None, keep=None)
     work = pathlib.Path(keep) if keep else pathlib.Path(tempfile.mkdtemp(prefix="strider-tune-"))
     try:
         t0 = FIRMWARE_BOOT_S if firmware else 0.0
-        sends, walk_at, duration = run_lines(gait, params, defaults, spec, t0, set_lines=bool(firmware))
-        if firmware:
-            args = ["--firmware", str(firmware)]
-        else:
-            changed = {k: v for k, v in params.items() if k != "body_height_mm" and v != defaults.get(k)}
-            args = rollout.gait_args(changed)
+        # Both modes take the parameters as the robot does, as `set` lines: a
+        # tune is what a phone can send (the walker keeps the velocity limits
+        # it found at start-up; options that configure it anew would not).
+        sends, walk_at, duration = run_lines(gait, params, defaults, spec, t0)
+        args = ["--firmware", str(firmware)] if firmware else []
         run = rollout.run_scenario(sim, rollout.scenario(robot, duration, sends), work, args, trace=True)
         out = {"spec": spec, "sends": sends, "failed": False, "why": None, "log": run["log"]}
         if run["error"]:

@@ -56,8 +56,9 @@ def distributions(search_space):
 
 
 class Search:
-    def __init__(self, sim, robot, gait, objective, defaults, search_space, sampler="tpe", seed=1):
+    def __init__(self, sim, robot, gait, objective, defaults, search_space, sampler="tpe", seed=1, lift_ms=0.0):
         self.sim, self.robot, self.gait, self.objective = str(sim), robot, gait, objective
+        self.lift_ms = lift_ms  # the servos' lift: the shortest cycle of a duty (space.complete)
         self.defaults, self.space = defaults, search_space
         self.dists = distributions(search_space)
         optuna.logging.set_verbosity(optuna.logging.WARNING)
@@ -106,7 +107,7 @@ class Search:
                 if not queue:
                     trial = self.study.ask(self.dists)
                     name = f"{trial.number}"
-                    params = space.complete(trial.params, self.defaults)
+                    params = space.complete(trial.params, self.defaults, self.lift_ms)
                     jobs[name] = {"name": name, "trial": trial, "params": params,
                                   "results": [None] * len(specs), "left": len(specs)}
                     queue += [(name, i) for i in range(len(specs))]

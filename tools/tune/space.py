@@ -81,13 +81,29 @@ def snapped(defaults, space):
     return out
 
 
-def complete(params, defaults):
+def shortest_cycle(duty, lift_ms):
+    """The shortest cycle [s] the robot takes with `duty` (gait_tuner.h): the
+    servos' lift `lift_ms` must fit the swing, (1 - duty) x cycle, rounded as
+    the firmware rounds (to 0.01 s, half up, then one more), at least 0.2 s."""
+    if lift_ms <= 0 or duty >= 1:
+        return 0.2
+    return max(20, math.floor(lift_ms / (10 * (1 - duty)) + 0.5) + 1) / 100
+
+
+def complete(params, defaults, lift_ms=0.0):
     """A full parameter set: params (tidied of the grid's float noise) with the
-    defaults for what was not searched."""
+    defaults for what was not searched; a searched cycle too short for the
+    duty is raised onto the grid above the shortest the robot takes (it would
+    refuse it, and walks no faster than its servos step anyway)."""
     out = {}
     for key in PARAMS:
         v = params.get(key, defaults[key])
         out[key] = round(v, 6) if isinstance(v, float) and key in params else v
+    if "cycle_s" in params:
+        step = PARAMS["cycle_s"][2]
+        least = shortest_cycle(out["duty"], lift_ms)
+        if out["cycle_s"] < least - 1e-9:
+            out["cycle_s"] = round(math.ceil(least / step - 1e-9) * step, 6)
     return out
 
 
@@ -97,21 +113,28 @@ def fmt(value):
     return text if text not in ("", "-0") else "0"
 
 
-def command_lines(gait, params):
-    """The protocol lines that set `params` on a robot walking `gait` (without `save`)."""
+def command_lines(gait, params, from_duty=None):
+    """The protocol lines that set `params` on a robot walking `gait` (without
+    `save`). The robot checks the cycle against the duty and the duty against
+    the cycle: a longer share down goes after its cycle, a shorter one
+    (than `from_duty`, the gait's own) before it, so that each line is taken."""
+    keys = list(PARAMS)
+    if from_duty is not None and "duty" in params and params["duty"] < from_duty:
+        keys.remove("duty")
+        keys.insert(keys.index("cycle_s"), "duty")
     lines = [f"gait {gait}"]
-    for key, (line, _, _, _) in PARAMS.items():
+    for key in keys:
         if key in params:
             v = params[key]
-            lines.append(f"{line} {v if isinstance(v, str) else fmt(v)}")
+            lines.append(f"{PARAMS[key][0]} {v if isinstance(v, str) else fmt(v)}")
     return lines
 
 
-def command_script(robot, gait, objective, params):
+def command_script(robot, gait, objective, params, from_duty=None):
     """The command script file: comments, the lines, `save`."""
     head = [f"# {robot} {gait}, tuned for {objective} in strider-sim (tools/tune/tune_gait.py).",
             "# Send line by line (robotctl send, or a terminal app, CR+LF); `save` keeps them."]
-    return "\n".join(head + command_lines(gait, params) + ["save"]) + "\n"
+    return "\n".join(head + command_lines(gait, params, from_duty) + ["save"]) + "\n"
 
 
 def _f(v):

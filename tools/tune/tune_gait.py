@@ -163,7 +163,8 @@ def main(argv=None):
           f"started in {ray_s:.1f} s), {a.sampler.upper()} sampler")
     print("searching: " + ", ".join(f"{k} {r[0]:g}..{r[1]:g}" if not isinstance(r[0], str) else f"{k} {'/'.join(r)}"
                                     for k, r in search_space.items()))
-    s = search.Search(a.sim, a.model, gait, objective, defaults, search_space, a.sampler, a.seed)
+    s = search.Search(a.sim, a.model, gait, objective, defaults, search_space, a.sampler, a.seed,
+                      info.get("bounds", {}).get("swing_lift_ms", 0.0))
     try:
         best = s.run(a.trials, workers, progress=not a.no_progress)
         rate = s.rollouts / s.rollout_s if s.rollout_s > 0 else 0.0
@@ -194,7 +195,7 @@ def main(argv=None):
         report.write_csv(out / "trials.csv", objective, s.records, base)
         title = f"{a.model} {gait}, {a.objective}: {len(s.records)} trials, {a.sampler.upper()}"
         report.plot(out / "search.png", s.study, objective, s.records, base, title)
-        (out / "commands.txt").write_text(space.command_script(a.model, gait, a.objective, best["params"]))
+        (out / "commands.txt").write_text(space.command_script(a.model, gait, a.objective, best["params"], defaults["duty"]))
         (out / "gait_row.txt").write_text(space.gait_rows(a.model, gait, a.objective, best["params"], info))
         summary = {
             "model": a.model, "gait": gait, "objective": a.objective, "weights": a.weights,

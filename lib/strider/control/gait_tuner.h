@@ -41,8 +41,7 @@ class GaitTuner {
   void configure(WalkerMotion<S>& motion) {
     const GaitConfig<S>& c = motion.walker().engine().config();
     own_ = Own{c.step_height_mm, c.limits.preferred_stride_mm, c.limits.min_hz, c.shape};
-    live_ = own_tuning();
-    live_.duty_pct = duty_pct_of(motion.gait());
+    live_ = gait_defaults(motion, duty_pct_of(motion.gait()));
     origin_ = TuneOrigin::kDefault;
   }
 
@@ -51,14 +50,19 @@ class GaitTuner {
   //! record of another build) is left unused.
   template <typename Store>
   void use_gait(WalkerMotion<S>& motion, const Store& store) {
-    live_ = own_tuning();
-    live_.duty_pct = own_duty_pct(motion);
+    live_ = gait_defaults(motion, own_duty_pct(motion));
     origin_ = TuneOrigin::kDefault;
     GaitTuning saved;
-    if (read_gait_tuning(store, gait_index(motion.walker().leg_count(), motion.gait().name), &saved) &&
-        tuning_allowed(bounds(motion), saved)) {
+    if (read_gait_tuning(store, gait_index(motion.walker().leg_count(), motion.gait().name), &saved)) {
+      // The cycle's range depends on the duty and the duty's on the cycle:
+      // the saved set is checked against the ranges it makes itself.
+      const GaitTuning own = live_;
       live_ = saved;
-      origin_ = TuneOrigin::kSaved;
+      if (tuning_allowed(bounds(motion), saved)) {
+        origin_ = TuneOrigin::kSaved;
+      } else {
+        live_ = own;
+      }
     }
     apply(motion);
     if (live_.height_dmm > 0) motion.set_body_height(live_.height_dmm);
@@ -107,15 +111,21 @@ class GaitTuner {
         const int32_t hi = hundredths(longest);
         return TuneRange{kMinStepLengthCmm, hi > mine.step_length_cmm ? hi : int32_t(mine.step_length_cmm)};
       }
-      case TuneParam::kCycle: {
-        // 1 / the servos' fastest step rate at the duty set, rounded up.
-        const int32_t lo = hundredths(S(1) / lim.servo_hz(S(0), from_hundredths<S>(live_.duty_pct))) + 1;
-        return TuneRange{lo > kMinCycleCs ? lo : kMinCycleCs, kMaxCycleCs};
-      }
+      case TuneParam::kCycle: return TuneRange{shortest_cycle_cs(lim, live_.duty_pct), kMaxCycleCs};
       case TuneParam::kDuty: {
         GaitTable own;
         load_gait(motion.walker().leg_count(), motion.gait().name, &own);
-        return duty_range(own);
+        TuneRange r = duty_range(own);
+        // A longer share down leaves the swing less time: at most the duty
+        // whose swing the servos make in the cycle set (1 - lift / cycle),
+        // so that what `get` shows is what the robot walks. The closed
+        // form within a step of it, then the cycle's own test.
+        const int32_t most = 100 - (hundredths(lim.lift_ms / S(int32_t(live_.cycle_cs))) + 9) / 10;
+        const int32_t gait_most = r.hi;
+        if (most < r.hi) r.hi = most;
+        while (r.hi > r.lo && shortest_cycle_cs(lim, r.hi) > live_.cycle_cs) --r.hi;
+        while (r.hi < gait_most && shortest_cycle_cs(lim, r.hi + 1) <= live_.cycle_cs) ++r.hi;
+        return r;
       }
       case TuneParam::kSwing: break;
     }
@@ -138,6 +148,14 @@ class GaitTuner {
 
   const GaitTuning& live() const { return live_; }
   TuneOrigin origin() const { return origin_; }
+  //! The shortest cycle [0.01 s] the servos step at with a duty of
+  //! duty_pct [0.01]: 1 / their fastest step rate, rounded up.
+  static int32_t shortest_cycle_cs(const VelocityLimits<S>& lim, int32_t duty_pct) {
+    using namespace gait_tuner_detail;
+    const int32_t lo = hundredths(S(1) / lim.servo_hz(S(0), from_hundredths<S>(duty_pct))) + 1;
+    return lo > kMinCycleCs ? lo : kMinCycleCs;
+  }
+
   //! The model's own parameters (duty and height aside: the gait's own, the
   //! standing height).
   GaitTuning own_tuning() const {
@@ -154,6 +172,18 @@ class GaitTuner {
     SwingShape shape;
   };
   static constexpr char kHeightName[] STRIDER_PROGMEM = "height";
+
+  //! The gait's parameters by default: the model's, at the gait's duty
+  //! duty_pct, with the cycle the robot walks: no shorter than the servos
+  //! step at with that duty (a gait with a long share down, e.g. a wave,
+  //! steps slower than the model's cycle).
+  GaitTuning gait_defaults(const WalkerMotion<S>& motion, uint8_t duty_pct) const {
+    GaitTuning t = own_tuning();
+    t.duty_pct = duty_pct;
+    const int32_t shortest = shortest_cycle_cs(motion.walker().engine().config().limits, duty_pct);
+    if (t.cycle_cs < shortest) t.cycle_cs = uint16_t(shortest);
+    return t;
+  }
 
   static uint8_t own_duty_pct(const WalkerMotion<S>& motion) {
     GaitTable own;
@@ -179,7 +209,11 @@ class GaitTuner {
                                                                    : from_hundredths<S>(live_.step_height_cmm);
     const S stride = live_.step_length_cmm == mine.step_length_cmm ? own_.stride_mm
                                                                    : from_hundredths<S>(live_.step_length_cmm);
-    const S hz = live_.cycle_cs == mine.cycle_cs ? own_.min_hz : S(100) / S(int32_t(live_.cycle_cs));
+    // The model's cycle, or the servos' shortest one at this duty when that
+    // is longer (what the engine steps at with the model's cycle too).
+    const bool own_cycle = live_.cycle_cs == mine.cycle_cs ||
+                           (live_.cycle_cs > mine.cycle_cs && live_.cycle_cs == shortest_cycle_cs(c.limits, live_.duty_pct));
+    const S hz = own_cycle ? own_.min_hz : S(100) / S(int32_t(live_.cycle_cs));
     if (!(height == c.step_height_mm) || SwingShape(live_.shape) != c.shape) e.set_swing(height, SwingShape(live_.shape));
     if (!(stride == c.limits.preferred_stride_mm) || !(hz == c.limits.min_hz)) e.set_step(stride, hz);
     if (live_.duty_pct != duty_pct_of(motion.gait())) motion.set_duty(live_.duty_pct);

@@ -8,7 +8,7 @@ import json
 import os
 import sys
 import time
-from typing import List, Optional
+from typing import Dict, List, Optional
 
 from . import __version__
 from .link import RESETTING_PORT, Link, LinkError, ReplyTimeout, open_port
@@ -218,15 +218,16 @@ def cmd_status(s: Drive, a, out) -> int:
             s.link.poll(end - s.link.clock())
 
 
-def tune_lines(a) -> List[str]:
-    """The protocol lines of `robotctl tune`'s options, in the order the
-    robot needs them: the gait, then its parameters, then the height."""
-    lines = [f"gait {a.gait}"] if a.gait else []
-    for opt, name in (("step_height", "step_height"), ("step_length", "step_length"), ("cycle", "cycle"),
-                      ("duty", "duty")):
-        v = getattr(a, opt)
-        if v is not None:
-            lines.append(f"set {name} {v:.2f}")
+def tune_lines(a, duty_now: Optional[float] = None) -> List[str]:
+    """The `set` and `height` lines of `robotctl tune`'s options, in the
+    order the robot needs them: the parameters, then the height. The robot
+    checks the cycle against the duty and the duty against the cycle: a duty
+    shorter than `duty_now` (the one walked) goes before the cycle, a longer
+    one after it."""
+    names = ["step_height", "step_length", "cycle", "duty"]
+    if a.duty is not None and duty_now is not None and a.duty < duty_now:
+        names = ["step_height", "step_length", "duty", "cycle"]
+    lines = [f"set {name} {getattr(a, name):.2f}" for name in names if getattr(a, name) is not None]
     if a.swing:
         lines.append(f"set swing {a.swing}")
     if a.height is not None:
@@ -234,14 +235,33 @@ def tune_lines(a) -> List[str]:
     return lines
 
 
+def reply_fields(line: str) -> Dict[str, str]:
+    """`ok get gait=trot cycle=0.80 ...` -> {"gait": "trot", "cycle": "0.80", ...}."""
+    return dict(kv.split("=", 1) for kv in line.split()[2:] if "=" in kv)
+
+
 def cmd_tune(s: Drive, a, out) -> int:
     if s.booted and not s.link.wait_standing(15.0):
         print("robotctl: the robot did not stand up within 15 s; sending anyway", file=sys.stderr)
+
+    def send(line):  # the reply, or None after printing a refusal
+        r = s.link.command(line, a.timeout)
+        if not r.ok:
+            print(f"{line}: {r.line}", file=out)
+            return None
+        return r
+
     try:
-        for line in tune_lines(a) + (["save"] if a.save else []):
-            r = s.link.command(line, a.timeout)
-            if not r.ok:
-                print(f"{line}: {r.line}", file=out)
+        if a.gait and send(f"gait {a.gait}") is None:
+            return EXIT_ERR_REPLY
+        duty_now = None
+        if a.cycle is not None and a.duty is not None:  # their order depends on the duty walked now
+            now = send("get")
+            if now is None:
+                return EXIT_ERR_REPLY
+            duty_now = float(reply_fields(now.line).get("duty", "nan"))
+        for line in tune_lines(a, duty_now) + (["save"] if a.save else []):
+            if send(line) is None:
                 return EXIT_ERR_REPLY
         r = s.link.command("get", a.timeout)
     except ReplyTimeout as e:
@@ -250,7 +270,7 @@ def cmd_tune(s: Drive, a, out) -> int:
     if not r.ok:
         print(r.line, file=out)
         return EXIT_ERR_REPLY
-    fields = dict(kv.split("=", 1) for kv in r.line.split()[2:] if "=" in kv)
+    fields = reply_fields(r.line)
     if a.json:
         print(json.dumps(fields), file=out)
     else:
