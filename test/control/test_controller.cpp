@@ -95,7 +95,7 @@ TEST(Controller, ErrorsAndHelpNameTheValidValues) {
   EXPECT_EQ(replies[1], "ok stop");
   replies = r.send("cal trim 1 2\n");
   ASSERT_EQ(replies.size(), 1u);
-  EXPECT_EQ(replies[0], "err 20 cal start first");
+  EXPECT_EQ(replies[0], "err 20 cal start first: cal start, then cal trim osc pwm save abort");
 }
 
 TEST(Controller, RcButtonsScaleWithSpeedAndStaySilent) {
@@ -172,7 +172,7 @@ TEST(Controller, CalibrationSaveAbortAndReload) {
   Rig r;
   auto replies = r.send("cal trim 0 5\ncal start\nwalk 10\ncal trim 2 -3.5\ncal osc 26100000\ncal abort\n");
   ASSERT_EQ(replies.size(), 6u);
-  EXPECT_EQ(replies[0], "err 20 cal start first");
+  EXPECT_EQ(replies[0], "err 20 cal start first: cal start, then cal trim osc pwm save abort");
   EXPECT_EQ(replies[2], "err 21 calibrating: cal save or cal abort first");
   EXPECT_EQ(replies[3], "ok cal trim joint=2 deg=-3.5");
   EXPECT_EQ(r.sink.applied.trim_decideg[2], 0);  // abort restored the saved (default) values

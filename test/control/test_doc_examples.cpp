@@ -17,19 +17,22 @@
 // user may have any of them.
 // Each example runs on a robot of its own that has just stood up (a `cal`
 // step after `cal start`), as a user who reads one example tries it.
+// Beside the protocol lines: host-tool command lines name gaits their model
+// has and scenario files that exist, every scenario's commands are taken by
+// its robot, and links between the docs reach a file and heading.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "control/robot_app.h"
-#include "fakes/fake_store.h"
-#include "fakes/recording_servo.h"
+#include "fakes/app_rig.h"
 #include "robots/all_robots.h"
 
 namespace {
@@ -206,48 +209,29 @@ std::vector<Group> examples_of(const std::string& path, const std::string& file)
   return groups;
 }
 
-struct Lines {
-  std::vector<std::string> sent;
-  void send_line(uint8_t, const char* line) { sent.push_back(line); }
+// A robot that has stood up; each reply after 100 ms of ticks.
+struct Robot : strider_test::AppRig {
+  explicit Robot(const strider::RobotModel& m) : AppRig(m) {
+    EXPECT_TRUE(began);
+    run_ms(3000);
+  }
+  std::string reply(const std::string& line) { return AppRig::reply(line, 100); }
 };
 
-using App = strider::RobotApp<float, strider_test::RecordingServo, strider_test::FakeStore>;
-
-struct Robot {
-  strider_test::RecordingServo out;
-  strider_test::FakeStore store;
-  Lines lines;
-  App app;
-  uint32_t now_us = 1000;
-  explicit Robot(const strider::RobotModel& m) : app(m, out, store) {
-    EXPECT_TRUE(app.begin(now_us, lines));
-    run_ms(3000);  // standing
-  }
-  void run_ms(uint32_t ms) {
-    for (uint32_t t = 0; t < ms; t += 20) {
-      now_us += strider::kTickPeriodUs;
-      app.tick(now_us, lines);
-      out.writes.clear();
-      out.relaxed.clear();
-    }
-  }
-  std::string reply(const std::string& line) {
-    const size_t before = lines.sent.size();
-    for (unsigned char b : line + "\r\n") app.on_byte(1, b, now_us, lines);
-    run_ms(100);
-    for (size_t i = before; i < lines.sent.size(); ++i)
-      if (lines.sent[i].rfind("info", 0) != 0) return lines.sent[i];
-    return "(no reply)";
-  }
-};
-
-const char* const kDocs[] = {"README.md", "docs/protocol.md", "docs/robotctl.md", "docs/vbench.md",
-                             "docs/calibration.md", "docs/simulator.md", "docs/reliability.md",
-                             "docs/firmware.md", "docs/robots.md", "docs/gaits.md", "docs/wiring.md"};
+// README.md and every page in docs/: a new page is checked without being listed.
+std::vector<std::string> doc_files() {
+  std::vector<std::string> out{"README.md"};
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(STRIDER_SOURCE_DIR) + "/docs"))
+    if (entry.path().extension() == ".md") out.push_back("docs/" + entry.path().filename().string());
+  std::sort(out.begin() + 1, out.end());
+  return out;
+}
 
 TEST(DocExamples, WorkOnTheModelsTheyName) {
   int run = 0;
-  for (const char* file : kDocs) {
+  const std::vector<std::string> files = doc_files();
+  EXPECT_GT(files.size(), 15u);
+  for (const std::string& file : files) {
     for (const Group& g : examples_of(std::string(STRIDER_SOURCE_DIR) + "/" + file, file)) {
       for (const strider::RobotModel* m : strider::kAllRobots) {
         bool named = g.models.empty();
@@ -257,7 +241,9 @@ TEST(DocExamples, WorkOnTheModelsTheyName) {
           if ((e.hexapods_only && m->leg_count != 6) || (e.quadrupeds_only && m->leg_count != 4)) continue;
           Robot r(*m);
           const bool cal_step = e.line.rfind("cal ", 0) == 0 && e.line != "cal start" && e.line != "cal show";
-          if (cal_step) EXPECT_EQ(r.reply("cal start"), "ok cal start");
+          if (cal_step) {
+            EXPECT_EQ(r.reply("cal start"), "ok cal start");
+          }
           const std::string got = r.reply(e.line);
           ++run;
           const size_t dots = e.expect.find("...");
@@ -304,6 +290,209 @@ TEST(DocExamples, FindsSpansBlocksAndModels) {
   Robot r(strider::kSprawl8);
   EXPECT_EQ(r.reply("gait ripple"), groups[3].examples[0].expect);
   EXPECT_EQ(r.reply("height 120").rfind("err 24 height refused: ", 0), 0u);
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// The gaits `help` lists on model `name` ("" if there is no such model).
+std::string gaits_of(const std::string& name) {
+  for (const strider::RobotModel* m : strider::kAllRobots) {
+    if (name != m->name) continue;
+    Robot r(*m);
+    const std::string help = r.reply("help");
+    const size_t at = help.find("; gaits ");
+    return at == std::string::npos ? "" : help.substr(at + 8, help.find(';', at + 8) - at - 8);
+  }
+  return "";
+}
+
+bool has_word(const std::string& words, const std::string& w) {
+  std::istringstream in(words);
+  for (std::string x; in >> x;)
+    if (x == w) return true;
+  return false;
+}
+
+// Host-tool command lines in the docs (the strider CLI, sweep_gait.py,
+// tools/dev tune, strider-sim): a `--gait G` with `--robot R` or `--model R`
+// on the same line names a gait that model has, and a scenario file named
+// exists.
+TEST(DocExamples, ToolCommandLinesNameGaitsTheModelHas) {
+  int gait_lines = 0, scenario_paths = 0;
+  for (const std::string& file : doc_files()) {
+    std::istringstream in(read_file(std::string(STRIDER_SOURCE_DIR) + "/" + file));
+    int line_no = 0;
+    for (std::string l; std::getline(in, l);) {
+      ++line_no;
+      const std::vector<std::string> w = shell_words(l);
+      std::string model, gait;
+      for (size_t k = 0; k + 1 < w.size(); ++k) {
+        if (w[k] == "--robot" || w[k] == "--model") model = w[k + 1];
+        if (w[k] == "--gait") gait = w[k + 1];
+      }
+      if (!model.empty() && !gait.empty() && model != "R" && model != "M" && gait != "G") {
+        const std::string gaits = gaits_of(model);
+        EXPECT_FALSE(gaits.empty()) << file << ":" << line_no << ": no model " << model;
+        EXPECT_TRUE(has_word(gaits, gait)) << file << ":" << line_no << ": " << model << " has no gait " << gait
+                                           << " (it has " << gaits << ")";
+        ++gait_lines;
+      }
+      for (size_t at = l.find("tools/sim/scenarios/"); at != std::string::npos;
+           at = l.find("tools/sim/scenarios/", at + 1)) {
+        size_t end = at;
+        while (end < l.size() && (std::isalnum(uint8_t(l[end])) || std::strchr("/._-", l[end]) != nullptr)) ++end;
+        const std::string path = l.substr(at, end - at);
+        if (path.size() < 9 || path.compare(path.size() - 9, 9, ".scenario") != 0) continue;
+        EXPECT_TRUE(std::filesystem::exists(std::string(STRIDER_SOURCE_DIR) + "/" + path))
+            << file << ":" << line_no << ": " << path;
+        ++scenario_paths;
+      }
+    }
+  }
+  std::printf("%d tool lines with a model and gait, %d scenario paths\n", gait_lines, scenario_paths);
+  EXPECT_GT(gait_lines, 5);
+  EXPECT_GT(scenario_paths, 2);
+}
+
+// A scenario's TEXT as sent (strider-sim's escapes: \n \r \t \\ \s \xHH).
+std::string unescape(const std::string& t) {
+  std::string out;
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (t[i] != '\\' || i + 1 >= t.size()) {
+      out += t[i];
+      continue;
+    }
+    const char c = t[++i];
+    if (c == 'n') out += '\n';
+    else if (c == 'r') out += '\r';
+    else if (c == 't') out += '\t';
+    else if (c == 's') out += ' ';
+    else if (c == 'x' && i + 2 < t.size()) out += char(std::stoi(t.substr(i + 1, 2), nullptr, 16)), i += 2;
+    else out += c;
+  }
+  return out;
+}
+
+// Every scenario in tools/sim/scenarios (the examples the simulator's docs
+// and the demo run): what it sends, in time order, is taken by the robot it
+// names, on RobotApp: no `err` reply, and the robot is a known model.
+TEST(DocExamples, ScenarioCommandsWorkOnTheirRobot) {
+  int scenarios = 0, sends = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(STRIDER_SOURCE_DIR) + "/tools/sim/scenarios")) {
+    if (entry.path().extension() != ".scenario") continue;
+    const std::string name = entry.path().filename().string();
+    std::istringstream in(read_file(entry.path().string()));
+    std::string robot;
+    std::vector<std::pair<double, std::string>> timed;
+    for (std::string l; std::getline(in, l);) {
+      const size_t hash = l.find('#');
+      if (hash != std::string::npos) l.erase(hash);
+      l = trim(l);
+      std::istringstream words(l);
+      std::string key;
+      words >> key;
+      if (key == "robot") words >> robot;
+      if (key != "at") continue;
+      double t = 0;
+      std::string send;
+      words >> t >> send;
+      ASSERT_EQ(send, "send") << name << ": " << l;
+      timed.emplace_back(t, unescape(trim(l.substr(l.find(" send ") + 6))));
+    }
+    std::stable_sort(timed.begin(), timed.end(),
+                     [](const std::pair<double, std::string>& a, const std::pair<double, std::string>& b) { return a.first < b.first; });
+    const strider::RobotModel* model = nullptr;
+    for (const strider::RobotModel* m : strider::kAllRobots)
+      if (robot == m->name) model = m;
+    ASSERT_NE(model, nullptr) << name << ": robot " << robot;
+    Robot r(*model);  // stands during its first 3 s, as the scenario's robot boots
+    const double start_s = 3.0;
+    double now_s = start_s;
+    for (const auto& s : timed) {
+      if (s.first > now_s) {
+        r.run_ms(uint32_t((s.first - now_s) * 1000.0));
+        now_s = s.first;
+      }
+      for (unsigned char b : s.second) r.app.on_byte(1, b, r.now_us, r.lines);
+      ++sends;
+    }
+    r.run_ms(500);
+    int replies = 0;
+    for (const std::string& l : r.lines.sent) {
+      EXPECT_NE(l.rfind("err", 0), 0u) << name << " on " << robot << ": " << l;
+      replies += l.rfind("ok", 0) == 0;
+    }
+    EXPECT_GT(replies, 0) << name;
+    ++scenarios;
+  }
+  std::printf("%d scenarios, %d sends\n", scenarios, sends);
+  EXPECT_GE(scenarios, 20);
+}
+
+// GitHub's anchor for a heading: lower case, spaces to '-', other
+// punctuation but '-' and '_' dropped.
+std::string anchor_of(const std::string& heading) {
+  std::string out;
+  for (unsigned char c : heading) {
+    if (std::isalnum(c) || c == '-' || c == '_') out += char(std::tolower(c));
+    else if (c == ' ') out += '-';
+  }
+  return out;
+}
+
+std::vector<std::string> anchors_in(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  bool code = false;
+  for (std::string l; std::getline(in, l);) {
+    if (l.rfind("```", 0) == 0) code = !code;
+    if (code || l.empty() || l[0] != '#') continue;
+    const size_t a = l.find_first_not_of('#');
+    out.push_back(anchor_of(trim(l.substr(a))));
+  }
+  return out;
+}
+
+// Links between the docs: every relative link names a file that exists, and
+// an anchor (`file.md#section`, `#section`) a heading it has.
+TEST(DocExamples, LinksPointAtFilesAndHeadingsThatExist) {
+  int links = 0;
+  for (const std::string& file : doc_files()) {
+    const std::string text = read_file(std::string(STRIDER_SOURCE_DIR) + "/" + file);
+    const std::string dir = file.find('/') == std::string::npos ? "" : file.substr(0, file.rfind('/') + 1);
+    bool code = false;
+    std::istringstream in(text);
+    int line_no = 0;
+    for (std::string l; std::getline(in, l);) {
+      ++line_no;
+      if (l.rfind("```", 0) == 0) code = !code;
+      if (code) continue;
+      for (size_t at = l.find("]("); at != std::string::npos; at = l.find("](", at + 2)) {
+        const size_t end = l.find(')', at + 2);
+        if (end == std::string::npos) break;
+        const std::string target = l.substr(at + 2, end - at - 2);
+        if (target.find("://") != std::string::npos || target.rfind("mailto:", 0) == 0) continue;
+        const size_t hash = target.find('#');
+        const std::string path = target.substr(0, hash);
+        const std::string full = path.empty() ? std::string(STRIDER_SOURCE_DIR) + "/" + file
+                                              : std::string(STRIDER_SOURCE_DIR) + "/" + dir + path;
+        ++links;
+        EXPECT_TRUE(std::filesystem::exists(full)) << file << ":" << line_no << ": " << target;
+        if (hash == std::string::npos || !std::filesystem::exists(full)) continue;
+        const std::vector<std::string> anchors = anchors_in(read_file(full));
+        EXPECT_NE(std::find(anchors.begin(), anchors.end(), target.substr(hash + 1)), anchors.end())
+            << file << ":" << line_no << ": " << target << ": no such heading";
+      }
+    }
+  }
+  std::printf("%d links\n", links);
+  EXPECT_GT(links, 50);
+  EXPECT_EQ(anchor_of("Constraint solver (WorldConfig::solver)"), "constraint-solver-worldconfigsolver");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <random>
@@ -1156,3 +1157,65 @@ TEST_P(FirmwareTuning, SetWalkSaveReset) {
   std::printf("%s: %s\n", GetParam().c_str(), tuned.c_str());
 }
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareTuning, ::testing::Values("sprawl8", "hexapod18"), param_name);
+
+// The replies a user meets first, from the firmware itself (its texts are in
+// flash): `help` names the model's gaits and heights; every erroneous line
+// is answered `err <code> <reason>: <what is valid>`, an unknown gait with
+// the gaits `help` lists, a line of blanks too; and on sprawl8 the examples
+// of docs/protocol.md's error section come back exactly as written there.
+static std::vector<std::pair<std::string, std::string>> protocol_doc_examples() {
+  std::ifstream in(STRIDER_PROTOCOL_DOC);
+  std::vector<std::pair<std::string, std::string>> out;
+  bool armed = false, block = false;
+  for (std::string l; std::getline(in, l);) {
+    if (l.find("Examples, sprawl8:") != std::string::npos) armed = true;
+    if (armed && l.rfind("```", 0) == 0) {
+      if (block) break;
+      block = true;
+      continue;
+    }
+    const size_t arrow = l.find("->");
+    if (!block || arrow == std::string::npos) continue;
+    auto trim = [](std::string s) {
+      s.erase(0, s.find_first_not_of(' '));
+      s.erase(s.find_last_not_of(' ') + 1);
+      return s;
+    };
+    out.emplace_back(trim(l.substr(0, arrow)), trim(l.substr(arrow + 2)));
+  }
+  return out;
+}
+
+class FirmwareReplies : public ::testing::TestWithParam<std::string> {};
+TEST_P(FirmwareReplies, ErrorsNameWhatIsValid) {
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.boot(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(500000, kSettleTimeoutUs)) << "outputs never settled";
+  const std::string help = r.command("help");
+  const size_t g = help.find("; gaits "), h = help.find("; height ");
+  ASSERT_NE(g, std::string::npos) << help;
+  ASSERT_NE(h, std::string::npos) << help;
+  const std::string gaits = help.substr(g + 8, h - g - 8);
+  EXPECT_EQ(r.command("gait gallop"), "err 23 unknown gait: " + gaits);
+  EXPECT_EQ(r.command("height 9000"), "err 5 out of range: height 10..400");
+  const std::string other_gait = gaits.find("tripod") != std::string::npos ? "gait trot" : "gait ripple";
+  for (const std::string& line : {std::string("dance"), std::string("  \t "), other_gait, std::string("vel 100 0"),
+                                 std::string("stop now"), std::string("avoid maybe"), std::string("cal trim 1 2"),
+                                 std::string("deadman off"), std::string("set step_height 0.5"),
+                                 std::string("pose 30 30 30"), std::string("baud 1234")}) {
+    const std::string reply = r.command(line);
+    const size_t colon = reply.find(": ");
+    EXPECT_EQ(reply.rfind("err ", 0), 0u) << line << " -> " << reply;
+    ASSERT_NE(colon, std::string::npos) << line << " -> " << reply;
+    EXPECT_GT(reply.size(), colon + 3) << line << " -> " << reply;
+  }
+  EXPECT_EQ(r.command("  ").rfind("err 1 empty line: walk strafe", 0), 0u);
+  EXPECT_EQ(r.status()["mode"], "standing");  // none of it moved the robot
+  if (GetParam() != "sprawl8") return;
+  const auto examples = protocol_doc_examples();
+  EXPECT_GE(examples.size(), 5u);
+  for (const auto& e : examples) EXPECT_EQ(r.command(e.first), e.second) << e.first;
+}
+INSTANTIATE_TEST_SUITE_P(Models, FirmwareReplies,
+                         ::testing::Values("sprawl8", "mammal8", "dog12", "hexapod18", "spider12"), param_name);

@@ -9,6 +9,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import unittest
 
@@ -100,6 +101,20 @@ class ProtocolTest(unittest.TestCase):
         self.assertEqual(protocol.ERROR_CODES[r.code], r.reason)
         r = protocol.parse_reply("err 23 unknown gait: walk trot pace crawl")
         self.assertEqual((r.code, r.reason, r.valid), (23, "unknown gait", "walk trot pace crawl"))
+
+    def test_error_codes_as_the_protocol_doc_lists_them(self):
+        # docs/protocol.md's error table: `| code | `reason` / `other reason` | ...`;
+        # robotctl knows every code, by a reason the row names.
+        rows = {}
+        with open(os.path.join(ROOT, "docs", "protocol.md"), encoding="utf-8") as f:
+            for line in f:
+                cells = line.split(" | ")
+                if line.startswith("| ") and len(cells) > 2 and cells[0][2:].strip().isdigit():
+                    rows[int(cells[0][2:])] = cells[1]
+        self.assertGreaterEqual(len(rows), 20)
+        self.assertEqual(sorted(protocol.ERROR_CODES), sorted(rows))
+        for code, reason in protocol.ERROR_CODES.items():
+            self.assertIn(f"`{reason}`", rows[code], code)
 
     def test_kinds(self):
         self.assertEqual(protocol.kind_of("info deadman stop"), "info")
@@ -311,6 +326,22 @@ class LinkOnPtyTest(unittest.TestCase):
         r = self.link.command("$deadman off*cb77")
         self.assertEqual(self.robot.lines[-1], "deadman off")
         self.assertEqual(self.robot.checked, [True, True])
+
+    def test_wait_standing(self):
+        # A robot that stands (or an older firmware without state=): at once.
+        self.assertTrue(self.link.wait_standing(2.0))
+        # One still rising, then standing.
+        self.robot.status_line = lambda: "ok status mode=standing speed=50 state=standing_up servos=on pca9685=ok"
+        threading.Timer(0.6, lambda: setattr(self.robot, "status_line",
+                                             lambda: "ok status mode=standing state=standing servos=on")).start()
+        t0 = time.monotonic()
+        self.assertTrue(self.link.wait_standing(5.0, every=0.1))
+        self.assertGreater(time.monotonic() - t0, 0.5)
+        # One that does not answer: not taken for standing.
+        self.robot.withhold = {"status"}
+        t0 = time.monotonic()
+        self.assertFalse(self.link.wait_standing(1.0))
+        self.assertLess(time.monotonic() - t0, 3.0)
 
     def test_rc_letter_line_goes_plain(self):
         r = self.link.command("F")

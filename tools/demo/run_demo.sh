@@ -21,7 +21,7 @@ done
 
 mkdir -p "$OUT"
 echo "== sprawl8 firmware on the virtual Mega, in the Bullet world: $(basename "$SCENARIO")"
-"$SIM" "$SCENARIO" --out "$OUT" --firmware "$ELF"
+"$SIM" "$SCENARIO" --out "$OUT" --firmware "$ELF" --quiet   # the summary is at the end
 
 echo
 echo "== what the robot said over Bluetooth"
@@ -35,33 +35,6 @@ else
   echo "no matplotlib/pillow for $PY: skipped run.gif and plots.png"
 fi
 
-"$PY" - "$OUT/metrics.json" "$OUT/trace.csv" <<'PY'
-import csv, json, math, sys
-m = json.load(open(sys.argv[1]))
-rows = [r for r in csv.DictReader(open(sys.argv[2])) if float(r["t"]) >= m["ready_s"]]
-# The path without the body's sway from step to step: the track averaged over
-# 1 s (50 rows of 20 ms), then its length.
-half = 25
-xs, ys = [float(r["x_mm"]) for r in rows], [float(r["y_mm"]) for r in rows]
-avg = [(sum(xs[max(0, k - half):k + half + 1]) / len(xs[max(0, k - half):k + half + 1]),
-        sum(ys[max(0, k - half):k + half + 1]) / len(ys[max(0, k - half):k + half + 1])) for k in range(len(rows))]
-track = sum(math.dist(avg[k - 1], avg[k]) for k in range(1, len(avg)))
-steps = round(m["sim_time_s"] / 0.004)  # strider-sim's default physics step
-print()
-print(f"== summary (from {m['ready_s']:.1f} s, when the robot had stood up, to the end)")
-print(f"displacement, start to end:     {m['distance_mm']:.0f} mm (straight line)")
-print(f"path walked (forward, turn, round the wall): {track:.0f} mm "
-      f"(the body centre's track over 1 s; {m['path_mm']:.0f} mm with the sway of every step)")
-print(f"top speed {m['speed_mm_s']:.0f} mm/s (best 2 s), turned {m['heading_change_deg']:+.0f} deg")
-if m.get("min_clearance_mm") is not None:
-    print(f"closest to the wall: body {m['min_clearance_mm']:.0f} mm, legs {m['min_robot_clearance_mm']:.0f} mm, "
-          f"{m['collisions']} contacts with it")
-print(f"fell: {'yes' if m['fell'] else 'no'}; max tilt {m['max_tilt_deg']:.1f} deg")
-if m.get("odometry_mm") is not None:
-    print(f"gait odometry {m['odometry_mm']:.0f} mm, the body {m['odometry_error_pct']:.1f} % short of it")
-print(f"speed: {m['sim_time_s']:.0f} s simulated in {m['wall_time_s']:.1f} s of wall clock "
-      f"({m['sim_time_s'] / max(1e-9, m['wall_time_s']):.1f}x real time); "
-      f"{m['cpu_time_s']:.1f} s of CPU ({m['real_time_factor']:.1f}x per CPU second)")
-print(f"physics: {m['solver_fallbacks']} of {steps} steps solved by PGS when the exact solver gave up on them")
-PY
+echo
+"$PY" "$ROOT/tools/demo/summary.py" "$OUT"
 echo "files: $OUT"

@@ -179,13 +179,12 @@ int main(int argc, char** argv) {
   }
   if (!quiet) {
     const strider_sim::Metrics& m = r.metrics;
-    const long steps = long(m.sim_time_s / opt.world.step_s + 0.5);
     std::printf("%s %s: %.1f s simulated in %.2f s wall clock (%.1fx real time), %.2f s CPU (%.1fx per CPU second)\n",
-                m.robot.c_str(), m.mode.c_str(), m.sim_time_s, m.wall_time_s,
-                m.sim_time_s / std::max(1e-9, m.wall_time_s), m.cpu_time_s, m.real_time_factor);
+                m.robot.c_str(), m.mode.c_str(), m.sim_time_s, m.wall_time_s, m.real_time_factor_wall, m.cpu_time_s,
+                m.real_time_factor);
     if (opt.world.solver == strider_sim::Solver::kMlcp)
       std::printf("physics: %ld of %ld steps solved by PGS because the exact (MLCP) solver gave up on them\n",
-                  m.solver_fallbacks, steps);
+                  m.solver_fallbacks, m.physics_steps);
     std::printf("displacement %.0f mm (start to end), path %.0f mm (along the way), top speed %.1f mm/s, "
                 "heading %+.1f deg, drift %.1f mm (body frame %.1f mm), max tilt %.1f deg%s\n",
                 m.distance_mm, m.path_mm, m.speed_mm_s, m.heading_change_deg, m.lateral_drift_mm, m.body_drift_mm,

@@ -325,8 +325,8 @@ def write_plots(scene, rows, path, odometry=True):
     t = [r["t"] for r in rows]
     fig, ax = plt.subplots(2, 2, figsize=(10, 7), dpi=90)
     a = ax[0][0]
-    for x, y, sx, sy, sz in scene["obstacles_mm"]:
-        a.add_patch(Rectangle((x - sx / 2, y - sy / 2), sx, sy, color="0.6"))
+    for k, (x, y, sx, sy, sz) in enumerate(scene["obstacles_mm"]):
+        a.add_patch(Rectangle((x - sx / 2, y - sy / 2), sx, sy, color="0.6", label="obstacle" if k == 0 else None))
     a.plot([r["x_mm"] for r in rows], [r["y_mm"] for r in rows], label="body centre")
     if odometry:
         a.plot([r["odo_x_mm"] + rows[0]["x_mm"] for r in rows], [r["odo_y_mm"] + rows[0]["y_mm"] for r in rows], "--",
@@ -360,9 +360,11 @@ def write_plots(scene, rows, path, odometry=True):
     a.legend(fontsize=8)
     a = ax[1][1]
     margins = [stability_margin(r, legs) for r in rows]
-    a.plot([ti for ti, m in zip(t, margins) if m is not None], [m for m in margins if m is not None], ".", ms=2)
-    a.axhline(0, color="r", lw=0.8)
+    a.plot([ti for ti, m in zip(t, margins) if m is not None], [m for m in margins if m is not None], ".", ms=2,
+           label="margin (negative: CoM outside)")
+    a.axhline(0, color="r", lw=0.8, label="0: CoM on the polygon's edge")
     a.set_title("static stability margin [mm] (CoM to support polygon)")
+    a.legend(fontsize=8, loc="center right")
     a.set_xlabel("t [s]")
     fig.suptitle(f"{scene['robot']}")
     fig.tight_layout()

@@ -122,6 +122,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   Metrics& m = r.metrics;
   m.robot = model->name;
   m.mode = driver->mode();
+  m.solver = opt.world.solver == Solver::kMlcp ? "mlcp" : "pgs";
   m.mass_kg = double(model->body.mass_kg);
   r.legs = model->leg_count;
   r.dof = model->dof();
@@ -254,6 +255,8 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   m.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   m.cpu_time_s = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   m.real_time_factor = m.sim_time_s / std::max(1e-9, m.cpu_time_s);
+  m.real_time_factor_wall = m.sim_time_s / std::max(1e-9, m.wall_time_s);
+  m.physics_steps = long(steps);
   m.solver_fallbacks = world.solver_fallbacks();
   m.imu_calibrated_s = sensors.calibrated_s();
   m.battery_end_v = sensors.battery().volts();
@@ -350,6 +353,9 @@ std::string metrics_json(const Metrics& m) {
   o << "  \"wall_time_s\": " << num(m.wall_time_s) << ",\n";
   o << "  \"cpu_time_s\": " << num(m.cpu_time_s) << ",\n";
   o << "  \"real_time_factor\": " << num(m.real_time_factor, 1) << ",\n";
+  o << "  \"real_time_factor_wall\": " << num(m.real_time_factor_wall, 1) << ",\n";
+  o << "  \"physics_steps\": " << m.physics_steps << ",\n";
+  o << "  \"solver\": " << json_string(m.solver) << ",\n";
   o << "  \"solver_fallbacks\": " << m.solver_fallbacks << ",\n";
   o << "  \"mass_kg\": " << num(m.mass_kg, 3) << ",\n";
   o << "  \"servo_work_j\": " << num(m.servo_work_j, 4) << ",\n";

@@ -43,6 +43,7 @@ struct TraceRow {
 
 struct Metrics {
   std::string robot, mode;
+  std::string solver;             // "mlcp" (PGS when it gives up on a step) or "pgs"
   double distance_mm = 0;         // start -> end, horizontal
   double path_mm = 0;             // along the trace
   double speed_mm_s = 0;          // best 2 s window: displacement / 2 s
@@ -61,6 +62,8 @@ struct Metrics {
   double ready_s = 0;               // metrics start: stood up and settled after the power-up, or the first motion command
   double sim_time_s = 0, wall_time_s = 0, cpu_time_s = 0;
   double real_time_factor = 0;      // simulated / CPU time of this process (one core)
+  double real_time_factor_wall = 0; // simulated / wall-clock time
+  long physics_steps = 0;           // Bullet steps simulated
   long solver_fallbacks = 0;        // steps the MLCP solver handed to PGS
   bool has_odometry = false;
   double odometry_mm = 0;          // the gait engine's dead reckoning (library mode)

@@ -288,16 +288,18 @@ class Link:
         """After a boot: asks `status` every `every` s until the robot stands
         (its legs switched on, the stand-up over), or will not stand up by
         itself (relaxed, calibrating, a servo board away; a status without
-        those fields, from an older firmware). False if it still rises after
-        `timeout` s."""
+        those fields, from an older firmware). False if it still rises, or
+        has not answered, after `timeout` s."""
         deadline = self.clock() + timeout
         while True:
             try:
                 fields = status_fields(self.command("status", max(0.5, min(2.0, deadline - self.clock()))).line)
             except ReplyTimeout:
-                fields = {}
-            if not rising(fields) or self.clock() >= deadline:
-                return not rising(fields)
+                fields = None  # no answer (yet): ask again until the deadline
+            if fields is not None and not rising(fields):
+                return True
+            if self.clock() >= deadline:
+                return False
             end = min(deadline, self.clock() + every)
             while self.clock() < end:
                 self.poll(end - self.clock())

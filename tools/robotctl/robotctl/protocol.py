@@ -40,8 +40,11 @@ ERROR_CODES = {
     22: "store failed",
     23: "unknown gait",
     24: "pose refused",  # or "height refused"
+    25: "step_height out of range",  # or step_length, cycle, duty; "swing not under the model's own swing"
     30: "model does not fit the firmware",
     31: "servo fault",
+    32: "battery critical",
+    33: "fallen",
 }
 
 Value = Union[int, float, str]
