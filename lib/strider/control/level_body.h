@@ -12,10 +12,11 @@
 //! moves it and the level brings roll and pitch back from there. Updating
 //! every fifth tick keeps the reach check (one IK per leg) off most ticks.
 //!
-//! It also says how the filter learns the gyro's offset at power-up: while
-//! the robot sits and stands up for the first time it runs with faster gains
-//! (kLearnKp, kLearnKi: both poles at -2/s instead of -0.5/s), so that an
-//! uncalibrated part's offset (up to 20 deg/s) is learnt in about 3 s, not 15.
+//! It also keeps the gains with which the filter learns the gyro's offset
+//! at power-up: while the robot sits and stands up for the first time the
+//! filter runs with faster gains (kLearnKp, kLearnKi: both poles at -2/s
+//! instead of -0.5/s), so that an uncalibrated part's offset (up to 20 deg/s)
+//! is learnt in about 3 s, not 15.
 #ifndef STRIDER_CONTROL_LEVEL_BODY_H
 #define STRIDER_CONTROL_LEVEL_BODY_H
 
@@ -28,6 +29,7 @@ namespace strider {
 
 constexpr double kLevelGain = 2.0;         //!< integral gain [1/s]: a 0.5 s time constant
 constexpr uint8_t kLevelEveryTicks = 5;    //!< ticks between pose updates (0.1 s at 50 Hz)
+constexpr double kLevelTickS = 0.02;       //!< the control tick [s] (robot_app.h's kTickPeriodUs)
 constexpr double kLevelMaxRad = 30.0 * 0.017453292519943295;  //!< the `pose` command's own limit [rad]
 constexpr double kLearnKp = 4.0;           //!< filter gains while learning the offset [1/s]
 constexpr double kLearnKi = 4.0;           //!< ... [1/s^2]: critically damped, poles at -2/s
@@ -61,7 +63,7 @@ class LevelBody {
   bool step(S roll_rad, S pitch_rad, S* pose_roll_rad, S* pose_pitch_rad) {
     if (!on_ || ++count_ < kLevelEveryTicks) return false;
     count_ = 0;
-    constexpr S k = scalar<S>(kLevelGain * kLevelEveryTicks * 0.02);
+    constexpr S k = scalar<S>(kLevelGain * kLevelEveryTicks * kLevelTickS);
     constexpr S lim = scalar<S>(kLevelMaxRad);
     *pose_roll_rad = clamp(*pose_roll_rad - k * roll_rad, -lim, lim);
     *pose_pitch_rad = clamp(*pose_pitch_rad - k * pitch_rad, -lim, lim);

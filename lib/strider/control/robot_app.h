@@ -40,6 +40,7 @@ constexpr uint32_t kTickPeriodUs = 20000;  //!< control tick, 50 Hz [us]
 constexpr uint8_t kLinkPorts = 2;          //!< 0 = USB serial, 1 = Bluetooth (HC-05)
 constexpr uint8_t kAllPorts = 0xFF;        //!< send_line(): every port
 constexpr uint16_t kLineIdleMs = 300;      //!< a partial line older than this is dropped [ms]
+static_assert(kLevelTickS * 1e6 == double(kTickPeriodUs), "level_body.h's tick is RobotApp's");
 
 namespace app_text {
 constexpr char kInfoStrider[] STRIDER_PROGMEM = "info strider ";
