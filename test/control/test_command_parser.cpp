@@ -55,6 +55,8 @@ const LineCase kGoodLines[] = {
     {"pose 5 -3.5 0", CommandKind::kPose, 50, -35, 0, ""},
     {"height 80", CommandKind::kHeight, 800, 0, 0, ""},
     {"avoid on", CommandKind::kAvoidEnable, 1, 0, 0, ""},
+    {"level on", CommandKind::kLevel, 1, 0, 0, ""},
+    {"level off", CommandKind::kLevel, 0, 0, 0, ""},
     {"avoid off", CommandKind::kAvoidEnable, 0, 0, 0, ""},
     {"avoid 200 400", CommandKind::kAvoidLimits, 200, 400, 0, ""},
     {"avoid 150 150", CommandKind::kAvoidLimits, 150, 150, 0, ""},
@@ -113,6 +115,10 @@ const BadCase kBadLines[] = {
     {"pose 1 2", ParseError::kMissingArgument},
     {"height 5", ParseError::kOutOfRange},
     {"avoid", ParseError::kMissingArgument},
+    {"level", ParseError::kMissingArgument},
+    {"level 1", ParseError::kBadArgument},
+    {"level onn", ParseError::kBadArgument},
+    {"level on off", ParseError::kExtraArgument},
     {"avoid maybe", ParseError::kBadArgument},
     {"avoid on off", ParseError::kExtraArgument},
     {"avoid 400 200", ParseError::kOutOfRange},
@@ -182,7 +188,7 @@ std::string error_reply(const std::string& line) {
 }
 
 TEST(CommandParser, ErrorRepliesNameTheValidValues) {
-  const std::string all = "walk strafe turn vel stop relax speed gait pose height set get avoid deadman baud cal save status help";
+  const std::string all = "walk strafe turn vel stop relax speed gait pose height level set get avoid deadman baud cal save status help";
   const struct {
     std::string line;
     const char* reply;
@@ -208,6 +214,7 @@ TEST(CommandParser, ErrorRepliesNameTheValidValues) {
       {"gait", "err 3 missing argument: gait walk trot pace crawl"},
       {"gait Trot", "err 2 bad argument: gait walk trot pace crawl"},
       {"avoid", "err 3 missing argument: avoid on, avoid off, avoid STOP SLOW with 20 <= STOP <= SLOW <= 3000"},
+      {"level up", "err 2 bad argument: level on, level off"},
       {"avoid 300 200", "err 5 out of range: avoid on, avoid off, avoid STOP SLOW with 20 <= STOP <= SLOW <= 3000"},
       {"cal", "err 3 missing argument: cal start trim osc pwm show save abort"},
       {"cal dance", "err 2 bad argument: cal start trim osc pwm show save abort"},

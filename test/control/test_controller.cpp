@@ -62,7 +62,7 @@ TEST(Controller, OneReplyPerLine) {
   ASSERT_EQ(replies.size(), 7u);
   EXPECT_EQ(replies[0], "ok move vx=100.0 vy=0.0 wz=0.0");
   EXPECT_EQ(replies[1], "ok speed pct=70");
-  EXPECT_EQ(replies[2], "err 1 unknown command: walk strafe turn vel stop relax speed gait pose height set get avoid deadman baud cal save status help");
+  EXPECT_EQ(replies[2], "err 1 unknown command: walk strafe turn vel stop relax speed gait pose height level set get avoid deadman baud cal save status help");
   EXPECT_EQ(replies[3], "ok gait trot");
   EXPECT_EQ(replies[4], "err 23 unknown gait: walk trot pace crawl");
   EXPECT_EQ(replies[5].rfind("ok status mode=walking speed=70", 0), 0u) << replies[5];
@@ -76,7 +76,7 @@ TEST(Controller, OneReplyPerLine) {
 // robot's gaits and heights.
 TEST(Controller, ErrorsAndHelpNameTheValidValues) {
   Rig r;
-  const std::string all = "walk strafe turn vel stop relax speed gait pose height set get avoid deadman baud cal save status help";
+  const std::string all = "walk strafe turn vel stop relax speed gait pose height level set get avoid deadman baud cal save status help";
   auto replies = r.send("  \r\n\n\t\nhelp\nheight 160\ngait Trot\n");
   ASSERT_EQ(replies.size(), 5u);
   EXPECT_EQ(replies[0], "err 1 empty line: " + all);
@@ -141,6 +141,23 @@ TEST(Controller, DeadmanStopsSilentLink) {
   EXPECT_EQ(r.ctl->settings().deadman_ms, 0);
   r.run_ms(10000);
   EXPECT_EQ(r.ctl->mode(), RobotMode::kWalking);
+}
+
+// `level on|off` goes to the sink; without an IMU it is refused with its own
+// code and changes nothing.
+TEST(Controller, LevelNeedsAnImu) {
+  Rig r;
+  EXPECT_EQ(r.send("level on\n"),
+            std::vector<std::string>{"err 34 no imu: level needs an MPU-6050 on the I2C bus (status shows imu=)"});
+  EXPECT_FALSE(r.sink.level);
+  r.sink.has_imu = true;
+  EXPECT_EQ(r.send("level on\n"), std::vector<std::string>{"ok level on"});
+  EXPECT_TRUE(r.sink.level);
+  EXPECT_EQ(r.send("level off\n"), std::vector<std::string>{"ok level off"});
+  EXPECT_FALSE(r.sink.level);
+  r.sink.has_imu = false;
+  r.send("level on\n");
+  EXPECT_FALSE(r.sink.level);
 }
 
 TEST(Controller, AvoidanceSequence) {
@@ -295,7 +312,7 @@ TEST(ProtocolDoc, ListsEveryCodeAndCommand) {
     const std::string row = "| " + std::to_string(code) + " | `" + strider::error_reason(e) + "`";
     EXPECT_NE(doc.find(row), std::string::npos) << row;
   }
-  for (int code : {20, 21, 22, 23, 24, 31}) EXPECT_NE(doc.find("| " + std::to_string(code) + " |"), std::string::npos) << code;
+  for (int code : {20, 21, 22, 23, 24, 25, 31, 32, 33, 34}) EXPECT_NE(doc.find("| " + std::to_string(code) + " |"), std::string::npos) << code;
   Rig r;
   const auto help = r.send("help\n");
   ASSERT_EQ(help.size(), 1u);

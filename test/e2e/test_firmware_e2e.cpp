@@ -1099,6 +1099,46 @@ TEST_P(FirmwareImu, TiltIsReportedAndATipOverIsAFall) {
 }
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareImu, ::testing::Values("sprawl8", "hexapod18"), param_name);
 
+// `level on|off` on the virtual Mega: refused (err 34) without the part; with
+// it, status says imu=level, and a tilt the pose cannot take away (vbench's
+// part reads a fixed 12 deg roll whatever the legs do) drives the pose to
+// what the legs reach, walking and standing, within the stack's 1 KB.
+class FirmwareLevel : public ::testing::TestWithParam<std::string> {};
+TEST_P(FirmwareLevel, LevelOnNeedsThePartAndStaysWithinTheStack) {
+  {
+    Robot none(GetParam());
+    std::string error;
+    ASSERT_TRUE(none.boot(&error)) << error;
+    EXPECT_EQ(none.command("level on").rfind("err 34 no imu", 0), 0u) << none.transcript();
+    EXPECT_EQ(none.status()["imu"], "none");
+  }
+  Robot r(GetParam());
+  std::string error;
+  ASSERT_TRUE(r.load(&error)) << error;
+  r.mega().set_imu_present(true);
+  const double a = 12.0 * M_PI / 180.0, g = 9.80665;
+  r.mega().set_imu_accel_m_s2(0.0, g * std::sin(a), g * std::cos(a));
+  r.mega().set_imu_gyro_rad_s(0.0, 0.0, 0.0);
+  ASSERT_TRUE(r.wait_ready(&error)) << error << "\n" << r.transcript();
+  ASSERT_TRUE(r.settle(500000, kSettleTimeoutUs)) << "outputs never settled";
+  EXPECT_EQ(r.command("level on"), "ok level on") << r.transcript();
+  r.run_for(3000000);
+  EXPECT_EQ(r.status()["imu"], "level") << r.transcript();
+  EXPECT_EQ(r.command("walk 40").rfind("ok", 0), 0u) << r.transcript();
+  r.run_for(3000000);
+  EXPECT_EQ(r.command("stop"), "ok stop");
+  EXPECT_EQ(r.command("level off"), "ok level off");
+  r.run_for(2000000);
+  auto st = r.status();
+  EXPECT_EQ(st["imu"], "ok") << r.transcript();
+  EXPECT_EQ(st["overruns"], "0");
+  EXPECT_EQ(r.mega().unexpected_resets(), 0);
+  EXPECT_LE(r.mega().stack_peak_bytes(), 1024u) << "with the level's reach checks";
+  std::printf("%s with level on: stack peak %u bytes, tick_max_us %s\n", GetParam().c_str(),
+              unsigned(r.mega().stack_peak_bytes()), st["tick_max_us"].c_str());
+}
+INSTANTIATE_TEST_SUITE_P(Models, FirmwareLevel, ::testing::Values("sprawl8", "hexapod18"), param_name);
+
 }  // namespace
 
 // Live gait parameters on the firmware (the phone's lines): `get` shows the

@@ -136,4 +136,82 @@ TEST(SimScenario, RejectsBadLinesWithTheirNumber) {
   EXPECT_FALSE(strider_sim::parse_scenario("robot sprawl8\nduration 5\nat 1 send bad\\q\n", &s, &err));
 }
 
+TEST(SimScenario, ParsesRampShoveUprightAndBattery) {
+  strider_sim::Scenario s;
+  std::string err;
+  ASSERT_TRUE(strider_sim::parse_scenario("robot sprawl8\nduration 9\nramp 10 30\nbattery soc 0.5 cells 3\n"
+                                          "battery mah 40 ohm 0.1\nat 5 upright\nat 4 shove 0 1 -0.5\n",
+                                          &s, &err))
+      << err;
+  EXPECT_DOUBLE_EQ(s.ramp_deg, 10.0);
+  EXPECT_DOUBLE_EQ(s.ramp_uphill_deg, 30.0);
+  EXPECT_EQ(s.battery.cells, 3);
+  EXPECT_DOUBLE_EQ(s.battery.soc, 0.5);
+  EXPECT_DOUBLE_EQ(s.battery.capacity_mah, 40.0);
+  EXPECT_DOUBLE_EQ(s.battery.internal_ohm, 0.1);
+  ASSERT_EQ(s.events.size(), 2u);
+  EXPECT_EQ(s.events[0].kind, strider_sim::TimedEvent::kShove);  // sorted by time
+  EXPECT_DOUBLE_EQ(s.events[0].impulse_ns.z, -0.5);
+  EXPECT_EQ(s.events[1].kind, strider_sim::TimedEvent::kUpright);
+  // The command line's pack options win over the scenario's.
+  strider_sim::BatteryOverrides cli;
+  cli.soc = 0.2;
+  const strider_sim::BatteryOverrides both = s.battery.under(cli);
+  EXPECT_DOUBLE_EQ(both.soc, 0.2);
+  EXPECT_EQ(both.cells, 3);
+  for (const char* bad : {"ramp\n", "ramp 50\n", "ramp 10 x\n", "ramp 10 30 1\n", "battery\n", "battery cells 0\n",
+                          "battery cells 2.5\n", "battery soc 1.5\n", "battery mah\n", "battery volts 7\n",
+                          "at 1 shove 1 2\n", "at 1 shove 1 2 3 4\n", "at 1 upright now\n", "at 1 jump\n"}) {
+    EXPECT_FALSE(strider_sim::parse_scenario(std::string("robot sprawl8\nduration 5\n") + bad, &s, &err)) << bad;
+    EXPECT_EQ(err.rfind("line 3:", 0), 0u) << err;
+  }
+}
+
+// A ramp tilts gravity, not the ground: a body parallel to the ground (the
+// start pose) reports the slope as roll and pitch (rising ahead-left: left
+// side up, nose up), and its IMU's gravity leans the same way.
+TEST(SimWorld, RampTiltsGravityAndTheReportedAttitude) {
+  const strider::RobotModel& model = *strider::find_robot("hexapod18");
+  World w(model, WorldConfig{}, {});
+  w.set_ramp(10.0, 30.0);
+  const strider_sim::BodyState b = w.body();
+  // up in the ground's frame: (sin 10 cos 30, sin 10 sin 30, cos 10); Z-Y-X angles of it.
+  const double ux = std::sin(10 * M_PI / 180) * std::cos(30 * M_PI / 180);
+  const double uy = std::sin(10 * M_PI / 180) * std::sin(30 * M_PI / 180), uz = std::cos(10 * M_PI / 180);
+  EXPECT_NEAR(b.roll_deg, std::atan2(uy, uz) * 180 / M_PI, 0.01);
+  EXPECT_NEAR(b.pitch_deg, -std::atan2(ux, std::hypot(uy, uz)) * 180 / M_PI, 0.01);
+  EXPECT_NEAR(b.tilt_deg, 10.0, 0.01);
+  for (int k = 0; k < 250; ++k) w.step();
+  EXPECT_NEAR(w.body().tilt_deg, 10.0, 2.0);  // on limp servos, sagging
+  const strider_sim::BodyMotion m = w.body_motion(Vec{});
+  EXPECT_NEAR(m.gravity_m_s2.z, -9.81 * std::cos(10 * M_PI / 180), 1e-5);  // Bullet in float
+  EXPECT_LT(m.gravity_m_s2.x, 0.0);  // downhill is behind and to the right
+  EXPECT_LT(m.gravity_m_s2.y, 0.0);
+}
+
+// A shove at the top of the body tips sprawl8 over; upright() puts it back
+// on its feet, level, at rest, where it lay, heading kept.
+TEST(SimWorld, ShoveTipsTheRobotAndUprightSetsItBack) {
+  const strider::RobotModel& model = *strider::find_robot("sprawl8");
+  World w(model, WorldConfig{}, {});
+  for (int k = 0; k < 100; ++k) w.step();
+  EXPECT_LT(w.body().tilt_deg, 5.0);
+  w.shove(Vec{0, 1.0, 0.5});
+  double max_tilt = 0;
+  for (int k = 0; k < 250; ++k) {
+    w.step();
+    max_tilt = std::max(max_tilt, w.body().tilt_deg);
+  }
+  EXPECT_GT(max_tilt, 60.0);
+  const strider_sim::BodyState lying = w.body();
+  w.upright();
+  const strider_sim::BodyState up = w.body();
+  EXPECT_LT(up.tilt_deg, 0.05);  // Bullet in float
+  EXPECT_NEAR(up.pos_mm.x, lying.pos_mm.x, 1e-6);
+  EXPECT_NEAR(up.pos_mm.y, lying.pos_mm.y, 1e-6);
+  for (int k = 0; k < 250; ++k) w.step();
+  EXPECT_LT(w.body().tilt_deg, 5.0);
+  EXPECT_FALSE(w.body_on_ground());
+}
+
 }  // namespace

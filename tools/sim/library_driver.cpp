@@ -156,15 +156,22 @@ class LibraryDriver : public Driver, private HostParts {
   // The robot's own sensors, as the firmware reads them before its tick: the
   // MPU-6050 (when fitted) and the battery divider's pin through a 10-bit ADC
   // against 5 V.
+  // The IMU: the mean of the readings since the last tick. The firmware's
+  // part filters at 5 Hz; one raw reading a tick, at the same point of every
+  // tick, would see the same part of each servo frame's jerk (docs/imu.md).
   void feed_sensors(Lines& link) {
     const SensorInputs& in = sensors();
     if (in.imu_fitted) {
       if (!imu_announced_) app_.set_imu_present(true);
       imu_announced_ = true;
+      const ImuReading& r = imu_n_ > 0 ? imu_sum_ : in.imu;
+      const double k = imu_n_ > 0 ? 1.0 / imu_n_ : 1.0;
       strider::ImuSample<float> s;
-      s.accel_m_s2 = strider::Vec3<float>(float(in.imu.accel_m_s2.x), float(in.imu.accel_m_s2.y), float(in.imu.accel_m_s2.z));
-      s.gyro_rad_s = strider::Vec3<float>(float(in.imu.gyro_rad_s.x), float(in.imu.gyro_rad_s.y), float(in.imu.gyro_rad_s.z));
+      s.accel_m_s2 = strider::Vec3<float>(float(r.accel_m_s2.x * k), float(r.accel_m_s2.y * k), float(r.accel_m_s2.z * k));
+      s.gyro_rad_s = strider::Vec3<float>(float(r.gyro_rad_s.x * k), float(r.gyro_rad_s.y * k), float(r.gyro_rad_s.z * k));
       s.temp_c = float(in.imu.temp_c);
+      imu_sum_ = ImuReading();
+      imu_n_ = 0;
       app_.imu(&s, link);
     }
     const double code = std::floor(in.battery_pin_v * 1024.0 / 5.0);
@@ -172,6 +179,19 @@ class LibraryDriver : public Driver, private HostParts {
   }
 
   void update_pulses() { boards.pulses(osc_hz_, pulses_); }
+
+ public:
+  void set_sensors(const SensorInputs& s) override {
+    Driver::set_sensors(s);
+    if (!s.imu_fitted) return;
+    Vec& a = imu_sum_.accel_m_s2;
+    Vec& w = imu_sum_.gyro_rad_s;
+    a = Vec{a.x + s.imu.accel_m_s2.x, a.y + s.imu.accel_m_s2.y, a.z + s.imu.accel_m_s2.z};
+    w = Vec{w.x + s.imu.gyro_rad_s.x, w.y + s.imu.gyro_rad_s.y, w.z + s.imu.gyro_rad_s.z};
+    ++imu_n_;
+  }
+
+ private:
 
   // The duty override on the gait walked now, when it does not have it yet
   // and keeps its support with it (gait_library.h's checks of the built-in
@@ -216,6 +236,8 @@ class LibraryDriver : public Driver, private HostParts {
 
   HostApp app_;
   bool imu_announced_ = false;
+  ImuReading imu_sum_;  // the readings since the last tick, summed (feed_sensors())
+  int imu_n_ = 0;
   const strider::RobotModel& model_;
   GaitOverrides gait_;
   strider::GaitParams params_{};  // the gait parameters walked: the defaults with the overrides

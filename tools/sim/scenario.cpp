@@ -1,6 +1,7 @@
 #include "scenario.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -107,12 +108,47 @@ bool parse_scenario(const std::string& text, Scenario* out, std::string* error) 
       words >> v;
       if ((v != "on" && v != "off") || (words >> extra)) return fail("imu takes on or off");
       s.imu = v == "on";
+    } else if (word == "ramp") {
+      std::string a, b, extra;
+      words >> a >> b;
+      if (!to_number(a, &s.ramp_deg) || !(s.ramp_deg >= 0 && s.ramp_deg <= 45) ||
+          (!b.empty() && !to_number(b, &s.ramp_uphill_deg)) || (words >> extra))
+        return fail("ramp takes a slope 0..45 [deg] and the direction it rises toward [deg]");
+    } else if (word == "battery") {
+      const std::string form = "battery takes cells 1..12, mah > 0, ohm >= 0, soc 0..1";
+      std::string key, v;
+      int keys = 0;
+      while (words >> key) {
+        double x = 0;
+        if (!(words >> v) || !to_number(v, &x)) return fail(form);
+        if (key == "cells" && x >= 1 && x <= 12 && x == std::floor(x)) s.battery.cells = int(x);
+        else if (key == "mah" && x > 0) s.battery.capacity_mah = x;
+        else if (key == "ohm" && x >= 0) s.battery.internal_ohm = x;
+        else if (key == "soc" && x >= 0 && x <= 1) s.battery.soc = x;
+        else return fail(form);
+        ++keys;
+      }
+      if (keys == 0) return fail(form);
     } else if (word == "at") {
       std::string t, verb;
       words >> t >> verb;
       TimedSend send;
       if (!to_number(t, &send.at_s) || send.at_s < 0) return fail("at takes a time [s] >= 0");
-      if (verb != "send") return fail("expected 'at T send TEXT'");
+      if (verb == "shove" || verb == "upright") {
+        TimedEvent e;
+        e.at_s = send.at_s;
+        e.kind = verb == "shove" ? TimedEvent::kShove : TimedEvent::kUpright;
+        std::string x, y, z, extra;
+        if (verb == "shove") {
+          words >> x >> y >> z;
+          if (!to_number(x, &e.impulse_ns.x) || !to_number(y, &e.impulse_ns.y) || !to_number(z, &e.impulse_ns.z))
+            return fail("shove takes an impulse X Y Z [N s]");
+        }
+        if (words >> extra) return fail(verb + " takes " + (verb == "shove" ? "X Y Z only" : "nothing"));
+        s.events.push_back(e);
+        continue;
+      }
+      if (verb != "send") return fail("expected 'at T send TEXT', 'at T shove X Y Z' or 'at T upright'");
       std::string rest;
       std::getline(words, rest);
       rest = trim(rest);
@@ -127,6 +163,7 @@ bool parse_scenario(const std::string& text, Scenario* out, std::string* error) 
   if (s.robot.empty()) return fail("no robot");
   if (s.duration_s <= 0) return fail("no duration");
   std::stable_sort(s.sends.begin(), s.sends.end(), [](const TimedSend& a, const TimedSend& b) { return a.at_s < b.at_s; });
+  std::stable_sort(s.events.begin(), s.events.end(), [](const TimedEvent& a, const TimedEvent& b) { return a.at_s < b.at_s; });
   *out = s;
   return true;
 }

@@ -4,12 +4,17 @@
 //   obstacle box X Y SX SY SZ        # mm; axis-aligned box on the ground, centre at X,Y
 //   at T send TEXT                   # at T seconds, send TEXT to the Bluetooth link; \n \r escapes
 //   imu on                           # an MPU-6050 is fitted (firmware mode: vbench's, fed by the IMU model)
+//   ramp DEG [UPHILL_DEG]            # the ground slopes DEG, rising toward UPHILL_DEG (0: +x, 90: +y)
+//   battery cells N mah C ohm R soc S  # the pack (any of the four keys, in any order)
+//   at T shove X Y Z                 # an impulse [N s], world frame, at the top of the body
+//   at T upright                     # the robot set back on its feet, sitting, where it lies
 // One directive per line; `#` starts a comment; blank lines are ignored.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "sim_sensors.h"
 #include "world.h"
 
 namespace strider_sim {
@@ -19,12 +24,24 @@ struct TimedSend {
   std::string bytes;  // escapes already decoded
 };
 
+// `at T shove X Y Z` and `at T upright`: something done to the robot.
+struct TimedEvent {
+  enum Kind { kShove, kUpright };
+  double at_s = 0;
+  Kind kind = kShove;
+  Vec impulse_ns;  // kShove: world frame [N s]
+};
+
 struct Scenario {
   std::string robot;
   double duration_s = 0;
   std::vector<ObstacleBox> obstacles;
   std::vector<TimedSend> sends;  // sorted by time (stable)
   bool imu = false;              // `imu on`
+  double ramp_deg = 0;           // `ramp DEG [UPHILL_DEG]`: the ground's slope [deg]
+  double ramp_uphill_deg = 0;    // the direction it rises toward, world frame [deg]
+  BatteryOverrides battery;      // `battery ...`; the command line's options win
+  std::vector<TimedEvent> events;  // sorted by time (stable)
 };
 
 // Parses scenario text. On error returns false and sets *error to

@@ -102,6 +102,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   WorldConfig wc = opt.world;
   if (wc.initial_joints_rad.empty()) wc.initial_joints_rad = sitting_joints(*model);
   World world(*model, wc, sc.obstacles);
+  if (sc.ramp_deg != 0) world.set_ramp(sc.ramp_deg, sc.ramp_uphill_deg);
   RangeFn range = [&world]() { return world.sonar_mm(); };
   std::unique_ptr<Driver> driver;
   if (opt.firmware_elf.empty()) {
@@ -116,6 +117,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   if (!driver->begin(&r.error)) return r;
   SensorOptions so = opt.sensors;
   so.imu_fitted = so.imu_fitted || sc.imu;
+  so.battery = sc.battery.under(opt.sensors.battery);
   RobotSensors sensors(*model, so);
   sensors.step(world, 0);  // at rest: the readings before the first step
 
@@ -129,7 +131,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   const double dt = wc.step_s;
   const long steps = std::lround(sc.duration_s / dt);
   const long trace_every = std::max(1L, std::lround(opt.trace_period_s / dt));
-  size_t next_send = 0;
+  size_t next_send = 0, next_event = 0;
   double yaw_unwrapped = 0, last_yaw = 0;
   bool first_row = true;
   bool touching_obstacle = false;
@@ -226,6 +228,11 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
       if (motion_s < 0 && !b.empty() && std::string("FBLRGIHJ").find(b[0]) != std::string::npos) motion_s = t;
       driver->send(b, uint64_t(std::llround(sc.sends[next_send].at_s * 1e6)));
       ++next_send;
+    }
+    for (; next_event < sc.events.size() && sc.events[next_event].at_s <= t + 1e-12; ++next_event) {
+      const TimedEvent& e = sc.events[next_event];
+      if (e.kind == TimedEvent::kShove) world.shove(e.impulse_ns);
+      else world.upright();
     }
     driver->set_sensors(sensors.inputs());
     driver->advance_to(t_us);

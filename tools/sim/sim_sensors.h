@@ -26,6 +26,17 @@ struct BatteryOverrides {
   double soc = -1;
   double divider = 0;
   int adc_pin = -1;
+  // top, with these values where top has none (the scenario's pack under
+  // the command line's options).
+  BatteryOverrides under(BatteryOverrides top) const {
+    if (top.cells <= 0) top.cells = cells;
+    if (top.capacity_mah <= 0) top.capacity_mah = capacity_mah;
+    if (top.internal_ohm < 0) top.internal_ohm = internal_ohm;
+    if (top.soc < 0) top.soc = soc;
+    if (top.divider <= 0) top.divider = divider;
+    if (top.adc_pin < 0) top.adc_pin = adc_pin;
+    return top;
+  }
   BatteryConfig apply(BatteryConfig c) const {
     if (cells > 0) c.cells = cells;
     if (capacity_mah > 0) c.capacity_mah = capacity_mah;

@@ -45,7 +45,15 @@ void World::set_pulses(const ChannelPulse* pulses) {
 
 void World::step() {
   Impl& w = *impl_;
+  if (w.shove_pending) {
+    w.body->addBaseForce(w.shove_force);
+    w.body->addBaseTorque(w.shove_torque);
+  }
   w.world.stepSimulation(btScalar(cfg_.step_s), 0, btScalar(cfg_.step_s));
+  if (w.shove_pending) {
+    w.body->clearForcesAndTorques();
+    w.shove_pending = false;
+  }
   ++steps_;
   // A joint motor's applied impulse over the step is torque x step [N m s].
   for (const JointDrive& d : w.drive)
@@ -84,11 +92,13 @@ BodyState World::body() const {
   s.vel_mm_s = to_mm(mb.getBaseVel());
   const btQuaternion q = mb.getWorldToBaseRot().inverse();  // body -> world
   btScalar yaw, pitch, roll;
-  btMatrix3x3(q).getEulerZYX(yaw, pitch, roll);
+  // On a ramp the attitude is against gravity: body -> level.
+  const btMatrix3x3 rot = impl_->ramp ? impl_->world_to_level * btMatrix3x3(q) : btMatrix3x3(q);
+  rot.getEulerZYX(yaw, pitch, roll);
   s.roll_deg = double(roll) * 180.0 / M_PI;
   s.pitch_deg = double(pitch) * 180.0 / M_PI;
   s.yaw_deg = double(yaw) * 180.0 / M_PI;
-  const btVector3 up = quatRotate(q, btVector3(0, 0, 1));
+  const btVector3 up = impl_->ramp ? rot * btVector3(0, 0, 1) : quatRotate(q, btVector3(0, 0, 1));
   s.tilt_deg = std::acos(std::max(-1.0, std::min(1.0, double(up.z())))) * 180.0 / M_PI;
   return s;
 }

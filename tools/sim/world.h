@@ -94,6 +94,8 @@ class World {
   // One physics step of config().step_s.
   void step();
 
+  // Roll, pitch and tilt against gravity (on a ramp: not against the ground);
+  // position and yaw in the world frame, whose x, y are the ground's.
   BodyState body() const;
   // Joint j of leg `leg`, seed convention [rad]; and the servo's target.
   double joint_rad(int leg, int j) const;
@@ -129,6 +131,18 @@ class World {
   double joint_torque_nm(int leg, int j) const;
   double joint_speed_rad_s(int leg, int j) const;
   bool joint_on(int leg, int j) const;
+  // The ground slopes slope_deg, rising toward uphill_deg (world frame, 0:
+  // +x): gravity is tilted instead of the plane, so the world frame stays the
+  // ground's and everything on it (start pose, obstacles) is as on the flat
+  // (world_events.cpp).
+  void set_ramp(double slope_deg, double uphill_deg);
+  // An impulse [N s], world frame, at the centre of the body's top face,
+  // given over the next step.
+  void shove(const Vec& impulse_ns);
+  // Sets the robot back on its feet where its body is, heading kept, body
+  // parallel to the ground, legs in the starting (sitting) pose, at rest.
+  void upright();
+
   // Steps the exact (MLCP) solver could not solve, so Bullet solved them
   // with PGS instead (always 0 with Solver::kPgs).
   long solver_fallbacks() const;

@@ -98,6 +98,7 @@ World::World(const strider::RobotModel& model, const WorldConfig& cfg, const std
     for (int j = 0; j < dof; ++j) stand_q[size_t(i * dof + j)] = double(q[uint8_t(j)]);
   }
   start_q = cfg.initial_joints_rad.size() == size_t(joints_) ? cfg.initial_joints_rad : stand_q;
+  w.start_q = start_q;
 
   // The builder balances the robot (battery placement) so that, standing,
   // its CoM is where the gait parameters assume it (com_x_mm, com_y_mm): the
@@ -260,6 +261,7 @@ World::World(const strider::RobotModel& model, const WorldConfig& cfg, const std
     lowest = std::min(lowest, double(lo.z()) / kMm);
   }
   mb.setBasePos(btVector3(btScalar(bo.x * kMm), btScalar(bo.y * kMm), btScalar((0.5 - lowest) * kMm)));
+  w.start_base_z_m = (0.5 - lowest) * kMm;
   mb.updateCollisionObjectWorldTransforms(w2l, origin);
 
   // Motors, limp until the first pulse.

@@ -116,6 +116,14 @@ struct World::Impl {
   bool body_touch = false;
   double foot_radius_mm = 5;
   double body_half_z_mm = 15;
+  // world_events.cpp: the ramp (world -> level, a rotation that takes
+  // gravity's up to z), a pending shove, the start pose for upright().
+  bool ramp = false;
+  btMatrix3x3 world_to_level = btMatrix3x3::getIdentity();
+  bool shove_pending = false;
+  btVector3 shove_force{0, 0, 0}, shove_torque{0, 0, 0};
+  std::vector<double> start_q;  // joint k [rad], seed convention
+  double start_base_z_m = 0;
 };
 
 }  // namespace strider_sim

@@ -39,6 +39,7 @@ constexpr char kGait[] STRIDER_PROGMEM = "gait";
 constexpr char kGet[] STRIDER_PROGMEM = "get";
 constexpr char kHeight[] STRIDER_PROGMEM = "height";
 constexpr char kHelp[] STRIDER_PROGMEM = "help";
+constexpr char kLevel[] STRIDER_PROGMEM = "level";
 constexpr char kOff[] STRIDER_PROGMEM = "off";
 constexpr char kOn[] STRIDER_PROGMEM = "on";
 constexpr char kOsc[] STRIDER_PROGMEM = "osc";
@@ -148,6 +149,17 @@ inline ParseError parse_cal(const Token* t, uint8_t n, Command* cmd) {
   return ParseError::kBadArgument;
 }
 
+//! `level on` / `level off`.
+inline ParseError parse_level(const Token* t, uint8_t n, Command* cmd) {
+  cmd->kind = CommandKind::kLevel;
+  cmd->usage = Usage::kLevel;
+  if (n < 2) return ParseError::kMissingArgument;
+  const bool on = token_is(t[1], words::kOn);
+  if (!on && !token_is(t[1], words::kOff)) return ParseError::kBadArgument;
+  cmd->arg[0] = on ? 1 : 0;
+  return no_args(n, 2);
+}
+
 inline ParseError parse_avoid(const Token* t, uint8_t n, Command* cmd) {
   cmd->usage = Usage::kAvoid;
   if (n < 2) return ParseError::kMissingArgument;
@@ -251,6 +263,7 @@ inline ParseError parse_tokens(const Token* t, uint8_t n, const char* line, uint
   if (token_is(w, words::kAvoid)) return parse_avoid(t, n, cmd);
   if (token_is(w, words::kCal)) return parse_cal(t, n, cmd);
   if (token_is(w, words::kSet)) return parse_set(t, n, cmd);
+  if (token_is(w, words::kLevel)) return parse_level(t, n, cmd);
   if (token_is(w, words::kDeadman) && n >= 2 && token_is(t[1], words::kOff)) {
     cmd->kind = CommandKind::kDeadman;  // arg[0] = 0: off, from a checked line only (needs_checked_line())
     cmd->usage = Usage::kDeadman;

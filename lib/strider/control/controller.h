@@ -11,6 +11,7 @@
 //!   bool set_gait(const char* name);      // false: no such gait for this robot
 //!   bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw);  // [0.1 deg]; false: refused
 //!   bool set_body_height(int32_t height); // [0.1 mm]; false: out of the robot's range
+//!   bool set_level(bool on);              // hold the body level (level_body.h); false: no IMU
 //!   const char* gait_names();             // the robot's gaits, space-separated, in flash
 //!   const MotionReach& reach();           // heights and angles it reaches (motion_reach.h)
 //!   void apply_settings(const Settings& s);  // trims, oscillator, PWM frequency
@@ -241,6 +242,10 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
       case CommandKind::kHeight:
         if (!sink_.set_body_height(c.arg[0])) return refused(w, false);
         w.format(FlashText{text::kOkHeightFmt}, c.arg[0]);
+        return;
+      case CommandKind::kLevel:
+        if (!sink_.set_level(c.arg[0] != 0)) return fail(w, ControlError::kNoImu, FlashText{text::kNoImu});
+        w.text(FlashText{text::kOkLevel_}).text(c.arg[0] ? FlashText{text::kOn} : FlashText{text::kOff});
         return;
       case CommandKind::kAvoidEnable:
         settings_.avoid_enabled = uint8_t(c.arg[0]);

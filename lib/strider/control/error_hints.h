@@ -17,7 +17,7 @@ namespace text {
 
 //! Every command word, as `help` and `err 1` list them.
 constexpr char kCommandList[] STRIDER_PROGMEM =
-    "walk strafe turn vel stop relax speed gait pose height set get avoid deadman baud cal save status help";
+    "walk strafe turn vel stop relax speed gait pose height level set get avoid deadman baud cal save status help";
 
 //! The valid form of each command, in Usage order (command.h); command_line.h's
 //! ranges (test_command_parser checks that both ends are taken and no more).
@@ -41,6 +41,7 @@ constexpr char kUsageHints[] STRIDER_PROGMEM =
     "cal osc 20000000..30000000\0"
     "cal pwm 40..400\0"
     "set step_height|step_length|cycle|duty VALUE, set swing rectangle|semicircle|ellipse|cycloid|parabola|bezier\0"
+    "level on, level off\0"
     "";
 constexpr uint8_t kUsageHintCount = uint8_t(Usage::kEmptyLine);
 

@@ -42,6 +42,8 @@ constexpr char kServoFault[] STRIDER_PROGMEM = "servo fault: see pca9685= in sta
 constexpr char kFallen[] STRIDER_PROGMEM = "fallen: set the robot upright; relax and the rest work";
 constexpr char kBatteryCritical[] STRIDER_PROGMEM = "battery critical: charge or swap it; stop, relax and the rest work";
 constexpr char kOkAvoid_[] STRIDER_PROGMEM = "ok avoid ";
+constexpr char kOkLevel_[] STRIDER_PROGMEM = "ok level ";
+constexpr char kNoImu[] STRIDER_PROGMEM = "no imu: level needs an MPU-6050 on the I2C bus (status shows imu=)";
 constexpr char kOn[] STRIDER_PROGMEM = "on";
 constexpr char kOff[] STRIDER_PROGMEM = "off";
 constexpr char kOkCalStart[] STRIDER_PROGMEM = "ok cal start";

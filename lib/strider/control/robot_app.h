@@ -25,6 +25,7 @@
 #include "controller.h"
 #include "fall_detector.h"
 #include "gait_tuner.h"
+#include "level_body.h"
 #include "../sensing/attitude_filter.h"
 #include "model_constants.h"
 #include "servo_boards.h"
@@ -39,6 +40,7 @@ constexpr uint32_t kTickPeriodUs = 20000;  //!< control tick, 50 Hz [us]
 constexpr uint8_t kLinkPorts = 2;          //!< 0 = USB serial, 1 = Bluetooth (HC-05)
 constexpr uint8_t kAllPorts = 0xFF;        //!< send_line(): every port
 constexpr uint16_t kLineIdleMs = 300;      //!< a partial line older than this is dropped [ms]
+static_assert(kLevelTickS * 1e6 == double(kTickPeriodUs), "level_body.h's tick is RobotApp's");
 
 namespace app_text {
 constexpr char kInfoStrider[] STRIDER_PROGMEM = "info strider ";
@@ -75,6 +77,7 @@ constexpr char kBatteryMv[] STRIDER_PROGMEM = "battery_mv";
 constexpr char kImu[] STRIDER_PROGMEM = "imu";
 constexpr char kNone[] STRIDER_PROGMEM = "none";
 constexpr char kFallen[] STRIDER_PROGMEM = "fallen";
+constexpr char kLevel[] STRIDER_PROGMEM = "level";
 constexpr char kImuFmt[] STRIDER_PROGMEM = " roll=" "\2" " pitch=" "\2";  // ReplyWriter::format()
 constexpr char kInfoFall[] STRIDER_PROGMEM = "info fall";
 constexpr char kInfoUpright[] STRIDER_PROGMEM = "info fall cleared";
@@ -244,23 +247,34 @@ class RobotApp {
   }
   const BatteryMonitor& battery_monitor() const { return battery_; }
   //! Whether an MPU-6050 answered at start-up (the firmware probes the bus):
-  //! `status` then has `imu=none`, or `imu=ok` (`imu=fallen`) with roll and
-  //! pitch [deg]. Not called (the host tools): no imu field.
-  void set_imu_present(bool present) { imu_probed_ = true, imu_present_ = present; }
+  //! `status` then has `imu=none`, or `imu=ok` (`imu=fallen`, `imu=level`)
+  //! with roll and pitch [deg]. Not called (the host tools): no imu field.
+  //! With an IMU the filter learns the gyro's offset with fast gains until
+  //! the robot first stands (level_body.h).
+  void set_imu_present(bool present) {
+    imu_probed_ = true, imu_present_ = present;
+    if (!present) return;
+    attitude_.set_gains(LevelBody<S>::learning_gains(attitude_.gains(), true));
+    level_.start_learning();
+  }
   //! One IMU sample per tick, before tick() (nullptr: the read failed, the
   //! attitude holds). The attitude filter (sensing/attitude_filter.h) runs at
   //! the tick's period; a tilt past 50 deg for 0.2 s is a fall: `info fall`,
   //! the servos go limp and walking is refused (err 33) until the robot has
-  //! stood upright (under 20 deg) for 1 s: `info fall cleared`.
+  //! stood upright (under 20 deg) for 1 s: `info fall cleared`. With
+  //! `level on` the body's roll and pitch follow (level_body.h).
   template <typename Link>
   STRIDER_NOINLINE void imu(const ImuSample<S>* sample, Link& link) {
     if (sample == nullptr || !imu_present_) return;
     attitude_.update(*sample, scalar<S>(double(kTickPeriodUs) * 1e-6));
-    if (!attitude_.has_attitude() || !fall_.update(attitude_.tilt_rad())) return;
+    if (!attitude_.has_attitude()) return;
+    level_body();
+    if (!fall_.update(attitude_.tilt_rad())) return;
     notice(FlashText{fall_.fallen() ? app_text::kInfoFall : app_text::kInfoUpright}, link);
     controller_.set_fallen(fall_.fallen());
   }
   const AttitudeFilter<S>& attitude() const { return attitude_; }
+  const LevelBody<S>& level() const { return level_; }
   //! The divider and thresholds (the firmware: from its board file).
   void set_battery_config(const BatteryConfig& c) { battery_ = BatteryMonitor(c); }
 
@@ -379,6 +393,7 @@ class RobotApp {
     bool save_tuning() { return app_.tuner_.save(app_.motion_, app_.store_) == SettingsStatus::kOk; }
     bool set_body_pose(int32_t r, int32_t p, int32_t y) { return app_.motion_.set_body_pose(r, p, y); }
     bool set_body_height(int32_t h) { return app_.motion_.set_body_height(h); }
+    bool set_level(bool on) { return app_.set_level(on); }
     const char* gait_names() const { return strider::gait_names(app_.motion_.walker().leg_count()); }
     const MotionReach& reach() const { return app_.motion_.reach(); }
     void apply_settings(const Settings& s) { app_.stage_.set_settings(s); }
@@ -523,6 +538,29 @@ class RobotApp {
     if (controller_.tick(now_ms, sonar_.reading(now_us), w, walked_vy)) link.send_line(kAllPorts, line.buf);
   }
 
+  //! `level on|off`; false without an IMU. Off puts the body's roll and
+  //! pitch back to 0 (parallel to the feet), yaw and height kept.
+  bool set_level(bool on) {
+    if (!imu_present_) return false;
+    level_.set_enabled(on);
+    if (!on) motion_.set_body_tilt(S(0), S(0));
+    return true;
+  }
+  //! The IMU's part of a tick, with an attitude: the learning gains end once
+  //! the robot first stands; the level acts while it stands or walks, servos on.
+  void level_body() {
+    const GaitState st = motion_.walker().engine().state();
+    if (level_.learning() && st == GaitState::kStanding) {
+      level_.stop_learning();
+      attitude_.set_gains(LevelBody<S>::learning_gains(attitude_.gains(), false));
+    }
+    if (fall_.fallen() || !stage_.all_on() || st == GaitState::kSitting || st == GaitState::kStandingUp ||
+        st == GaitState::kSittingDown)
+      return;
+    S roll = motion_.offsets().roll_rad, pitch = motion_.offsets().pitch_rad;
+    if (level_.step(attitude_.roll_rad(), attitude_.pitch_rad(), &roll, &pitch)) motion_.set_body_tilt(roll, pitch);
+  }
+
   //! After relax, the next motion command switches the servos on again.
   void wake() {
     if (!stage_.all_on() && !stage_.starting()) stage_.begin_soft_start(last_tick_us_ / 1000u);
@@ -579,7 +617,8 @@ class RobotApp {
     if (battery_.present()) w.field(FlashText{app_text::kBatteryMv}, battery_.mv());
     if (imu_probed_) {
       w.field_text(FlashText{app_text::kImu}, !imu_present_ ? FlashText{app_text::kNone}
-                                              : fall_.fallen() ? FlashText{app_text::kFallen} : FlashText{app_text::kOk});
+                                              : fall_.fallen() ? FlashText{app_text::kFallen}
+                                              : level_.enabled() ? FlashText{app_text::kLevel} : FlashText{app_text::kOk});
       constexpr S kDeg = scalar<S>(57.29577951308232);
       if (imu_present_ && attitude_.has_attitude())
         w.format(FlashText{app_text::kImuFmt}, to_tenths(attitude_.roll_rad() * kDeg), to_tenths(attitude_.pitch_rad() * kDeg));
@@ -597,6 +636,7 @@ class RobotApp {
   BatteryMonitor battery_;
   AttitudeFilter<S> attitude_;
   FallDetector<S> fall_;
+  LevelBody<S> level_;
   bool imu_probed_ = false;
   bool imu_present_ = false;
   ServoStage<S, kJoints, kStoredChannels> stage_;

@@ -20,7 +20,8 @@ enum class ControlError : uint8_t {
   kTuneRefused = 25,     //!< a live gait parameter outside what the walker allows (the reply gives the range)
   kServoFault = 31,      //!< walking while a servo board does not answer (or is starting again)
   kBatteryCritical = 32, //!< walking on a critically low battery (RobotApp's BatteryMonitor)
-  kFallen = 33           //!< walking while the robot lies tipped over (RobotApp's FallDetector)
+  kFallen = 33,          //!< walking while the robot lies tipped over (RobotApp's FallDetector)
+  kNoImu = 34            //!< `level on` without an MPU-6050 (RobotApp: none answered at start-up)
 };
 
 enum class RobotMode : uint8_t { kStanding = 0, kWalking = 1, kRelaxed = 2, kCalibrating = 3 };

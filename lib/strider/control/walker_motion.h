@@ -151,6 +151,15 @@ class WalkerMotion {
     return try_offsets(o);
   }
 
+  //! Body roll and pitch [rad], yaw and height kept (level_body.h); refused
+  //! when a standing foot would be out of reach.
+  bool set_body_tilt(S roll_rad, S pitch_rad) {
+    BodyOffsets<S> o = offsets_;
+    o.roll_rad = roll_rad;
+    o.pitch_rad = pitch_rad;
+    return try_offsets(o);
+  }
+
   //! Body height above the ground [0.1 mm]; refused when out of reach.
   bool set_body_height(int32_t decimm) {
     if (decimm <= 0) return false;

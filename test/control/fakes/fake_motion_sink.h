@@ -47,6 +47,14 @@ struct FakeMotionSink {
     height = h;
     return true;
   }
+  // `level on|off`: refused (false) without an IMU.
+  bool has_imu = false;
+  bool level = false;
+  bool set_level(bool on) {
+    if (!has_imu) return false;
+    level = on;
+    return true;
+  }
   // What it pretends the legs reach: 10..150 mm (set_body_height() above).
   strider::MotionReach reach_mm_deg{10, 150, {-20, -15, -30}, {20, 12, 30}};
   const char* gait_names() const { return "walk trot pace crawl"; }

@@ -224,8 +224,8 @@ def replies_expected(payload: str) -> int:
 OK_WORD = {
     "walk": "move", "strafe": "move", "turn": "move", "vel": "move", "velocity": "move",
     "stop": "stop", "relax": "relax", "speed": "speed", "gait": "gait", "pose": "pose", "height": "height",
-    "avoid": "avoid", "deadman": "deadman", "baud": "baud", "cal": "cal", "save": "saved", "status": "status",
-    "help": "help", "w": "light", "u": "light", "v": "light", "x": "light",
+    "avoid": "avoid", "level": "level", "deadman": "deadman", "baud": "baud", "cal": "cal", "save": "saved",
+    "status": "status", "help": "help", "w": "light", "u": "light", "v": "light", "x": "light",
 }
 
 
