@@ -45,6 +45,7 @@ ERROR_CODES = {
     31: "servo fault",
     32: "battery critical",
     33: "fallen",
+    34: "no imu",
 }
 
 Value = Union[int, float, str]
