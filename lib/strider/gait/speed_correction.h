@@ -32,7 +32,7 @@ struct SpeedCorrection {
   uint16_t turn_per10k;        //!< achieved / commanded turn rate [1/10000]
 };
 
-constexpr uint8_t kSpeedCorrectionCount = 1;
+constexpr uint8_t kSpeedCorrectionCount = 2;
 
 //! In flash on the AVR: read through speed_correction_of().
 constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGMEM = {
@@ -43,6 +43,12 @@ constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGM
     // where library mode drifts 0.25 % (at 329.8 its trot yawed 8 deg). turn 60 -> 52.7 deg/s;
     // corrected: 60.4 deg/s.
     {"sprawl8", "trot", 4697, 8780},
+    // sprawl8 crawl, steady speeds: walk 15.5/31/38/66/82 -> 6.7/14.0/18.7/
+    // 26.6/33.1 mm/s (0.43/0.45/0.49/0.40/0.40: the ratio falls above
+    // ~25 mm/s, so the pad trots there, gait_choice.h); 0.47 holds the pad's
+    // 10 % (15.5 mm/s) and `walk` up to ~25 mm/s within 10 %. turn 6/12/24 ->
+    // 5.8/11.8/23.7 deg/s (0.98).
+    {"sprawl8", "crawl", 4700, 9830},
 };
 
 //! The ratios of (robot, gait) into *linear and *turn [1/10000]; 10000 for a
@@ -52,13 +58,7 @@ inline void speed_correction_of(const char* robot, const char* gait, uint16_t* l
   *turn = 10000;
   for (uint8_t i = 0; i < kSpeedCorrectionCount; ++i) {
     SpeedCorrection c;
-#if defined(__AVR__)
-    uint8_t* to = reinterpret_cast<uint8_t*>(&c);
-    const uint8_t* from = reinterpret_cast<const uint8_t*>(&kSpeedCorrections[i]);
-    for (uint8_t k = 0; k < sizeof c; ++k) to[k] = flash_u8(from + k);
-#else
-    c = kSpeedCorrections[i];
-#endif
+    flash_copy(&c, &kSpeedCorrections[i], sizeof c);
     if (strcmp(c.robot, robot) == 0 && strcmp(c.gait, gait) == 0) {
       *linear = c.linear_per10k;
       *turn = c.turn_per10k;
