@@ -3,8 +3,12 @@
 //! down (hysteresis), so that a speed near the switch does not flip between
 //! gaits. A model listed here has a slow gait whose top body speed is below
 //! the pad's 100 % (control/robot_mode.h's RcLimits) and a fast gait that
-//! makes it; pressing a pad button at a speed over `up` switches slow ->
-//! fast, one under `down` (on both axes) switches back. A model not listed,
+//! makes it; pressing a pad button at a forward (or backward) speed or a
+//! turn rate over `up` switches slow -> fast, one under `down` on both
+//! switches back. Sideways speed does not count: sprawl8 trotting sideways
+//! at 155 mm/s drifts 13 % forward and turns 6 deg (sprawl8_strafe), its
+//! crawl strafes straight (at its top speed, ~37 mm/s), so the pad's
+//! sideways buttons walk the slow gait. A model not listed,
 //! or a gait that is neither of its pair (one the user chose with `gait`),
 //! keeps its gait.
 //!
@@ -30,7 +34,7 @@ struct GaitChoice {
   char robot[10];                //!< model name (as kGaitParams)
   char slow[kGaitNameBytes];     //!< the gait at low speed (the model's default)
   char fast[kGaitNameBytes];     //!< the gait above `up`
-  uint16_t up_linear;            //!< slow -> fast above this forward/sideways speed [0.1 mm/s]
+  uint16_t up_linear;            //!< slow -> fast above this forward speed [0.1 mm/s]
   uint16_t down_linear;          //!< fast -> slow below this one (and down_turn) [0.1 mm/s]
   uint16_t up_turn;              //!< slow -> fast above this turn rate [0.1 deg/s]
   uint16_t down_turn;            //!< fast -> slow below this one (and down_linear) [0.1 deg/s]
@@ -52,9 +56,9 @@ inline int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
 //! (kGaitNameBytes) when that is another gait; false: keep the gait. A
 //! standstill (all zero) keeps the gait.
 inline bool gait_choice_for(const char* robot, const char* gait, int32_t vx, int32_t vy, int32_t wz, char* to) {
-  const int32_t linear = detail::abs32(vx) > detail::abs32(vy) ? detail::abs32(vx) : detail::abs32(vy);
+  const int32_t linear = detail::abs32(vx);
   const int32_t turn = detail::abs32(wz);
-  if (linear == 0 && turn == 0) return false;
+  if (linear == 0 && turn == 0 && vy == 0) return false;
   for (uint8_t i = 0; i < kGaitChoiceCount; ++i) {
     GaitChoice c;
     flash_copy(&c, &kGaitChoices[i], sizeof c);
