@@ -32,7 +32,7 @@ struct SpeedCorrection {
   uint16_t turn_per10k;        //!< achieved / commanded turn rate [1/10000]
 };
 
-constexpr uint8_t kSpeedCorrectionCount = 2;
+constexpr uint8_t kSpeedCorrectionCount = 4;
 
 //! In flash on the AVR: read through speed_correction_of().
 constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGMEM = {
@@ -49,6 +49,14 @@ constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGM
     // 10 % (15.5 mm/s) and `walk` up to ~25 mm/s within 10 %. turn 6/12/24 ->
     // 5.8/11.8/23.7 deg/s (0.98).
     {"sprawl8", "crawl", 4700, 9830},
+    // hexapod18 tripod, steady speeds (the pad): walk 15.5/31/77.5/155 ->
+    // 10.4/25.1/69.6/144.5 mm/s, short by ~5-10 mm/s rather than by a
+    // ratio; 0.90 holds from ~50 mm/s up. turn 6/12/30 -> 5.3/11.4/28.1
+    // deg/s (0.94 from 12 deg/s up; its limit ~37.5 deg/s).
+    {"hexapod18", "tripod", 9000, 9450},
+    // spider12 walk, steady: walk 15.5/31 -> 13.9/28.2 mm/s (0.90; its limit
+    // ~28 mm/s); turn 6/12 -> 5.6/11.7 deg/s (0.96; its limit ~12.5 deg/s).
+    {"spider12", "walk", 9000, 9600},
 };
 
 //! The ratios of (robot, gait) into *linear and *turn [1/10000]; 10000 for a
