@@ -113,6 +113,19 @@ TEST(Controller, RcButtonsScaleWithSpeedAndStaySilent) {
   EXPECT_EQ(r.sink.velocity.wz, -600);
 }
 
+// An RC button's speed goes to the sink's gait choice (gait/gait_choice.h)
+// before the walk; a text `walk` keeps the gait the user chose.
+TEST(Controller, RcButtonsOfferTheirSpeedForAGaitChoice) {
+  Rig r;
+  r.send("walk 100\n");
+  EXPECT_TRUE(r.sink.pad_speeds.empty());
+  r.send("5F");
+  ASSERT_EQ(r.sink.pad_speeds.size(), 1u);
+  EXPECT_EQ(r.sink.pad_speeds[0].vx, 1550 * 50 / 100);
+  r.send("S");  // the stop keeps the gait
+  EXPECT_EQ(r.sink.pad_speeds.size(), 1u);
+}
+
 TEST(Controller, DeadmanStopsSilentLink) {
   Rig r;  // defaults: 1000 ms
   r.send("F");

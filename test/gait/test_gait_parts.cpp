@@ -6,6 +6,7 @@
 #include <random>
 
 #include "gait/body_shift.h"
+#include "gait/gait_choice.h"
 #include "gait/gait_library.h"
 #include "gait/gait_params.h"
 #include "gait/phase.h"
@@ -138,6 +139,30 @@ TEST(GaitTable, RelabelLikeSeed000) {
 }
 
 // ---- phase clock -----------------------------------------------------------------
+
+// The pad's gait for sprawl8: crawl -> trot above 25 mm/s or 25 deg/s,
+// back below 18 mm/s and 18 deg/s; between, the gait walked stays.
+// Sideways speed does not count (trot drifts sideways; the crawl does not).
+TEST(GaitChoice, Sprawl8ChangesUpAndDownWithHysteresis) {
+  char to[strider::kGaitNameBytes] = "";
+  using strider::gait_choice_for;
+  EXPECT_FALSE(gait_choice_for("sprawl8", "crawl", 155, 0, 0, to));  // 10 %: crawl
+  EXPECT_FALSE(gait_choice_for("sprawl8", "crawl", 250, 0, 0, to));  // at the change: still crawl
+  EXPECT_TRUE(gait_choice_for("sprawl8", "crawl", 310, 0, 0, to));   // 20 %: trot
+  EXPECT_STREQ(to, "trot");
+  EXPECT_TRUE(gait_choice_for("sprawl8", "crawl", -1550, 1550, 0, to));  // back and left: trot
+  EXPECT_FALSE(gait_choice_for("sprawl8", "crawl", 0, -1550, 0, to));  // sideways: crawl
+  EXPECT_TRUE(gait_choice_for("sprawl8", "crawl", 0, 0, -300, to));  // turning at 50 %
+  EXPECT_FALSE(gait_choice_for("sprawl8", "crawl", 0, 0, 240, to));
+  EXPECT_FALSE(gait_choice_for("sprawl8", "trot", 200, 0, 0, to));   // in the band: stays trot
+  EXPECT_FALSE(gait_choice_for("sprawl8", "trot", 100, 0, 200, to)); // turning too fast for crawl
+  EXPECT_TRUE(gait_choice_for("sprawl8", "trot", -155, 0, 60, to));  // 10 %: back to crawl
+  EXPECT_STREQ(to, "crawl");
+  EXPECT_TRUE(gait_choice_for("sprawl8", "trot", 0, 1550, 0, to));   // sideways: back to crawl
+  EXPECT_FALSE(gait_choice_for("sprawl8", "trot", 0, 0, 0, to));     // standing still keeps it
+  EXPECT_FALSE(gait_choice_for("sprawl8", "pace", 1550, 0, 0, to));  // a gait the user chose
+  EXPECT_FALSE(gait_choice_for("dog12", "walk", 1550, 0, 0, to));    // a model not listed
+}
 
 TEST(Phase, CrossingAndWrap) {
   PhaseClock clock;

@@ -2,36 +2,74 @@
 """Re-measures the speed corrections of lib/strider/gait/speed_correction.h.
 
 For a model and gait: the model's firmware on the virtual Mega (firmware
-mode), the gait, then `walk V` (or `turn W`) held 7 s from standing; prints
-the commanded and achieved speeds (metrics.json: speed_mm_s, the best 2 s
-window; yaw_rate_deg_s), the error, and achieved/commanded x the ratio in
-force, the table's new entry. About 2 s of CPU a run.
+mode), the gait, then `walk V` (or `turn W`, or an RC pad button at a
+slider step) held 7 s from standing; prints the commanded and achieved
+speeds, the error, and achieved/commanded x the ratio in force, the table's
+new entry. About 2 s of CPU a run.
+
+Achieved is the steady speed: the body's displacement (or unwrapped yaw)
+from 3 s after the command, once the speed ramp is over, to the stop
+(trace.csv), over that time. metrics.json's best 2 s window flatters gaits
+that rock the body to and fro; it is printed alongside (best2s).
 
   tools/sim/measure_speed.py --sim out/build/tools/sim/strider-sim \\
       --elf out/build/src/strider_firmware_sprawl8.elf --robot sprawl8 \\
       --gait trot --walk 155 --turn 60 --ratio 4697 --turn-ratio 8780
+  tools/sim/measure_speed.py ... --robot sprawl8 --pad F --slider q
 """
 import argparse
+import csv
 import json
+import math
 import os
 import subprocess
 import tempfile
 
+COMMAND_S = 4.0   # the command (or button) goes out
+STEADY_S = 7.0    # the ramp is over: the steady window starts
+STOP_S = 11.0     # stop: the window ends
 
-def run(sim, elf, robot, gait, command):
+
+def steady(trace_path, t0=STEADY_S, t1=STOP_S):
+    """Mean speed [mm/s], mean yaw rate [deg/s] and lateral drift [mm] from t0 to t1."""
+    rows = []
+    with open(trace_path) as f:
+        for r in csv.DictReader(f):
+            t = float(r["t"])
+            if t0 <= t <= t1:
+                rows.append((t, float(r["x_mm"]), float(r["y_mm"]), float(r["yaw_deg"])))
+    (ta, xa, ya, _), (tb, xb, yb, _) = rows[0], rows[-1]
+    yaw = 0.0
+    for (_, _, _, p), (_, _, _, q) in zip(rows, rows[1:]):
+        d = q - p
+        yaw += d - 360.0 * round(d / 360.0)
+    dt = tb - ta
+    dist = math.hypot(xb - xa, yb - ya)
+    # Drift: the displacement across the start heading.
+    h = math.radians(rows[0][3])
+    lateral = -(xb - xa) * math.sin(h) + (yb - ya) * math.cos(h)
+    return dist / dt, yaw / dt, lateral, dist
+
+
+def run(sim, elf, robot, gait, command, slider=""):
     with tempfile.TemporaryDirectory() as d:
         sc = os.path.join(d, "run.scenario")
         with open(sc, "w") as f:
-            f.write(f"robot {robot}\nduration 12\n"
-                    "at 0.2 send $deadman off*cb77\\n\n"
-                    f"at 0.4 send gait {gait}\\n\n"
-                    f"at 4 send {command}\\n\nat 11 send stop\\n\n")
+            f.write(f"robot {robot}\nduration {STOP_S + 1:g}\n"
+                    "at 0.2 send $deadman off*cb77\\n\n")
+            if gait:
+                f.write(f"at 0.4 send gait {gait}\\n\n")
+            if slider:
+                f.write(f"at 0.6 send {slider}\n")
+            end = "S" if slider else "stop\\n"
+            f.write(f"at {COMMAND_S:g} send {command}\nat {STOP_S:g} send {end}\n")
         args = [sim, sc, "--out", os.path.join(d, "out"), "--quiet"]
         if elf:
             args += ["--firmware", elf]
         subprocess.run(args, check=True)
         with open(os.path.join(d, "out", "metrics.json")) as f:
-            return json.load(f)
+            m = json.load(f)
+        return m, steady(os.path.join(d, "out", "trace.csv"))
 
 
 def main():
@@ -39,23 +77,30 @@ def main():
     p.add_argument("--sim", required=True)
     p.add_argument("--elf", default="", help="firmware ELF (default: library mode)")
     p.add_argument("--robot", required=True)
-    p.add_argument("--gait", required=True)
+    p.add_argument("--gait", default="", help="gait (default: the model's, or the pad's choice)")
     p.add_argument("--walk", type=float, help="forward speed [mm/s]")
     p.add_argument("--turn", type=float, help="turn rate [deg/s]")
+    p.add_argument("--pad", help="RC button: F (forward) or G (turn anticlockwise)")
+    p.add_argument("--slider", default="q", help="RC slider byte: 0-9, q (100 %%)")
     p.add_argument("--ratio", type=float, default=10000, help="linear ratio in force [1/10000]")
     p.add_argument("--turn-ratio", type=float, default=10000, help="turn ratio in force [1/10000]")
     a = p.parse_args()
-    if a.walk:
-        m = run(a.sim, a.elf, a.robot, a.gait, f"walk {a.walk:g}")
-        got = m["speed_mm_s"]
-        drift = 100 * abs(m["lateral_drift_mm"]) / max(m["distance_mm"], 1e-9)
-        print(f"{a.robot} {a.gait} walk {a.walk:g} mm/s -> {got:.1f} mm/s ({100 * (got / a.walk - 1):+.1f} %), "
-              f"drift {drift:.1f} %, ratio {a.ratio * got / a.walk:.0f}")
-    if a.turn:
-        m = run(a.sim, a.elf, a.robot, a.gait, f"turn {a.turn:g}")
-        got = m["yaw_rate_deg_s"]
-        print(f"{a.robot} {a.gait} turn {a.turn:g} deg/s -> {got:.1f} deg/s ({100 * (got / a.turn - 1):+.1f} %), "
-              f"360 deg in {360 / got if got else float('inf'):.2f} s, ratio {a.turn_ratio * got / a.turn:.0f}")
+    pct = 100 if a.slider == "q" else 10 * int(a.slider)
+    name = f"{a.robot} {a.gait or '(default)'}"
+    walk = a.walk or (155 * pct / 100 if a.pad == "F" else None)
+    turn = a.turn or (60 * pct / 100 if a.pad == "G" else None)
+    if walk:
+        cmd = ("F", a.slider) if a.pad else (f"walk {walk:g}\\n", "")
+        m, (got, _, lateral, dist) = run(a.sim, a.elf, a.robot, a.gait, *cmd)
+        drift = 100 * abs(lateral) / max(dist, 1e-9)
+        print(f"{name} walk {walk:g} mm/s -> {got:.1f} mm/s ({100 * (got / walk - 1):+.1f} %), "
+              f"drift {drift:.1f} %, best2s {m['speed_mm_s']:.1f}, ratio {a.ratio * got / walk:.0f}")
+    if turn:
+        cmd = ("G", a.slider) if a.pad else (f"turn {turn:g}\\n", "")
+        m, (_, got, _, _) = run(a.sim, a.elf, a.robot, a.gait, *cmd)
+        print(f"{name} turn {turn:g} deg/s -> {got:.1f} deg/s ({100 * (got / turn - 1):+.1f} %), "
+              f"360 deg in {360 / got if got else float('inf'):.2f} s, best2s {m['yaw_rate_deg_s']:.1f}, "
+              f"ratio {a.turn_ratio * got / turn:.0f}")
 
 
 if __name__ == "__main__":

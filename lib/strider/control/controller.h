@@ -9,6 +9,7 @@
 //!   void stand();                         // stop walking and stand
 //!   void relax();                         // servos limp
 //!   bool set_gait(const char* name);      // false: no such gait for this robot
+//!   void choose_pad_gait(const Twist& v); // an RC button's speed: the gait for it (gait/gait_choice.h)
 //!   bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw);  // [0.1 deg]; false: refused
 //!   bool set_body_height(int32_t height); // [0.1 mm]; false: out of the robot's range
 //!   bool set_level(bool on);              // hold the body level (level_body.h); false: no IMU
@@ -190,7 +191,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
     if (mode_ == RobotMode::kWalking || mode_ == RobotMode::kRelaxed) mode_ = RobotMode::kStanding;
   }
 
-  void move(const Twist& t, ReplyWriter& w) {
+  //! pad: an RC button, whose speed may change the gait (gait/gait_choice.h).
+  void move(const Twist& t, ReplyWriter& w, bool pad = false) {
     if (mode_ == RobotMode::kCalibrating) return fail(w, ControlError::kBusy, FlashText{text::kCalibrating});
     const bool still = t.vx == 0 && t.vy == 0 && t.wz == 0;
     if (servo_fault_ && !still) return fail(w, ControlError::kServoFault, FlashText{text::kServoFault});
@@ -201,6 +203,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
       stop();
     } else {
       mode_ = RobotMode::kWalking;
+      if (pad) sink_.choose_pad_gait(cmd_);
       sink_.set_velocity(cmd_);  // avoidance refines it on the next tick
     }
     w.format(FlashText{text::kOkMoveFmt}, t.vx, t.vy, t.wz);
@@ -212,7 +215,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
         const RcLimits lim;
         const int32_t s = speed_pct_;
         return move(Twist{c.arg[0] * lim.linear * s / 100, c.arg[1] * lim.linear * s / 100,
-                          c.arg[2] * lim.turn * s / 100}, w);
+                          c.arg[2] * lim.turn * s / 100}, w, true);
       }
       case CommandKind::kMove: return move(Twist{c.arg[0], c.arg[1], c.arg[2]}, w);
       case CommandKind::kStop: stop(); w.text(FlashText{text::kOkStop}); return;

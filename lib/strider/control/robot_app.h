@@ -386,6 +386,10 @@ class RobotApp {
       app_.tuner_.use_gait(app_.motion_, app_.store_);
       return true;
     }
+    void choose_pad_gait(const Twist& v) {
+      char name[kGaitNameBytes];
+      if (app_.motion_.pad_gait(v, name)) set_gait(name);
+    }
     const char* gait_name() const { return app_.motion_.gait().name; }
     bool tune(TuneParam p, int32_t v) { return app_.tuner_.set(app_.motion_, p, v); }
     TuneRange tune_range(TuneParam p) const { return app_.tuner_.range(app_.motion_, p); }

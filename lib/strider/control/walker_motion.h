@@ -13,6 +13,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "../gait/gait_choice.h"
 #include "../gait/gait_library.h"
 #include "../gait/gait_params.h"
 #include "../gait/speed_correction.h"
@@ -96,6 +97,12 @@ class WalkerMotion {
   int32_t body_speed(int32_t gait_tenths, bool turn = false) const {
     const uint16_t p = turn ? turn_per10k_ : linear_per10k_;
     return p == 0 ? gait_tenths : int32_t(int64_t(gait_tenths) * p / 10000);
+  }
+
+  //! The gait the RC pad walks body speed v in (gait_choice.h): true and
+  //! its name in `to` (kGaitNameBytes) when that is not the gait walked now.
+  bool pad_gait(const Twist& v, char* to) const {
+    return robot_ != nullptr && gait_choice_for(robot_, gait().name, v.vx, v.vy, v.wz, to);
   }
 
   //! Stop stepping; the feet finish their swing and the robot stands.
