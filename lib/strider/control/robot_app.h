@@ -578,6 +578,14 @@ class RobotApp {
     const bool checked = (level_cal_port_ & kLevelCalChecked) != 0;
     ReplyWriter w(reply_buf_, uint16_t(sizeof reply_buf_ - (checked ? kLineCheckBytes : 0)));
     controller_.level_cal_done(st, x, y, w);
+    if (st == LevelCalStatus::kDone) {
+      // The attitude again from the corrected accelerometer (the next
+      // sample), the gyro's bias kept: the offset's step would otherwise
+      // take the filter's 2 s time constant and overshoot.
+      const Vec3<S> bias = attitude_.gyro_bias_rad_s();
+      attitude_.reset();
+      attitude_.set_gyro_bias(bias);
+    }
     if (checked) append_line_check(reply_buf_, w.length());
     link.send_line(uint8_t(level_cal_port_ & ~kLevelCalChecked), reply_buf_);
   }

@@ -7,11 +7,13 @@
 //! ground's. On level ground the true x and y are 0, so the mean reading is
 //! the offset; subtracting it from every sample levels the filter's idea of
 //! level. kLevelCalSamples readings are averaged (one second at the 50 Hz
-//! tick), each rounded to 1 mg (0.06 deg). A reading that turns (the gyro,
-//! less the filter's bias estimate, past kLevelCalMaxRateRadS on an axis) is
-//! a robot that moves: kMoving. A reading past kLevelCalMaxMg on x or y, or a
-//! mean past kLevelCalMaxMeanMg (5 deg), or z under kLevelCalMinUpG, is a
-//! robot that does not stand level: kNotLevel. Either ends the run; nothing is kept.
+//! tick), each rounded to 1 mg (0.06 deg). A reading that tilts (the gyro's
+//! x or y, less the filter's bias estimate, past kLevelCalMaxRateRadS) is a
+//! robot that moves: kMoving. The rate about z is not judged: the filter
+//! cannot learn its offset (it is along gravity; up to 20 deg/s on a part as
+//! it comes), and a turn about the vertical does not change what x and y read. A reading past kLevelCalMaxMg on x or y, or a
+//! mean past kLevelCalMaxMeanMg (5 deg), or z further than kLevelCalMaxUpErrG
+//! from 1 g, is a robot that does not stand level: kNotLevel. Either ends the run; nothing is kept.
 #ifndef STRIDER_SENSING_LEVEL_CALIBRATION_H
 #define STRIDER_SENSING_LEVEL_CALIBRATION_H
 
@@ -26,8 +28,8 @@ namespace strider {
 constexpr uint8_t kLevelCalSamples = 50;       //!< readings averaged (1 s at the 50 Hz tick)
 constexpr int16_t kLevelCalMaxMeanMg = 87;     //!< |mean| on x or y: sin(5 deg) g [mg]
 constexpr int16_t kLevelCalMaxMg = 250;        //!< |reading| on x or y [mg]; 50 x 250 fits an int16 sum
-constexpr double kLevelCalMinUpG = 0.8;        //!< z must read at least this [g] (upright, not falling)
-constexpr double kLevelCalMaxRateRadS = 0.0524;  //!< |rate| on any axis [rad/s] (3 deg/s)
+constexpr double kLevelCalMaxUpErrG = 0.2;     //!< z within this of 1 g [g] (upright, not bouncing or falling)
+constexpr double kLevelCalMaxRateRadS = 0.0524;  //!< |rate| about x or y [rad/s] (3 deg/s)
 
 enum class LevelCalStatus : uint8_t {
   kIdle = 0,        //!< no run (none started, or the last one ended)
@@ -55,10 +57,10 @@ class LevelCalibration {
     if (n_ == 0) return LevelCalStatus::kIdle;
     const S lim = scalar<S>(kLevelCalMaxRateRadS);
     const Vec3<S> w = s.gyro_rad_s - gyro_bias_rad_s;
-    if (!(abs(w.x) < lim && abs(w.y) < lim && abs(w.z) < lim)) return end(LevelCalStatus::kMoving);
+    if (!(abs(w.x) < lim && abs(w.y) < lim)) return end(LevelCalStatus::kMoving);
     int16_t x = 0, y = 0;
     if (!to_mg(s.accel_m_s2.x, &x) || !to_mg(s.accel_m_s2.y, &y) ||
-        !(scalar<S>(kLevelCalMinUpG * kStandardGravity) < s.accel_m_s2.z))
+        !(abs(s.accel_m_s2.z - scalar<S>(kStandardGravity)) < scalar<S>(kLevelCalMaxUpErrG * kStandardGravity)))
       return end(LevelCalStatus::kNotLevel);
     sum_x_ = int16_t(sum_x_ + x);
     sum_y_ = int16_t(sum_y_ + y);
