@@ -174,6 +174,29 @@ TYPED_TEST(LevelCalibrationTest, AMeanPastFiveDegreesIsNotLevel) {
   EXPECT_EQ(x, -87);
 }
 
+// The caller's tag (0..3) survives the run and its end; it does not count.
+TYPED_TEST(LevelCalibrationTest, TheTagIsKept) {
+  using S = TypeParam;
+  for (uint8_t tag = 0; tag < 4; ++tag) {
+    LevelCalibration<S> c;
+    c.start(tag);
+    EXPECT_EQ(c.tag(), tag);
+    int8_t x = 0, y = 0;
+    int k = 0;
+    LevelCalStatus st = LevelCalStatus::kCollecting;
+    while (st == LevelCalStatus::kCollecting) {
+      st = c.add(sample<S>(-3, 4, 1, 0, 0, 0), Vec3<S>(), &x, &y);
+      ++k;
+    }
+    EXPECT_EQ(st, LevelCalStatus::kDone);
+    EXPECT_EQ(k, strider::kLevelCalSamples);
+    EXPECT_EQ(x, -3);
+    EXPECT_EQ(y, 4);
+    EXPECT_EQ(c.tag(), tag);
+    EXPECT_FALSE(c.running());
+  }
+}
+
 // Float garbage: a NaN or infinite reading is a refusal, never an offset.
 TEST(LevelCalibrationFloat, NanAndInfinityAreRefused) {
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();

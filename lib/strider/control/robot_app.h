@@ -41,6 +41,7 @@ constexpr uint8_t kLinkPorts = 2;          //!< 0 = USB serial, 1 = Bluetooth (H
 constexpr uint8_t kAllPorts = 0xFF;        //!< send_line(): every port
 constexpr uint16_t kLineIdleMs = 300;      //!< a partial line older than this is dropped [ms]
 static_assert(kLevelTickS * 1e6 == double(kTickPeriodUs), "level_body.h's tick is RobotApp's");
+static_assert(kLinkPorts <= 2, "cal level keeps the port in one bit (RobotApp::level_cal())");
 
 namespace app_text {
 constexpr char kInfoStrider[] STRIDER_PROGMEM = "info strider ";
@@ -556,14 +557,15 @@ class RobotApp {
   }
   //! `cal level`: measuring starts when the robot stands still with its
   //! servos on, the body parallel to its feet (level off, no pose); the
-  //! reply follows after kLevelCalSamples samples (reply_line() keeps its port).
+  //! reply follows after kLevelCalSamples samples (reply_line() keeps its
+  //! port in the measurement's tag).
   LevelCalStart start_level_cal() {
     if (!imu_present_) return LevelCalStart::kNoImu;
     if (level_cal_.running() || !attitude_.has_attitude() || fall_.fallen() || !stage_.all_on() ||
         level_.enabled() || level_.learning() || motion_.walker().engine().state() != GaitState::kStanding ||
         motion_.offsets().roll_rad != S(0) || motion_.offsets().pitch_rad != S(0))
       return LevelCalStart::kNotStill;
-    level_cal_.start();
+    level_cal_.start();  // again with the reply's port in reply_line()
     return LevelCalStart::kStarted;
   }
   //! One raw sample into the `cal level` measurement; a robot that leaves
@@ -575,7 +577,7 @@ class RobotApp {
                                   ? (level_cal_.stop(), LevelCalStatus::kMoving)
                                   : level_cal_.add(sample, attitude_.gyro_bias_rad_s(), &x, &y);
     if (st == LevelCalStatus::kCollecting) return;
-    const bool checked = (level_cal_port_ & kLevelCalChecked) != 0;
+    const bool checked = (level_cal_.tag() & kLevelCalChecked) != 0;
     ReplyWriter w(reply_buf_, uint16_t(sizeof reply_buf_ - (checked ? kLineCheckBytes : 0)));
     controller_.level_cal_done(st, x, y, w);
     if (st == LevelCalStatus::kDone) {
@@ -587,7 +589,7 @@ class RobotApp {
       attitude_.set_gyro_bias(bias);
     }
     if (checked) append_line_check(reply_buf_, w.length());
-    link.send_line(uint8_t(level_cal_port_ & ~kLevelCalChecked), reply_buf_);
+    link.send_line(uint8_t(level_cal_.tag() & ~kLevelCalChecked), reply_buf_);
   }
 
   //! The IMU's part of a tick, with an attitude: the learning gains end once
@@ -632,7 +634,7 @@ class RobotApp {
     ReplyWriter w(reply_buf_, uint16_t(sizeof reply_buf_ - (checked ? kLineCheckBytes : 0)));
     if (!controller_.on_parsed(r, c, now_ms, w)) return;
     if (w.length() == 0) {  // `cal level` measuring: the reply follows (level_cal())
-      level_cal_port_ = uint8_t(port | (checked ? kLevelCalChecked : 0));
+      level_cal_.start(uint8_t(port | (checked ? kLevelCalChecked : 0)));
       return;
     }
     if (checked) append_line_check(reply_buf_, w.length());
@@ -686,8 +688,7 @@ class RobotApp {
   FallDetector<S> fall_;
   LevelBody<S> level_;
   LevelCalibration<S> level_cal_;
-  static constexpr uint8_t kLevelCalChecked = 0x80;  // level_cal_port_: the reply is a checked one
-  uint8_t level_cal_port_ = 0;                       // where `cal level`'s reply goes
+  static constexpr uint8_t kLevelCalChecked = 2;  // level_cal_'s tag: the port (bit 0), a checked reply (bit 1)
   bool imu_probed_ = false;
   bool imu_present_ = false;
   ServoStage<S, kJoints, kStoredChannels> stage_;

@@ -42,19 +42,22 @@ enum class LevelCalStatus : uint8_t {
 template <typename S>
 class LevelCalibration {
  public:
-  void start() {
-    n_ = 1;  // 0: idle; the readings taken are n_ - 1
+  //! Starts a run; tag (0..3) is the caller's, kept until the next start
+  //! (RobotApp: the port to reply to), in the count's byte (RAM is tight).
+  void start(uint8_t tag = 0) {
+    n_ = uint8_t(1 | (tag << kTagShift));  // count 0: idle; the readings taken are count - 1
     sum_x_ = sum_y_ = 0;
   }
-  bool running() const { return n_ != 0; }
+  bool running() const { return count() != 0; }
+  uint8_t tag() const { return uint8_t(n_ >> kTagShift); }
   //! Ends a run (nothing kept).
-  void stop() { n_ = 0; }
+  void stop() { n_ = uint8_t(n_ & ~kCountMask); }
 
   //! One reading [m/s^2, rad/s] and the gyro bias to take from it [rad/s].
   //! kDone: *x_mg, *y_mg hold the offsets. The run ends with any status but
   //! kCollecting (kIdle: none was running).
   LevelCalStatus add(const ImuSample<S>& s, const Vec3<S>& gyro_bias_rad_s, int8_t* x_mg, int8_t* y_mg) {
-    if (n_ == 0) return LevelCalStatus::kIdle;
+    if (count() == 0) return LevelCalStatus::kIdle;
     const S lim = scalar<S>(kLevelCalMaxRateRadS);
     const Vec3<S> w = s.gyro_rad_s - gyro_bias_rad_s;
     if (!(abs(w.x) < lim && abs(w.y) < lim)) return end(LevelCalStatus::kMoving);
@@ -64,7 +67,10 @@ class LevelCalibration {
       return end(LevelCalStatus::kNotLevel);
     sum_x_ = int16_t(sum_x_ + x);
     sum_y_ = int16_t(sum_y_ + y);
-    if (n_++ < kLevelCalSamples) return LevelCalStatus::kCollecting;
+    if (count() < kLevelCalSamples) {
+      ++n_;
+      return LevelCalStatus::kCollecting;
+    }
     const int16_t mx = mean(sum_x_), my = mean(sum_y_);
     if (mx > kLevelCalMaxMeanMg || mx < -kLevelCalMaxMeanMg || my > kLevelCalMaxMeanMg || my < -kLevelCalMaxMeanMg)
       return end(LevelCalStatus::kNotLevel);
@@ -74,8 +80,12 @@ class LevelCalibration {
   }
 
  private:
+  static constexpr uint8_t kTagShift = 6;
+  static constexpr uint8_t kCountMask = (1u << kTagShift) - 1;
+  static_assert(kLevelCalSamples < kCountMask, "the count fits below the tag");
+  uint8_t count() const { return uint8_t(n_ & kCountMask); }
   LevelCalStatus end(LevelCalStatus s) {
-    n_ = 0;
+    stop();
     return s;
   }
   //! a [m/s^2] -> *mg rounded; false beyond kLevelCalMaxMg (or NaN).
@@ -98,7 +108,7 @@ class LevelCalibration {
   }
 
   int16_t sum_x_ = 0, sum_y_ = 0;  // [mg]
-  uint8_t n_ = 0;
+  uint8_t n_ = 0;                  // the count (bits 0-5) and the tag (6-7)
 };
 
 }  // namespace strider
