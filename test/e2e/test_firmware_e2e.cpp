@@ -1143,7 +1143,8 @@ INSTANTIATE_TEST_SUITE_P(Models, FirmwareLevel, ::testing::Values("sprawl8", "he
 // 49.9 / -26.4 mg off on x / y (the simulator's seed-1 draw) and 5 deg/s off
 // on every gyro axis. Uncalibrated, status reads the offsets' tilt; `cal
 // level` answers a second later with the offsets and saves them; roll and
-// pitch then read ~0, after a reset too (from the EEPROM). Refused on a
+// pitch then read ~0, after a reset too (from the EEPROM; the gyro's offset
+// is then 0, as a warm start learns one only slowly). Refused on a
 // 8 deg tilt (err 36) and walking (err 35), nothing saved; a corrupt record
 // gives the defaults (no offsets) and says so.
 class FirmwareLevelCal : public ::testing::TestWithParam<std::string> {};
@@ -1152,7 +1153,8 @@ TEST_P(FirmwareLevelCal, CalLevelRemovesTheAccelerometerOffset) {
   std::string error;
   ASSERT_TRUE(r.load(&error)) << error;
   r.mega().set_imu_present(true);
-  const double g = 9.80665, w = 5.0 * M_PI / 180.0;
+  const double g = 9.80665;
+  double w = 5.0 * M_PI / 180.0;
   auto lie = [&](double roll_deg) {  // rolled about x, with the part's offsets
     const double a = roll_deg * M_PI / 180.0;
     r.mega().set_imu_accel_m_s2(0.0499 * g, g * std::sin(a) - 0.0264 * g, g * std::cos(a));
@@ -1190,7 +1192,11 @@ TEST_P(FirmwareLevelCal, CalLevelRemovesTheAccelerometerOffset) {
   EXPECT_EQ(show.substr(show.find(" level_mg=")), " level_mg=50,-26");
   std::printf("%s cal level: roll/pitch %.1f/%.1f deg before, %s/%s after (%.2f s)\n", GetParam().c_str(),
               before_roll, before_pitch, st["roll"].c_str(), st["pitch"].c_str(), took_s);
-  // After a reset, from the EEPROM.
+  // After a reset, from the EEPROM. (A warm start: the robot stands at
+  // once and the filter learns a gyro offset with its slow gains, which
+  // is not what this test is about: a part without one from here on.)
+  w = 0.0;
+  lie(0.0);
   size_t from = r.mark();
   r.mega().reset();
   ASSERT_TRUE(r.wait_ready(&error)) << error;
