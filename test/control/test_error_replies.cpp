@@ -159,7 +159,7 @@ std::vector<Case> cases(const strider::RobotModel& m, const std::string& help) {
          r.app.set_imu_present(true);
          r.imu = &kSloped;
          r.reply("stop");
-         r.run_ms(3000);
+         r.run_ms(5000);  // mammal8's walk takes over 3 s to finish its stop
        },
        line("cal level")},  // the reply a second later, within the 2 s the twins run
   };
