@@ -55,42 +55,29 @@ Loaded load(const FakeStore& store) {
 constexpr uint8_t kOldPayloadBytes = 54;
 static_assert(strider::kSettingsPayloadBytes == kOldPayloadBytes + 2, "the offsets are the payload's last two bytes");
 
-// A record of the single-record layout (version 1) that firmware before the
-// slots wrote at address 0, built here byte by byte from its documented
-// layout: 'S' 'T' 1 54 payload crc.
-void put_single_record(FakeStore* store, const Settings& s) {
-  uint8_t rec[4 + kOldPayloadBytes + 2];
-  uint8_t payload[strider::kSettingsPayloadBytes];
-  rec[0] = 'S';
-  rec[1] = 'T';
-  rec[2] = 1;
-  rec[3] = kOldPayloadBytes;
-  strider::encode_settings(s, payload);
-  std::memcpy(rec + 4, payload, kOldPayloadBytes);
-  const uint16_t crc = strider::crc16_ccitt(rec, sizeof rec - 2);
-  rec[sizeof rec - 2] = uint8_t(crc);
-  rec[sizeof rec - 1] = uint8_t(crc >> 8);
-  std::memcpy(store->bytes, rec, sizeof rec);
-}
-
-// A slot record of version 2 (before the accelerometer's offsets), as that
-// firmware wrote it: 'S' 'T' 2 54 seq payload crc, 62 bytes.
-void put_v2_record(FakeStore* store, uint16_t at, const Settings& s, uint16_t seq) {
+// A record of a layout before the accelerometer's offsets, built here byte
+// by byte from its documented layout, as that firmware wrote it at `at`:
+// version 1, the single record at address 0: 'S' 'T' 1 54 payload crc (60
+// bytes); version 2, a slot record: 'S' 'T' 2 54 seq payload crc (62 bytes).
+void put_old_record(FakeStore* store, uint16_t at, uint8_t version, const Settings& s, uint16_t seq = 0) {
   uint8_t rec[6 + kOldPayloadBytes + 2];
   uint8_t payload[strider::kSettingsPayloadBytes];
+  const uint8_t head = version == 1 ? 4 : 6, n = uint8_t(head + kOldPayloadBytes + 2);
   rec[0] = 'S';
   rec[1] = 'T';
-  rec[2] = 2;
+  rec[2] = version;
   rec[3] = kOldPayloadBytes;
-  rec[4] = uint8_t(seq);
+  rec[4] = uint8_t(seq);  // version 1: the payload's first bytes, written over below
   rec[5] = uint8_t(seq >> 8);
   strider::encode_settings(s, payload);
-  std::memcpy(rec + 6, payload, kOldPayloadBytes);
-  const uint16_t crc = strider::crc16_ccitt(rec, sizeof rec - 2);
-  rec[sizeof rec - 2] = uint8_t(crc);
-  rec[sizeof rec - 1] = uint8_t(crc >> 8);
-  std::memcpy(store->bytes + at, rec, sizeof rec);
+  std::memcpy(rec + head, payload, kOldPayloadBytes);
+  const uint16_t crc = strider::crc16_ccitt(rec, n - 2);
+  rec[n - 2] = uint8_t(crc);
+  rec[n - 1] = uint8_t(crc >> 8);
+  std::memcpy(store->bytes + at, rec, n);
 }
+void put_single_record(FakeStore* store, const Settings& s) { put_old_record(store, 0, 1, s); }
+void put_v2_record(FakeStore* store, uint16_t at, const Settings& s, uint16_t seq) { put_old_record(store, at, 2, s, seq); }
 
 // A record of the current layout with any sequence number at `at`.
 void put_record(FakeStore* store, uint16_t at, const Settings& s, uint16_t seq) {
