@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -61,7 +62,11 @@ TEST(LevelBody, LearningGainsAreFasterAndGoBack) {
 
 struct Lines {
   std::vector<std::string> sent;
-  void send_line(uint8_t, const char* line) { sent.emplace_back(line); }
+  std::vector<uint8_t> ports;
+  void send_line(uint8_t port, const char* line) {
+    sent.emplace_back(line);
+    ports.push_back(port);
+  }
 };
 
 // RobotApp on hexapod18 standing on ground tilted by (ground_roll,
@@ -235,6 +240,35 @@ TYPED_TEST(LevelAppTest, CalLevelMeasuresSavesAndAppliesTheOffsets) {
   // A second robot from the same EEPROM starts with the offsets.
   typename Rig<TypeParam>::App app2{*strider::find_robot("hexapod18"), rig.out, rig.store};
   EXPECT_EQ(app2.controller().settings().accel_x_mg, 50);
+}
+
+// The late reply goes to the port that asked, checked when the line was
+// (`$cal level*hhhh`, protocol.md's checked lines).
+TYPED_TEST(LevelAppTest, CalLevelAnswersThePortThatAskedInKind) {
+  Rig<TypeParam> rig(0.0, 0.0);
+  rig.accel_offset_x_mg = -12;
+  rig.run_ms(4000);
+  const std::string text = "cal level";
+  char crc[8];
+  std::snprintf(crc, sizeof crc, "*%04x", unsigned(strider::line_crc(text.c_str(), uint16_t(text.size()))));
+  rig.lines.sent.clear();
+  rig.lines.ports.clear();
+  for (char c : "$" + text + crc + "\n") rig.app.on_byte(1, uint8_t(c), rig.now_us, rig.lines);
+  EXPECT_TRUE(rig.lines.sent.empty());
+  rig.run_ms(1000);
+  ASSERT_EQ(rig.lines.sent.size(), 1u);
+  EXPECT_EQ(rig.lines.ports[0], 1);
+  const std::string want = "ok cal level x_mg=-12 y_mg=0 saved";
+  char check[8];
+  std::snprintf(check, sizeof check, "*%04x", unsigned(strider::line_crc(want.c_str(), uint16_t(want.size()))));
+  EXPECT_EQ(rig.lines.sent[0], want + check);
+  // A plain line on port 0: a plain reply there.
+  EXPECT_EQ(rig.send("cal level\n"), "");
+  rig.lines.ports.clear();
+  rig.run_ms(1000);
+  ASSERT_EQ(rig.lines.sent.size(), 1u);
+  EXPECT_EQ(rig.lines.ports[0], 0);
+  EXPECT_EQ(rig.lines.sent[0], "ok cal level x_mg=-12 y_mg=0 saved");  // measured raw again: the same offsets
 }
 
 // The refusals: each a clear err, nothing measured, nothing saved.
