@@ -1226,6 +1226,8 @@ TEST_P(FirmwareLevelCal, CalLevelRemovesTheAccelerometerOffset) {
   const std::string show2 = r.command("cal show");
   EXPECT_EQ(show2.substr(show2.find(" level_mg=")), " level_mg=0,0");
   EXPECT_EQ(r.mega().unexpected_resets(), 0);
+  EXPECT_LE(r.mega().stack_peak_bytes(), 1024u) << "with the measurement and its late reply";
+  std::printf("%s with cal level: stack peak %u bytes\n", GetParam().c_str(), unsigned(r.mega().stack_peak_bytes()));
 }
 INSTANTIATE_TEST_SUITE_P(Models, FirmwareLevelCal, ::testing::Values("hexapod18"), param_name);
 
