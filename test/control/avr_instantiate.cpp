@@ -51,6 +51,7 @@ struct NullSink {
   bool set_body_pose(int32_t, int32_t, int32_t) { return true; }
   bool set_body_height(int32_t h) { return h < 1000; }
   bool set_level(bool on) { return on; }
+  strider::LevelCalStart start_level_cal() { return strider::LevelCalStart::kNoImu; }
   void apply_settings(const strider::Settings& s) { g_sink = uint16_t(s.pwm_hz); }
   void write_status(strider::ReplyWriter& w) { w.text(" sink=null"); }
   const char* gait_names() const { return kNullGaits; }

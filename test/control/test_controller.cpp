@@ -237,7 +237,7 @@ TEST(Controller, NumericRepliesVerbatim) {
   EXPECT_EQ(replies[9], "ok cal trim joint=17 deg=-0.1");
   EXPECT_EQ(replies[10], "ok cal osc hz=24999999");
   EXPECT_EQ(replies[11], "ok cal pwm hz=333");
-  EXPECT_EQ(replies[12], "ok cal osc=24999999 trims=0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,-0.1");
+  EXPECT_EQ(replies[12], "ok cal osc=24999999 trims=0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0,-0.1 level_mg=0,0");
   EXPECT_EQ(replies[13], "ok cal aborted");
 }
 
@@ -273,7 +273,9 @@ TEST(Controller, LongestRepliesFit) {
   for (int j = 0; j < strider::kMaxServoJoints; ++j) r.send("cal trim " + std::to_string(j) + " -29.9\n");
   replies = r.send("cal show\nwalk -499.9\nstatus\n");
   ASSERT_EQ(replies.size(), 3u);
-  EXPECT_EQ(replies[0].size(), 26u + 18u * 6u - 1u) << replies[0];
+  // With offsets of -100 mg each (the widest) ` level_mg=-100,-100` is 6 more.
+  EXPECT_EQ(replies[0].size(), 26u + 18u * 6u - 1u + 13u) << replies[0];
+  EXPECT_LE(replies[0].size() + 6u, strider::kMaxReplyBytes - 1u);
   r.send("cal abort\nvel -499.9 -499.9 -359.9\n");
   r.sonar = SonarReading{SonarStatus::kOk, 2999};
   r.send("deadman 60000\n");
@@ -325,7 +327,7 @@ TEST(ProtocolDoc, ListsEveryCodeAndCommand) {
     const std::string row = "| " + std::to_string(code) + " | `" + strider::error_reason(e) + "`";
     EXPECT_NE(doc.find(row), std::string::npos) << row;
   }
-  for (int code : {20, 21, 22, 23, 24, 25, 31, 32, 33, 34}) EXPECT_NE(doc.find("| " + std::to_string(code) + " |"), std::string::npos) << code;
+  for (int code : {20, 21, 22, 23, 24, 25, 31, 32, 33, 34, 35, 36}) EXPECT_NE(doc.find("| " + std::to_string(code) + " |"), std::string::npos) << code;
   Rig r;
   const auto help = r.send("help\n");
   ASSERT_EQ(help.size(), 1u);

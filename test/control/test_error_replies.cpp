@@ -82,6 +82,12 @@ std::string help_part(const std::string& help, const std::string& key) {
 const strider::ImuSample<float> kTipped{strider::Vec3<float>(0.0f, 9.81f * std::sin(1.4f), 9.81f * std::cos(1.4f)),
                                         strider::Vec3<float>(0.0f, 0.0f, 0.0f), 25.0f};
 
+const strider::ImuSample<float> kLevelPart{strider::Vec3<float>(0.0f, 0.0f, 9.81f), strider::Vec3<float>(0.0f, 0.0f, 0.0f),
+                                           25.0f};
+// Standing on an 8 deg slope: past the 5 deg `cal level` takes.
+const strider::ImuSample<float> kSloped{strider::Vec3<float>(0.0f, 9.81f * std::sin(0.14f), 9.81f * std::cos(0.14f)),
+                                        strider::Vec3<float>(0.0f, 0.0f, 0.0f), 25.0f};
+
 std::vector<Case> cases(const strider::RobotModel& m, const std::string& help) {
   auto line = [](std::string s) { return [s](Robot& r) { r.reply(s); }; };
   auto nothing = [](Robot&) {};
@@ -141,6 +147,21 @@ std::vector<Case> cases(const strider::RobotModel& m, const std::string& help) {
          r.run_ms(2000);
        },
        line("walk 80")},
+      {"cal level walking", 35,
+       [](Robot& r) {
+         r.app.set_imu_present(true);
+         r.imu = &kLevelPart;
+         r.run_ms(1000);
+       },
+       line("cal level")},
+      {"cal level on a slope", 36,
+       [](Robot& r) {
+         r.app.set_imu_present(true);
+         r.imu = &kSloped;
+         r.reply("stop");
+         r.run_ms(5000);  // mammal8's walk takes over 3 s to finish its stop
+       },
+       line("cal level")},  // the reply a second later, within the 2 s the twins run
   };
   // err 24: past what the legs reach, within the parser's range.
   const std::string heights = help_part(help, "height");
@@ -205,7 +226,7 @@ TEST(ErrorReplies, NameWhatIsValidAndChangeNothing) {
   for (int c : codes) std::printf(" %d", c);
   std::printf("\n");
   // Every code a RobotApp can answer (30 is the firmware's, at power-up).
-  EXPECT_EQ(codes, (std::set<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 20, 21, 22, 23, 24, 25, 31, 32, 33}));
+  EXPECT_EQ(codes, (std::set<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 20, 21, 22, 23, 24, 25, 31, 32, 33, 35, 36}));
 }
 
 // Seeded random operator input on every model: every err reply has its

@@ -680,8 +680,10 @@ TEST(RobotAppEeprom, BootNoticeNamesTheRecord) {
   EXPECT_EQ(reboot(), "info eeprom corrupt, defaults");
   // The single record of firmware before the slots (layout version 1).
   r.store.erase();
-  uint8_t rec[4 + strider::kSettingsPayloadBytes + 2] = {'S', 'T', 1, strider::kSettingsPayloadBytes};
-  strider::encode_settings(strider::default_settings(), rec + 4);
+  uint8_t rec[4 + strider::kSettingsPayloadBytesV2 + 2] = {'S', 'T', 1, strider::kSettingsPayloadBytesV2};
+  uint8_t payload[strider::kSettingsPayloadBytes];
+  strider::encode_settings(strider::default_settings(), payload);
+  std::memcpy(rec + 4, payload, strider::kSettingsPayloadBytesV2);  // its layout: without the offsets
   const uint16_t crc = strider::crc16_ccitt(rec, sizeof rec - 2);
   rec[sizeof rec - 2] = uint8_t(crc);
   rec[sizeof rec - 1] = uint8_t(crc >> 8);

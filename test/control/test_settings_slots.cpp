@@ -50,21 +50,34 @@ Loaded load(const FakeStore& store) {
   return l;
 }
 
-// A record of the single-record layout (version 1) that firmware before the
-// slots wrote at address 0, built here byte by byte from its documented
-// layout: 'S' 'T' 1 54 payload crc.
-void put_single_record(FakeStore* store, const Settings& s) {
-  uint8_t rec[4 + strider::kSettingsPayloadBytes + 2];
+// The 54-byte payload of the layouts before the accelerometer's offsets
+// (versions 1 and 2): today's payload without its last two bytes.
+constexpr uint8_t kOldPayloadBytes = 54;
+static_assert(strider::kSettingsPayloadBytes == kOldPayloadBytes + 2, "the offsets are the payload's last two bytes");
+
+// A record of a layout before the accelerometer's offsets, built here byte
+// by byte from its documented layout, as that firmware wrote it at `at`:
+// version 1, the single record at address 0: 'S' 'T' 1 54 payload crc (60
+// bytes); version 2, a slot record: 'S' 'T' 2 54 seq payload crc (62 bytes).
+void put_old_record(FakeStore* store, uint16_t at, uint8_t version, const Settings& s, uint16_t seq = 0) {
+  uint8_t rec[6 + kOldPayloadBytes + 2];
+  uint8_t payload[strider::kSettingsPayloadBytes];
+  const uint8_t head = version == 1 ? 4 : 6, n = uint8_t(head + kOldPayloadBytes + 2);
   rec[0] = 'S';
   rec[1] = 'T';
-  rec[2] = 1;
-  rec[3] = strider::kSettingsPayloadBytes;
-  strider::encode_settings(s, rec + 4);
-  const uint16_t crc = strider::crc16_ccitt(rec, sizeof rec - 2);
-  rec[sizeof rec - 2] = uint8_t(crc);
-  rec[sizeof rec - 1] = uint8_t(crc >> 8);
-  std::memcpy(store->bytes, rec, sizeof rec);
+  rec[2] = version;
+  rec[3] = kOldPayloadBytes;
+  rec[4] = uint8_t(seq);  // version 1: the payload's first bytes, written over below
+  rec[5] = uint8_t(seq >> 8);
+  strider::encode_settings(s, payload);
+  std::memcpy(rec + head, payload, kOldPayloadBytes);
+  const uint16_t crc = strider::crc16_ccitt(rec, n - 2);
+  rec[n - 2] = uint8_t(crc);
+  rec[n - 1] = uint8_t(crc >> 8);
+  std::memcpy(store->bytes + at, rec, n);
 }
+void put_single_record(FakeStore* store, const Settings& s) { put_old_record(store, 0, 1, s); }
+void put_v2_record(FakeStore* store, uint16_t at, const Settings& s, uint16_t seq) { put_old_record(store, at, 2, s, seq); }
 
 // A record of the current layout with any sequence number at `at`.
 void put_record(FakeStore* store, uint16_t at, const Settings& s, uint16_t seq) {
@@ -73,22 +86,26 @@ void put_record(FakeStore* store, uint16_t at, const Settings& s, uint16_t seq) 
 
 TEST(SettingsSlots, RecordLayoutBytes) {
   FakeStore store;
-  const Settings s = settings_with_trim(-123);
+  Settings s = settings_with_trim(-123);
+  s.accel_x_mg = -37;
+  s.accel_y_mg = 52;
   put_record(&store, 0, s, 0x1234);
-  EXPECT_EQ(strider::kSettingsRecordBytes, 62);
+  EXPECT_EQ(strider::kSettingsRecordBytes, 64);
   EXPECT_EQ(store.bytes[0], 'S');
   EXPECT_EQ(store.bytes[1], 'T');
-  EXPECT_EQ(store.bytes[2], 2);
-  EXPECT_EQ(store.bytes[3], 54);
+  EXPECT_EQ(store.bytes[2], 3);
+  EXPECT_EQ(store.bytes[3], 56);
   EXPECT_EQ(store.bytes[4], 0x34);  // sequence number, little-endian
   EXPECT_EQ(store.bytes[5], 0x12);
   uint8_t payload[strider::kSettingsPayloadBytes];
   strider::encode_settings(s, payload);
   EXPECT_EQ(std::memcmp(store.bytes + 6, payload, sizeof payload), 0);
-  const uint16_t crc = strider::crc16_ccitt(store.bytes, 60);
-  EXPECT_EQ(store.bytes[60], uint8_t(crc));
-  EXPECT_EQ(store.bytes[61], uint8_t(crc >> 8));
-  EXPECT_EQ(store.bytes[62], 0xFF);  // nothing beyond the record
+  EXPECT_EQ(store.bytes[60], uint8_t(int8_t(-37)));  // the accelerometer's offsets [mg], after the trims
+  EXPECT_EQ(store.bytes[61], 52);
+  const uint16_t crc = strider::crc16_ccitt(store.bytes, 62);
+  EXPECT_EQ(store.bytes[62], uint8_t(crc));
+  EXPECT_EQ(store.bytes[63], uint8_t(crc >> 8));
+  EXPECT_EQ(store.bytes[64], 0xFF);  // nothing beyond the record: the slot is full
 }
 
 TEST(SettingsSlots, SavesTakeTurnsAndNumberTheRecords) {
@@ -353,6 +370,70 @@ void cut_every_byte(const FakeStore& before, int16_t old_trim, int16_t new_trim,
   }
 }
 
+// The slot record before the accelerometer's offsets (version 2) loads with
+// offsets of 0, is older than nothing of its own kind (sequence numbers
+// decide), and the next save writes the other slot with version 3.
+TEST(SettingsSlots, Version2ImageLoadsWithZeroOffsetsAndMigrates) {
+  FakeStore store;
+  Settings old = settings_with_trim(11);
+  old.accel_x_mg = 99;  // not in a version-2 payload: must not come back
+  old.accel_y_mg = -99;
+  put_v2_record(&store, 0, settings_with_trim(10), 4);
+  put_v2_record(&store, kSlot1, old, 5);
+  const FakeStore image = store;
+  Settings s;
+  SettingsRecord record;
+  ASSERT_EQ(strider::load_settings(store, &s, &record), SettingsStatus::kOk);
+  EXPECT_EQ(s.trim_decideg[0], 11);
+  EXPECT_EQ(s.accel_x_mg, 0);
+  EXPECT_EQ(s.accel_y_mg, 0);
+  EXPECT_EQ(record.version, 2);
+  EXPECT_EQ(record.slot, 1);
+  EXPECT_EQ(record.seq, 5);
+  EXPECT_EQ(record.other, SettingsStatus::kOk);
+  // Saving with offsets: slot 0, sequence 6, version 3; slot 1 untouched.
+  s.accel_x_mg = 49;
+  s.accel_y_mg = -26;
+  ASSERT_EQ(strider::save_settings(store, s, &record), SettingsStatus::kOk);
+  EXPECT_EQ(record.slot, 0);
+  EXPECT_EQ(record.seq, 6);
+  EXPECT_EQ(store.bytes[2], strider::kSettingsVersion);
+  EXPECT_EQ(std::memcmp(store.bytes + kSlot1, image.bytes + kSlot1, strider::kSettingsSlotBytes), 0);
+  Settings back;
+  SettingsRecord r2;
+  ASSERT_EQ(strider::load_settings(store, &back, &r2), SettingsStatus::kOk);
+  EXPECT_EQ(back.accel_x_mg, 49);
+  EXPECT_EQ(back.accel_y_mg, -26);
+  EXPECT_EQ(back.trim_decideg[0], 11);
+  EXPECT_EQ(r2.slot, 0);
+  EXPECT_EQ(r2.other, SettingsStatus::kOk);  // the version-2 record, older
+  // A version-2 record newer by sequence number than a version-3 one wins
+  // (a firmware downgraded and saved again): the numbers decide, not the layout.
+  FakeStore mixed;
+  put_record(&mixed, 0, settings_with_trim(1), 7);
+  put_v2_record(&mixed, kSlot1, settings_with_trim(2), 8);
+  Settings m;
+  ASSERT_EQ(strider::load_settings(mixed, &m), SettingsStatus::kOk);
+  EXPECT_EQ(m.trim_decideg[0], 2);
+  EXPECT_EQ(m.accel_x_mg, 0);
+  // A version-2 header on a 56-byte payload (or the reverse) is corrupt.
+  FakeStore bad = image;
+  bad.bytes[3] = 56;
+  bad.bytes[kSlot1 + 3] = 56;
+  EXPECT_EQ(strider::load_settings(bad, &m), SettingsStatus::kCorrupt);
+  FakeStore bad3;
+  put_record(&bad3, 0, settings_with_trim(1), 1);
+  bad3.bytes[3] = 54;
+  EXPECT_EQ(strider::load_settings(bad3, &m), SettingsStatus::kCorrupt);
+  // An offset out of range with a good CRC: invalid, the defaults (0 offsets).
+  Settings far = settings_with_trim(3);
+  far.accel_x_mg = 101;
+  EXPECT_FALSE(strider::settings_valid(far));
+  EXPECT_EQ(strider::save_settings(bad3, far), SettingsStatus::kInvalid);
+  far.accel_x_mg = -100;
+  EXPECT_TRUE(strider::settings_valid(far));
+}
+
 TEST(SettingsSlots, SaveCutAtEveryByteKeepsOldOrNew) {
   FakeStore one;  // slot A only: the save writes the erased slot B
   SettingsRecord r;
@@ -362,6 +443,9 @@ TEST(SettingsSlots, SaveCutAtEveryByteKeepsOldOrNew) {
   FakeStore single;
   put_single_record(&single, settings_with_trim(-7));
   cut_every_byte(single, -7, 5, "from a version-1 record");
+  FakeStore v2;
+  put_v2_record(&v2, kSlot1, settings_with_trim(4), 9);
+  cut_every_byte(v2, 4, 5, "from a version-2 record");
   FakeStore wrap;
   put_record(&wrap, 0, settings_with_trim(1), 0xFFFE);
   put_record(&wrap, kSlot1, settings_with_trim(2), 0xFFFF);

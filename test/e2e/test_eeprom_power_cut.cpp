@@ -127,11 +127,14 @@ std::vector<uint8_t> single_record_image(int16_t trim0_decideg) {
   image[0] = 'S';
   image[1] = 'T';
   image[2] = 1;
-  image[3] = strider::kSettingsPayloadBytes;
-  strider::encode_settings(s, image.data() + 4);
-  const uint16_t crc = strider::crc16_ccitt(image.data(), 4 + strider::kSettingsPayloadBytes);
-  image[4 + strider::kSettingsPayloadBytes] = uint8_t(crc);
-  image[5 + strider::kSettingsPayloadBytes] = uint8_t(crc >> 8);
+  constexpr uint8_t n = strider::kSettingsPayloadBytesV2;  // its layout: no accelerometer offsets
+  image[3] = n;
+  uint8_t payload[strider::kSettingsPayloadBytes];
+  strider::encode_settings(s, payload);
+  std::copy(payload, payload + n, image.begin() + 4);
+  const uint16_t crc = strider::crc16_ccitt(image.data(), 4 + n);
+  image[4 + n] = uint8_t(crc);
+  image[5 + n] = uint8_t(crc >> 8);
   return image;
 }
 

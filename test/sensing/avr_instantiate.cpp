@@ -7,6 +7,7 @@
 
 #include "sensing/attitude_filter.h"
 #include "sensing/gyro_calibration.h"
+#include "sensing/level_calibration.h"
 #include "sensing/mpu6050_sample.h"
 
 namespace {
@@ -21,6 +22,10 @@ int32_t run(strider::AttitudeFilter<S>& f, strider::GyroCalibration<S>& cal) {
   const strider::ImuSample<S> s =
       strider::mpu6050_sample<S>(burst, strider::Mpu6050AccelRange(g_bytes[0] & 3), strider::Mpu6050GyroRange(g_bytes[1] & 3));
   if (cal.add(s.gyro_rad_s) == strider::GyroCalibrationStatus::kDone) f.set_gyro_bias(cal.offset());
+  static strider::LevelCalibration<S> level;
+  int8_t x = 0, y = 0;
+  if (!level.running()) level.start();
+  if (level.add(s, f.gyro_bias_rad_s(), &x, &y) == strider::LevelCalStatus::kDone) g_sink = x + y;
   const strider::AttitudeStatus st = f.update(s, strider::scalar<S>(0.02));
   const S sum = f.roll_rad() + f.pitch_rad() + f.tilt_rad() + f.gyro_bias_rad_s().x + s.temp_c;
   return int32_t(st) + (sum < S() ? 1 : 0) + (f.has_attitude() ? 2 : 0);

@@ -1,6 +1,7 @@
 // The IMU and battery scenarios (docs/imu.md), in library mode and, with the
 // AVR build, with the firmware on the virtual Mega: hexapod18 levels its body
-// on a 10 deg ramp (`level on`), sprawl8 is kicked over and refuses to walk
+// on a 10 deg ramp (`level on`), also with the default part's accelerometer
+// offsets after `cal level` on the flat, sprawl8 is kicked over and refuses to walk
 // until set upright, sprawl8's draining pack warns, then sits it down.
 #include <gtest/gtest.h>
 
@@ -80,6 +81,55 @@ void expect_level_on_the_ramp(const std::string& elf) {
   EXPECT_GT(r.metrics.final_x_mm, 30.0);  // 3 s at 40 mm/s, less the ramp-up
 }
 
+// hexapod18_ramp_cal: the default part (seed 1's draw: 49.9 / -26.4 mg of
+// accelerometer offset, 19.9 / 17.3 / -14.9 deg/s of gyro offset). `cal
+// level` on the flat at 6 s measures and saves the offsets; the ground tilts
+// to the 10 deg ramp at 9 s, `level on` at 12 s: from 14 s, standing,
+// walking along the slope and standing again, roll and pitch stay within 2
+// deg. The same run without `cal level` settles the offsets' 1.5 / 2.9 deg
+// off level, past 2 deg in pitch.
+void expect_calibrated_level_on_the_ramp(const std::string& elf) {
+  strider_sim::RunOptions opt;  // the default part: offsets drawn with seed 1
+  const RunResult r = run("hexapod18_ramp_cal", elf, opt);
+  ASSERT_TRUE(r.ok);
+  EXPECT_EQ(r.metrics.replies_err, 0);
+  EXPECT_FALSE(r.metrics.fell);
+  // The part's offsets plus what the body leans on the flat (0.1 deg is 1.7 mg).
+  const std::string cal = line_text(r, "ok cal level", 6);
+  int x_mg = 0, y_mg = 0;
+  ASSERT_EQ(std::sscanf(cal.c_str(), "ok cal level x_mg=%d y_mg=%d saved", &x_mg, &y_mg), 2) << cal;
+  EXPECT_NEAR(x_mg, 49.9, 3.0) << cal;
+  EXPECT_NEAR(y_mg, -26.4, 3.0) << cal;
+  const double cal_at = line_at(r, "ok cal level", 6);
+  EXPECT_GT(cal_at, 6.9);
+  EXPECT_LT(cal_at, 7.3);
+  EXPECT_GE(line_at(r, "ok level on"), 12.0);
+  const Tilt flat = max_tilt(r, 7, 9), on = max_tilt(r, 14, 26);
+  // Without the calibration: the same scenario, `cal level` left out.
+  strider_sim::Scenario sc;
+  std::string error;
+  ASSERT_TRUE(strider_sim::load_scenario(std::string(STRIDER_SIM_SCENARIOS) + "/hexapod18_ramp_cal.scenario", &sc, &error))
+      << error;
+  sc.sends.erase(std::remove_if(sc.sends.begin(), sc.sends.end(),
+                                [](const strider_sim::TimedSend& s) { return s.bytes == "cal level\n"; }),
+                 sc.sends.end());
+  strider_sim::RunOptions uncal = opt;
+  uncal.firmware_elf = elf;
+  const RunResult u = strider_sim::run_scenario(sc, uncal);
+  ASSERT_TRUE(u.ok) << u.error;
+  const Tilt u_on = max_tilt(u, 14, 26), u_end = max_tilt(u, 21, 26), end = max_tilt(r, 21, 26);
+  std::printf("[ metrics  ] hexapod18_ramp_cal %s: flat %.2f / %.2f deg; level on (14-26 s) uncalibrated %.2f / %.2f, "
+              "after cal level %.2f / %.2f deg; standing 21-26 s %.2f / %.2f against %.2f / %.2f\n",
+              r.metrics.mode.c_str(), flat.roll, flat.pitch, u_on.roll, u_on.pitch, on.roll, on.pitch, u_end.roll,
+              u_end.pitch, end.roll, end.pitch);
+  EXPECT_LT(flat.roll, 1.0);
+  EXPECT_LT(flat.pitch, 1.0);
+  EXPECT_LT(on.roll, 2.0);
+  EXPECT_LT(on.pitch, 2.0);
+  EXPECT_GT(u_on.pitch, 2.0) << "the offset's tilt without the calibration";
+  EXPECT_GT(r.metrics.final_x_mm, 30.0);  // it walked along the slope
+}
+
 // sprawl8_shove: the kick tips it over; the fall is seen within 0.5 s, the
 // servos go limp and walking is refused (err 33) until 1 s after upright.
 void expect_fall_and_recovery(const std::string& elf) {
@@ -127,11 +177,15 @@ void expect_battery_low_then_critical(const std::string& elf) {
 }
 
 TEST(SimSensorScenarios, LibraryLevelsHexapod18OnTheRamp) { expect_level_on_the_ramp(""); }
+TEST(SimSensorScenarios, LibraryCalibratedLevelsHexapod18OnTheRamp) { expect_calibrated_level_on_the_ramp(""); }
 TEST(SimSensorScenarios, LibrarySeesTheFallAndWaitsForUpright) { expect_fall_and_recovery(""); }
 TEST(SimSensorScenarios, LibraryWarnsThenSitsOnADrainingPack) { expect_battery_low_then_critical(""); }
 
 #ifdef STRIDER_SIM_HEXAPOD18_ELF
 TEST(SimSensorScenarios, FirmwareLevelsHexapod18OnTheRamp) { expect_level_on_the_ramp(STRIDER_SIM_HEXAPOD18_ELF); }
+TEST(SimSensorScenarios, FirmwareCalibratedLevelsHexapod18OnTheRamp) {
+  expect_calibrated_level_on_the_ramp(STRIDER_SIM_HEXAPOD18_ELF);
+}
 TEST(SimSensorScenarios, FirmwareSeesTheFallAndWaitsForUpright) { expect_fall_and_recovery(STRIDER_SIM_SPRAWL8_ELF); }
 TEST(SimSensorScenarios, FirmwareWarnsThenSitsOnADrainingPack) {
   expect_battery_low_then_critical(STRIDER_SIM_SPRAWL8_ELF);

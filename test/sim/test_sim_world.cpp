@@ -136,11 +136,12 @@ TEST(SimScenario, RejectsBadLinesWithTheirNumber) {
   EXPECT_FALSE(strider_sim::parse_scenario("robot sprawl8\nduration 5\nat 1 send bad\\q\n", &s, &err));
 }
 
-TEST(SimScenario, ParsesRampShoveUprightAndBattery) {
+TEST(SimScenario, ParsesRampShoveUprightAndBattery) {  // and `at T ramp`
   strider_sim::Scenario s;
   std::string err;
   ASSERT_TRUE(strider_sim::parse_scenario("robot sprawl8\nduration 9\nramp 10 30\nbattery soc 0.5 cells 3\n"
-                                          "battery mah 40 ohm 0.1\nat 5 upright\nat 4 shove 0 1 -0.5\n",
+                                          "battery mah 40 ohm 0.1\nat 5 upright\nat 4 shove 0 1 -0.5\n"
+                                          "at 7 ramp 12 -45\nat 8 ramp 0\n",
                                           &s, &err))
       << err;
   EXPECT_DOUBLE_EQ(s.ramp_deg, 10.0);
@@ -149,10 +150,16 @@ TEST(SimScenario, ParsesRampShoveUprightAndBattery) {
   EXPECT_DOUBLE_EQ(s.battery.soc, 0.5);
   EXPECT_DOUBLE_EQ(s.battery.capacity_mah, 40.0);
   EXPECT_DOUBLE_EQ(s.battery.internal_ohm, 0.1);
-  ASSERT_EQ(s.events.size(), 2u);
+  ASSERT_EQ(s.events.size(), 4u);
   EXPECT_EQ(s.events[0].kind, strider_sim::TimedEvent::kShove);  // sorted by time
   EXPECT_DOUBLE_EQ(s.events[0].impulse_ns.z, -0.5);
   EXPECT_EQ(s.events[1].kind, strider_sim::TimedEvent::kUpright);
+  EXPECT_EQ(s.events[2].kind, strider_sim::TimedEvent::kRamp);  // the ground tilts later on
+  EXPECT_DOUBLE_EQ(s.events[2].ramp_deg, 12.0);
+  EXPECT_DOUBLE_EQ(s.events[2].ramp_uphill_deg, -45.0);
+  EXPECT_EQ(s.events[3].kind, strider_sim::TimedEvent::kRamp);
+  EXPECT_DOUBLE_EQ(s.events[3].ramp_deg, 0.0);
+  EXPECT_DOUBLE_EQ(s.events[3].ramp_uphill_deg, 0.0);
   // The command line's pack options win over the scenario's.
   strider_sim::BatteryOverrides cli;
   cli.soc = 0.2;
@@ -161,7 +168,8 @@ TEST(SimScenario, ParsesRampShoveUprightAndBattery) {
   EXPECT_EQ(both.cells, 3);
   for (const char* bad : {"ramp\n", "ramp 50\n", "ramp 10 x\n", "ramp 10 30 1\n", "battery\n", "battery cells 0\n",
                           "battery cells 2.5\n", "battery soc 1.5\n", "battery mah\n", "battery volts 7\n",
-                          "at 1 shove 1 2\n", "at 1 shove 1 2 3 4\n", "at 1 upright now\n", "at 1 jump\n"}) {
+                          "at 1 shove 1 2\n", "at 1 shove 1 2 3 4\n", "at 1 upright now\n", "at 1 jump\n",
+                          "at 1 ramp\n", "at 1 ramp 46\n", "at 1 ramp -1\n", "at 1 ramp 10 x\n", "at 1 ramp 10 30 1\n"}) {
     EXPECT_FALSE(strider_sim::parse_scenario(std::string("robot sprawl8\nduration 5\n") + bad, &s, &err)) << bad;
     EXPECT_EQ(err.rfind("line 3:", 0), 0u) << err;
   }

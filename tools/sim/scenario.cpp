@@ -134,6 +134,18 @@ bool parse_scenario(const std::string& text, Scenario* out, std::string* error) 
       words >> t >> verb;
       TimedSend send;
       if (!to_number(t, &send.at_s) || send.at_s < 0) return fail("at takes a time [s] >= 0");
+      if (verb == "ramp") {
+        TimedEvent e;
+        e.at_s = send.at_s;
+        e.kind = TimedEvent::kRamp;
+        std::string a, b, extra;
+        words >> a >> b;
+        if (!to_number(a, &e.ramp_deg) || !(e.ramp_deg >= 0 && e.ramp_deg <= 45) ||
+            (!b.empty() && !to_number(b, &e.ramp_uphill_deg)) || (words >> extra))
+          return fail("ramp takes a slope 0..45 [deg] and the direction it rises toward [deg]");
+        s.events.push_back(e);
+        continue;
+      }
       if (verb == "shove" || verb == "upright") {
         TimedEvent e;
         e.at_s = send.at_s;
@@ -148,7 +160,8 @@ bool parse_scenario(const std::string& text, Scenario* out, std::string* error) 
         s.events.push_back(e);
         continue;
       }
-      if (verb != "send") return fail("expected 'at T send TEXT', 'at T shove X Y Z' or 'at T upright'");
+      if (verb != "send")
+        return fail("expected 'at T send TEXT', 'at T shove X Y Z', 'at T upright' or 'at T ramp DEG [UPHILL_DEG]'");
       std::string rest;
       std::getline(words, rest);
       rest = trim(rest);

@@ -8,6 +8,7 @@
 //   battery cells N mah C ohm R soc S  # the pack (any of the four keys, in any order)
 //   at T shove X Y Z                 # an impulse [N s], world frame, at the top of the body
 //   at T upright                     # the robot set back on its feet, sitting, where it lies
+//   at T ramp DEG [UPHILL_DEG]       # the ground tilts to a slope from then on (0: flat again)
 // One directive per line; `#` starts a comment; blank lines are ignored.
 #pragma once
 
@@ -24,12 +25,15 @@ struct TimedSend {
   std::string bytes;  // escapes already decoded
 };
 
-// `at T shove X Y Z` and `at T upright`: something done to the robot.
+// `at T shove X Y Z`, `at T upright` and `at T ramp DEG [UPHILL_DEG]`:
+// something done to the robot or its ground.
 struct TimedEvent {
-  enum Kind { kShove, kUpright };
+  enum Kind { kShove, kUpright, kRamp };
   double at_s = 0;
   Kind kind = kShove;
-  Vec impulse_ns;  // kShove: world frame [N s]
+  Vec impulse_ns;               // kShove: world frame [N s]
+  double ramp_deg = 0;          // kRamp: the slope [deg]
+  double ramp_uphill_deg = 0;   // kRamp: the direction it rises toward [deg]
 };
 
 struct Scenario {

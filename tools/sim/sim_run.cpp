@@ -232,6 +232,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
     for (; next_event < sc.events.size() && sc.events[next_event].at_s <= t + 1e-12; ++next_event) {
       const TimedEvent& e = sc.events[next_event];
       if (e.kind == TimedEvent::kShove) world.shove(e.impulse_ns);
+      else if (e.kind == TimedEvent::kRamp) world.set_ramp(e.ramp_deg, e.ramp_uphill_deg);
       else world.upright();
     }
     driver->set_sensors(sensors.inputs());

@@ -39,7 +39,8 @@ enum class CommandKind : uint8_t {
   kRcEcho,       //!< an RC byte on its own text line: arg[0] = the byte (already applied)
   kSet,          //!< a live gait parameter: arg[0] = TuneParam, arg[1] = value [unit / 100] (swing: SwingShape)
   kGet,          //!< report the live gait parameters
-  kLevel         //!< arg[0] = 1 on, 0 off: hold the body level from the IMU (level_body.h)
+  kLevel,        //!< arg[0] = 1 on, 0 off: hold the body level from the IMU (level_body.h)
+  kCalLevel      //!< measure the accelerometer's offsets standing on level ground, and save them
 };
 
 //! Where a command came from: bare RC bytes get no reply (the app shows
@@ -71,7 +72,7 @@ constexpr uint8_t kCommandWordBytes = 8;  //!< gait name: up to 7 chars + NUL
 enum class Usage : uint8_t {
   kNone = 0,
   kWalk, kStrafe, kTurn, kVel, kSpeed, kPose, kHeight, kDeadman, kBaud,
-  kNoArguments,  //!< stop, relax, save, status, help, cal start/show/save/abort
+  kNoArguments,  //!< stop, relax, save, status, help, cal start/show/save/abort/level
   kGait, kAvoid, kCal, kCalTrim, kCalOsc, kCalPwm, kSet, kLevel,
   kEmptyLine     //!< a line of blanks (err 1 empty line)
 };

@@ -122,6 +122,7 @@ inline ParseError parse_cal(const Token* t, uint8_t n, Command* cmd) {
   if (token_is(sub, words::kSave)) none_taken = CommandKind::kCalSave;
   if (token_is(sub, words::kAbort)) none_taken = CommandKind::kCalAbort;
   if (token_is(sub, words::kShow)) none_taken = CommandKind::kCalShow;
+  if (token_is(sub, words::kLevel)) none_taken = CommandKind::kCalLevel;
   if (none_taken != CommandKind::kNone) {
     cmd->kind = none_taken;
     cmd->usage = Usage::kNoArguments;

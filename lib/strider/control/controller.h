@@ -13,6 +13,8 @@
 //!   bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw);  // [0.1 deg]; false: refused
 //!   bool set_body_height(int32_t height); // [0.1 mm]; false: out of the robot's range
 //!   bool set_level(bool on);              // hold the body level (level_body.h); false: no IMU
+//!   LevelCalStart start_level_cal();      // `cal level`: measure the accelerometer's offsets
+//!                                         // (kStarted: the reply follows, level_cal_done())
 //!   const char* gait_names();             // the robot's gaits, space-separated, in flash
 //!   const MotionReach& reach();           // heights and angles it reaches (motion_reach.h)
 //!   void apply_settings(const Settings& s);  // trims, oscillator, PWM frequency
@@ -31,6 +33,7 @@
 #include "reply.h"
 #include "reply_texts.h"
 #include "robot_mode.h"
+#include "../sensing/level_calibration.h"
 
 namespace strider {
 
@@ -145,6 +148,22 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   //! How far the body walks sideways after the sensor sees the way clear:
   //! the robot's half-width with its feet (RobotApp sets it from the model).
   void set_avoid_clear_mm(uint16_t mm) { avoid_clear_mm_ = mm; }
+
+  //! The end of a `cal level` measurement (RobotApp, after start_level_cal()
+  //! said kStarted): done, the offsets [mg] saved with the settings in force
+  //! and applied; or why it failed (nothing changed). *w: the reply.
+  void level_cal_done(LevelCalStatus st, int8_t x_mg, int8_t y_mg, ReplyWriter& w) {
+    if (st == LevelCalStatus::kMoving) return fail(w, ControlError::kNotStill, FlashText{text::kNotStill});
+    if (st != LevelCalStatus::kDone) return fail(w, ControlError::kNotLevel, FlashText{text::kNotLevel});
+    Settings s = settings_;
+    s.accel_x_mg = x_mg;
+    s.accel_y_mg = y_mg;
+    if (save_settings(store_, s, &record_) != SettingsStatus::kOk)
+      return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});
+    settings_.accel_x_mg = x_mg;
+    settings_.accel_y_mg = y_mg;
+    w.format(FlashText{text::kOkCalLevelFmt}, int32_t(x_mg), int32_t(y_mg));
+  }
 
   RobotMode mode() const { return mode_; }
   const Twist& command() const { return cmd_; }      //!< operator's velocity
@@ -300,7 +319,15 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
           if (i) w.ch(',');
           w.tenths(cal_.live().trim_decideg[i]);
         }
+        w.format(FlashText{text::kLevelMgFmt}, int32_t(settings_.accel_x_mg), int32_t(settings_.accel_y_mg));
         return;
+      case CommandKind::kCalLevel:
+        if (mode_ == RobotMode::kCalibrating) return fail(w, ControlError::kBusy, FlashText{text::kCalibrating});
+        switch (mode_ != RobotMode::kStanding ? LevelCalStart::kNotStill : sink_.start_level_cal()) {
+          case LevelCalStart::kNoImu: return fail(w, ControlError::kNoImu, FlashText{text::kNoImu});
+          case LevelCalStart::kNotStill: return fail(w, ControlError::kNotStill, FlashText{text::kNotStill});
+          default: return;  // measuring: no reply yet (level_cal_done())
+        }
       case CommandKind::kCalSave: {
         if (!cal_.active()) return fail(w, ControlError::kNotCalibrating, FlashText{text::kCalStartFirst});
         if (cal_.save(store_, settings_, &record_) != CalStatus::kOk) return fail(w, ControlError::kStoreFailed, FlashText{text::kStoreFailed});

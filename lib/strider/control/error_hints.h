@@ -36,7 +36,7 @@ constexpr char kUsageHints[] STRIDER_PROGMEM =
     "none after the command word\0"
     "gait NAME\0"
     "avoid on, avoid off, avoid STOP SLOW with 20 <= STOP <= SLOW <= 3000\0"
-    "cal start trim osc pwm show save abort\0"
+    "cal start trim osc pwm show save abort level\0"
     "cal trim 0..17 -30..30\0"
     "cal osc 20000000..30000000\0"
     "cal pwm 40..400\0"

@@ -44,6 +44,10 @@ constexpr char kBatteryCritical[] STRIDER_PROGMEM = "battery critical: charge or
 constexpr char kOkAvoid_[] STRIDER_PROGMEM = "ok avoid ";
 constexpr char kOkLevel_[] STRIDER_PROGMEM = "ok level ";
 constexpr char kNoImu[] STRIDER_PROGMEM = "no imu: level needs an MPU-6050 on the I2C bus (status shows imu=)";
+constexpr char kNotStill[] STRIDER_PROGMEM = "not standing still: stop, stand, level off, pose 0 0 0, keep still 1 s";
+constexpr char kNotLevel[] STRIDER_PROGMEM = "not level: stand on level ground (within 5 deg)";
+constexpr char kOkCalLevelFmt[] STRIDER_PROGMEM = "ok cal level x_mg=" "\1" " y_mg=" "\1" " saved";
+constexpr char kLevelMgFmt[] STRIDER_PROGMEM = " level_mg=" "\1" "," "\1";
 constexpr char kOn[] STRIDER_PROGMEM = "on";
 constexpr char kOff[] STRIDER_PROGMEM = "off";
 constexpr char kOkCalStart[] STRIDER_PROGMEM = "ok cal start";

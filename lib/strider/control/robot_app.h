@@ -41,6 +41,7 @@ constexpr uint8_t kLinkPorts = 2;          //!< 0 = USB serial, 1 = Bluetooth (H
 constexpr uint8_t kAllPorts = 0xFF;        //!< send_line(): every port
 constexpr uint16_t kLineIdleMs = 300;      //!< a partial line older than this is dropped [ms]
 static_assert(kLevelTickS * 1e6 == double(kTickPeriodUs), "level_body.h's tick is RobotApp's");
+static_assert(kLinkPorts <= 2, "cal level keeps the port in one bit (RobotApp::level_cal())");
 
 namespace app_text {
 constexpr char kInfoStrider[] STRIDER_PROGMEM = "info strider ";
@@ -262,11 +263,18 @@ class RobotApp {
   //! the tick's period; a tilt past 50 deg for 0.2 s is a fall: `info fall`,
   //! the servos go limp and walking is refused (err 33) until the robot has
   //! stood upright (under 20 deg) for 1 s: `info fall cleared`. With
-  //! `level on` the body's roll and pitch follow (level_body.h).
+  //! `level on` the body's roll and pitch follow (level_body.h). The
+  //! accelerometer's x and y offsets (`cal level`, kept in the settings) are
+  //! taken from every sample first.
   template <typename Link>
   STRIDER_NOINLINE void imu(const ImuSample<S>* sample, Link& link) {
     if (sample == nullptr || !imu_present_) return;
-    attitude_.update(*sample, scalar<S>(double(kTickPeriodUs) * 1e-6));
+    if (level_cal_.running()) level_cal(*sample, link);
+    ImuSample<S> s = *sample;
+    constexpr S kMs2PerMg = scalar<S>(kStandardGravity / 1000.0);
+    s.accel_m_s2.x -= S(int(controller_.settings().accel_x_mg)) * kMs2PerMg;
+    s.accel_m_s2.y -= S(int(controller_.settings().accel_y_mg)) * kMs2PerMg;
+    attitude_.update(s, scalar<S>(double(kTickPeriodUs) * 1e-6));
     if (!attitude_.has_attitude()) return;
     level_body();
     if (!fall_.update(attitude_.tilt_rad())) return;
@@ -398,6 +406,7 @@ class RobotApp {
     bool set_body_pose(int32_t r, int32_t p, int32_t y) { return app_.motion_.set_body_pose(r, p, y); }
     bool set_body_height(int32_t h) { return app_.motion_.set_body_height(h); }
     bool set_level(bool on) { return app_.set_level(on); }
+    LevelCalStart start_level_cal() { return app_.start_level_cal(); }
     const char* gait_names() const { return strider::gait_names(app_.motion_.walker().leg_count()); }
     const MotionReach& reach() const { return app_.motion_.reach(); }
     void apply_settings(const Settings& s) { app_.stage_.set_settings(s); }
@@ -485,7 +494,7 @@ class RobotApp {
   //! (the single record before the slots); ` other=corrupt` (old_version,
   //! invalid) when the other slot holds neither a record nor erased bytes.
   static void describe_record(ReplyWriter& w, const SettingsRecord& r) {
-    if (r.version != kSettingsVersion) {
+    if (r.version == kSettingsSingleRecordVersion) {
       w.field(FlashText{app_text::kVersion}, r.version);
     } else {
       w.field(FlashText{app_text::kSlot}, r.slot).field(FlashText{app_text::kSeq}, r.seq);
@@ -550,6 +559,43 @@ class RobotApp {
     if (!on) motion_.set_body_tilt(S(0), S(0));
     return true;
   }
+  //! `cal level`: measuring starts when the robot stands still with its
+  //! servos on, the body parallel to its feet (level off, no pose); the
+  //! reply follows after kLevelCalSamples samples (reply_line() keeps its
+  //! port in the measurement's tag).
+  LevelCalStart start_level_cal() {
+    if (!imu_present_) return LevelCalStart::kNoImu;
+    if (level_cal_.running() || !attitude_.has_attitude() || fall_.fallen() || !stage_.all_on() ||
+        level_.enabled() || level_.learning() || motion_.walker().engine().state() != GaitState::kStanding ||
+        motion_.offsets().roll_rad != S(0) || motion_.offsets().pitch_rad != S(0))
+      return LevelCalStart::kNotStill;
+    level_cal_.start();  // again with the reply's port in reply_line()
+    return LevelCalStart::kStarted;
+  }
+  //! One raw sample into the `cal level` measurement; a robot that leaves
+  //! its stand meanwhile ends it (moving). At the end, the deferred reply.
+  template <typename Link>
+  STRIDER_NOINLINE void level_cal(const ImuSample<S>& sample, Link& link) {
+    int8_t x = 0, y = 0;
+    const LevelCalStatus st = motion_.walker().engine().state() != GaitState::kStanding || !stage_.all_on()
+                                  ? (level_cal_.stop(), LevelCalStatus::kMoving)
+                                  : level_cal_.add(sample, attitude_.gyro_bias_rad_s(), &x, &y);
+    if (st == LevelCalStatus::kCollecting) return;
+    const bool checked = (level_cal_.tag() & kLevelCalChecked) != 0;
+    ReplyWriter w(reply_buf_, uint16_t(sizeof reply_buf_ - (checked ? kLineCheckBytes : 0)));
+    controller_.level_cal_done(st, x, y, w);
+    if (st == LevelCalStatus::kDone) {
+      // The attitude again from the corrected accelerometer (the next
+      // sample), the gyro's bias kept: the offset's step would otherwise
+      // take the filter's 2 s time constant and overshoot.
+      const Vec3<S> bias = attitude_.gyro_bias_rad_s();
+      attitude_.reset();
+      attitude_.set_gyro_bias(bias);
+    }
+    if (checked) append_line_check(reply_buf_, w.length());
+    link.send_line(uint8_t(level_cal_.tag() & ~kLevelCalChecked), reply_buf_);
+  }
+
   //! The IMU's part of a tick, with an attitude: the learning gains end once
   //! the robot first stands; the level acts while it stands or walks, servos on.
   void level_body() {
@@ -591,6 +637,10 @@ class RobotApp {
     const bool checked = c.source == CommandSource::kCheckedLine;
     ReplyWriter w(reply_buf_, uint16_t(sizeof reply_buf_ - (checked ? kLineCheckBytes : 0)));
     if (!controller_.on_parsed(r, c, now_ms, w)) return;
+    if (w.length() == 0) {  // `cal level` measuring: the reply follows (level_cal())
+      level_cal_.start(uint8_t(port | (checked ? kLevelCalChecked : 0)));
+      return;
+    }
     if (checked) append_line_check(reply_buf_, w.length());
     link.send_line(port, reply_buf_);
   }
@@ -641,6 +691,8 @@ class RobotApp {
   AttitudeFilter<S> attitude_;
   FallDetector<S> fall_;
   LevelBody<S> level_;
+  LevelCalibration<S> level_cal_;
+  static constexpr uint8_t kLevelCalChecked = 2;  // level_cal_'s tag: the port (bit 0), a checked reply (bit 1)
   bool imu_probed_ = false;
   bool imu_present_ = false;
   ServoStage<S, kJoints, kStoredChannels> stage_;

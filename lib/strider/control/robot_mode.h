@@ -21,7 +21,16 @@ enum class ControlError : uint8_t {
   kServoFault = 31,      //!< walking while a servo board does not answer (or is starting again)
   kBatteryCritical = 32, //!< walking on a critically low battery (RobotApp's BatteryMonitor)
   kFallen = 33,          //!< walking while the robot lies tipped over (RobotApp's FallDetector)
-  kNoImu = 34            //!< `level on` without an MPU-6050 (RobotApp: none answered at start-up)
+  kNoImu = 34,           //!< `level on` without an MPU-6050 (RobotApp: none answered at start-up)
+  kNotStill = 35,        //!< `cal level` while the robot walks, lies, sits, levels, or moves during the measurement
+  kNotLevel = 36         //!< `cal level`: the accelerometer reads more than 5 deg off level
+};
+
+//! What `cal level` found when asked (MotionSink::start_level_cal()).
+enum class LevelCalStart : uint8_t {
+  kStarted = 0,  //!< measuring: the reply follows in about a second
+  kNoImu = 1,    //!< no MPU-6050 (err 34)
+  kNotStill = 2  //!< not standing with its servos on, levelling, a body pose, fallen, or measuring already (err 35)
 };
 
 enum class RobotMode : uint8_t { kStanding = 0, kWalking = 1, kRelaxed = 2, kCalibrating = 3 };

@@ -1,5 +1,6 @@
 //! Settings: everything the firmware keeps across power cycles (trims, the
-//! PCA9685 oscillator, link and avoidance settings), its defaults, its valid
+//! PCA9685 oscillator, link and avoidance settings, the accelerometer's
+//! level offsets), its defaults, its valid
 //! ranges, and its byte layout. Integers only, so the record is identical on
 //! the AVR and the host and needs no float parsing.
 #ifndef STRIDER_CONTROL_SETTINGS_H
@@ -13,10 +14,12 @@ namespace strider {
 
 constexpr uint8_t kMaxServoJoints = 18;     //!< hexapod18 has the most joints
 constexpr int16_t kMaxTrimDecideg = 300;    //!< |trim| <= 30.0 deg
-//! Layout version of the stored record (settings_record.h): 2 = a slot
-//! record with a sequence number; 1 was the single record before. Bump when
-//! the layout changes.
-constexpr uint8_t kSettingsVersion = 2;
+constexpr int8_t kMaxAccelOffsetMg = 100;   //!< |accelerometer offset| <= 100 mg (5.7 deg)
+//! Layout version of the stored record (settings_record.h): 3 = a slot
+//! record with the accelerometer's offsets; 2 the same without them (they
+//! load as 0); 1 was the single record before the slots. Bump when the
+//! layout changes.
+constexpr uint8_t kSettingsVersion = 3;
 
 //! Settings record (values, not bytes; see encode/decode for the layout).
 struct Settings {
@@ -29,16 +32,21 @@ struct Settings {
   uint8_t avoid_enabled;                 //!< 1 = obstacle avoidance on
   uint8_t speed_pct;                     //!< speed at power-up [%], 0-100
   int16_t trim_decideg[kMaxServoJoints]; //!< per-joint trim [0.1 deg], +-300
+  int8_t accel_x_mg;                     //!< accelerometer x offset (`cal level`) [mg], +-100
+  int8_t accel_y_mg;                     //!< accelerometer y offset [mg], +-100
 };
 
 //! Payload size [bytes]: little-endian fields in declaration order.
-constexpr uint8_t kSettingsPayloadBytes = 4 + 2 + 4 + 2 + 2 + 2 + 1 + 1 + 2 * kMaxServoJoints;
+constexpr uint8_t kSettingsPayloadBytes = 4 + 2 + 4 + 2 + 2 + 2 + 1 + 1 + 2 * kMaxServoJoints + 1 + 1;
+//! The payload of the layouts before the offsets (versions 1 and 2): the
+//! same fields up to the trims; the offsets then load as 0.
+constexpr uint8_t kSettingsPayloadBytesV2 = kSettingsPayloadBytes - 2;
 
 //! Factory settings: nominal oscillator, 50 Hz, 9600 baud (HC-05 default),
 //! 1 s deadman, seed 000's 20 cm avoidance distance with a 40 cm slow band.
 constexpr Settings default_settings() {
   return Settings{kPca9685NominalOscHz, 50, 9600, 1000, 200, 400, 1, 50,
-                  {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}};
+                  {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, 0, 0};
 }
 
 //! *s = default_settings(), field by field: a copy of the constant would
@@ -58,6 +66,7 @@ inline void set_default_settings(Settings* s) {
   s->avoid_enabled = d.avoid_enabled;
   s->speed_pct = d.speed_pct;
   for (uint8_t i = 0; i < kMaxServoJoints; ++i) s->trim_decideg[i] = 0;
+  s->accel_x_mg = s->accel_y_mg = 0;
   static_assert(d.trim_decideg[0] == 0 && d.trim_decideg[kMaxServoJoints - 1] == 0, "default trims are zero");
 }
 
@@ -80,7 +89,8 @@ inline bool settings_valid(const Settings& s) {
   for (uint8_t i = 0; i < kMaxServoJoints; ++i) {
     if (s.trim_decideg[i] > kMaxTrimDecideg || s.trim_decideg[i] < -kMaxTrimDecideg) return false;
   }
-  return true;
+  return s.accel_x_mg <= kMaxAccelOffsetMg && s.accel_x_mg >= -kMaxAccelOffsetMg && s.accel_y_mg <= kMaxAccelOffsetMg &&
+         s.accel_y_mg >= -kMaxAccelOffsetMg;
 }
 
 
@@ -104,7 +114,8 @@ static_assert(!kSettingsBytesArePayload ||
                   (__builtin_offsetof(Settings, pwm_hz) == 4 && __builtin_offsetof(Settings, baud) == 6 &&
                    __builtin_offsetof(Settings, deadman_ms) == 10 && __builtin_offsetof(Settings, avoid_stop_mm) == 12 &&
                    __builtin_offsetof(Settings, avoid_slow_mm) == 14 && __builtin_offsetof(Settings, avoid_enabled) == 16 &&
-                   __builtin_offsetof(Settings, speed_pct) == 17 && __builtin_offsetof(Settings, trim_decideg) == 18),
+                   __builtin_offsetof(Settings, speed_pct) == 17 && __builtin_offsetof(Settings, trim_decideg) == 18 &&
+                   __builtin_offsetof(Settings, accel_x_mg) == 54 && __builtin_offsetof(Settings, accel_y_mg) == 55),
               "the payload's layout (encode_settings) is the struct's");
 
 namespace detail {
@@ -129,6 +140,8 @@ inline void encode_settings(const Settings& s, uint8_t* out) {
   *p++ = s.avoid_enabled;
   *p++ = s.speed_pct;
   for (uint8_t i = 0; i < kMaxServoJoints; ++i) detail::put_u16(p, uint16_t(s.trim_decideg[i]));
+  *p++ = uint8_t(s.accel_x_mg);
+  *p++ = uint8_t(s.accel_y_mg);
 }
 
 //! Reads a payload written by encode_settings (no validation).
@@ -147,6 +160,8 @@ inline void decode_settings(const uint8_t* in, Settings* s) {
   s->avoid_enabled = *p++;
   s->speed_pct = *p++;
   for (uint8_t i = 0; i < kMaxServoJoints; ++i) s->trim_decideg[i] = int16_t(detail::get_u16(p));
+  s->accel_x_mg = int8_t(*p++);
+  s->accel_y_mg = int8_t(*p++);
 }
 
 }  // namespace strider

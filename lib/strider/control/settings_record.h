@@ -1,5 +1,7 @@
-//! One settings record in a ByteStore (the Mega's EEPROM), in either layout:
-//!   version 2, a slot:  'S' 'T' 2 payload_len seq_lo seq_hi payload crc_lo crc_hi  (62 bytes)
+//! One settings record in a ByteStore (the Mega's EEPROM), in any layout:
+//!   version 3, a slot:  'S' 'T' 3 payload_len seq_lo seq_hi payload crc_lo crc_hi  (64 bytes)
+//!   version 2, a slot without the accelerometer's offsets: the same with a
+//!                       54-byte payload (62 bytes); the offsets load as 0
 //!   version 1, the single record of firmware before the slots, at the base:
 //!                       'S' 'T' 1 payload_len payload crc_lo crc_hi                 (60 bytes)
 //! The CRC (CRC-16/CCITT-FALSE, crc.h) covers everything before it. The
@@ -46,6 +48,7 @@ inline FlashText to_flash(SettingsStatus s) { return flash_name(kSettingsStatusN
 constexpr uint8_t kSettingsMagic0 = 'S';
 constexpr uint8_t kSettingsMagic1 = 'T';
 constexpr uint8_t kSettingsSingleRecordVersion = 1;  //!< the layout without a sequence number
+constexpr uint8_t kSettingsNoOffsetsVersion = 2;     //!< the slot layout before the accelerometer's offsets
 constexpr uint8_t kSettingsHeaderBytes = 4;          //!< magic, version, payload length
 constexpr uint8_t kSettingsSeqBytes = 2;
 constexpr uint8_t kErasedByte = 0xFF;
@@ -57,6 +60,10 @@ constexpr uint16_t kSettingsSingleRecordBytes = kSettingsHeaderBytes + kSettings
 //! Where a record's payload starts, by layout version.
 constexpr uint8_t settings_payload_offset(uint8_t version) {
   return version == kSettingsSingleRecordVersion ? kSettingsHeaderBytes : kSettingsHeaderBytes + kSettingsSeqBytes;
+}
+//! A record's payload length, by layout version (one this firmware reads).
+constexpr uint8_t settings_payload_bytes(uint8_t version) {
+  return version == kSettingsVersion ? kSettingsPayloadBytes : kSettingsPayloadBytesV2;
 }
 
 namespace detail {
@@ -93,9 +100,10 @@ STRIDER_NOINLINE SettingsStatus check_record(const Store& store, uint16_t at, bo
   // CRC, trusted only once the magic matched.
   const uint8_t v = head[2];
   if (v == kSettingsSingleRecordVersion && !single_ok) return SettingsStatus::kCorrupt;
-  if (v != kSettingsVersion && v != kSettingsSingleRecordVersion) return SettingsStatus::kOldVersion;
-  if (head[3] != kSettingsPayloadBytes) return SettingsStatus::kCorrupt;
-  const uint8_t crc_at = uint8_t(settings_payload_offset(v) + kSettingsPayloadBytes);
+  if (v != kSettingsVersion && v != kSettingsNoOffsetsVersion && v != kSettingsSingleRecordVersion)
+    return SettingsStatus::kOldVersion;
+  if (head[3] != settings_payload_bytes(v)) return SettingsStatus::kCorrupt;
+  const uint8_t crc_at = uint8_t(settings_payload_offset(v) + settings_payload_bytes(v));
   uint16_t crc = kCrc16Init;
   for (uint8_t i = 0; i < crc_at; ++i) crc = crc16_ccitt_update(crc, store.read(uint16_t(at + i)));
   if (crc != detail::read_u16(store, uint16_t(at + crc_at))) return SettingsStatus::kCorrupt;
@@ -104,7 +112,8 @@ STRIDER_NOINLINE SettingsStatus check_record(const Store& store, uint16_t at, bo
   return SettingsStatus::kOk;
 }
 
-//! Decodes the payload of a record check_record() accepted (no range check).
+//! Decodes the payload of a record check_record() accepted (no range check);
+//! what an older layout lacks (the accelerometer's offsets) reads as 0.
 //! Where a Settings' bytes are its payload (the AVR) they are read straight
 //! into *s; elsewhere through a copy on the stack.
 template <typename Store>
@@ -112,7 +121,8 @@ void read_record_payload(const Store& store, uint16_t at, uint8_t version, Setti
   uint8_t copy[kSettingsBytesArePayload ? 1 : kSettingsPayloadBytes];
   uint8_t* bytes = kSettingsBytesArePayload ? reinterpret_cast<uint8_t*>(s) : copy;
   const uint16_t from = uint16_t(at + settings_payload_offset(version));
-  for (uint8_t i = 0; i < kSettingsPayloadBytes; ++i) bytes[i] = store.read(uint16_t(from + i));
+  const uint8_t n = settings_payload_bytes(version);
+  for (uint8_t i = 0; i < kSettingsPayloadBytes; ++i) bytes[i] = i < n ? store.read(uint16_t(from + i)) : 0;
   if (!kSettingsBytesArePayload) {
     __builtin_memset(s, 0, sizeof *s);  // a host's padding too: whole copies compare byte for byte
     decode_settings(copy, s);

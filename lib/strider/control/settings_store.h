@@ -34,7 +34,7 @@ static_assert(kSettingsRecordBytes <= kSettingsSlotBytes && kSettingsSingleRecor
 struct SettingsRecord {
   uint16_t seq = 0;                //!< its sequence number (0 for a version-1 record)
   uint8_t slot = kNoSettingsSlot;  //!< 0 or 1; kNoSettingsSlot: none (defaults)
-  uint8_t version = 0;             //!< its layout: kSettingsVersion or kSettingsSingleRecordVersion
+  uint8_t version = 0;             //!< its layout: kSettingsVersion, kSettingsNoOffsetsVersion or kSettingsSingleRecordVersion
   //! How the load went: kOk, or why the defaults are in force (the slot that says most).
   SettingsStatus load_status = SettingsStatus::kEmpty;
   //! At load: what the other slot held (kOk: an older record; kEmpty;
@@ -50,12 +50,14 @@ constexpr uint16_t settings_slot_address(uint16_t base, uint8_t slot) {
   return uint16_t(base + slot * kSettingsSlotBytes);
 }
 
-//! True when record (version va, seq sa) is newer than (vb, sb): the
-//! current layout is newer than a version-1 record; between two numbered
-//! records, sa follows sb by less than half the sequence space (so 0
-//! follows 65535).
+//! True when record (version va, seq sa) is newer than (vb, sb): a slot
+//! record is newer than a version-1 record; between two slot records (of
+//! either slot layout), sa follows sb by less than half the sequence space
+//! (so 0 follows 65535).
 constexpr bool settings_record_newer(uint8_t va, uint16_t sa, uint8_t vb, uint16_t sb) {
-  return va != vb ? va == kSettingsVersion : int16_t(uint16_t(sa - sb)) > 0;
+  return (va == kSettingsSingleRecordVersion) != (vb == kSettingsSingleRecordVersion)
+             ? vb == kSettingsSingleRecordVersion
+             : int16_t(uint16_t(sa - sb)) > 0;
 }
 
 //! Loads the newest valid record of the two slots at base into *out and

@@ -58,6 +58,13 @@ struct FakeMotionSink {
     level = on;
     return true;
   }
+  // `cal level`: what start_level_cal() answers (kStarted: the reply is level_cal_done()'s).
+  strider::LevelCalStart level_cal = strider::LevelCalStart::kNoImu;
+  int level_cal_starts = 0;
+  strider::LevelCalStart start_level_cal() {
+    ++level_cal_starts;
+    return level_cal;
+  }
   // What it pretends the legs reach: 10..150 mm (set_body_height() above).
   strider::MotionReach reach_mm_deg{10, 150, {-20, -15, -30}, {20, 12, 30}};
   const char* gait_names() const { return "walk trot pace crawl"; }

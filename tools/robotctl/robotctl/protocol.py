@@ -46,6 +46,8 @@ ERROR_CODES = {
     32: "battery critical",
     33: "fallen",
     34: "no imu",
+    35: "not standing still",
+    36: "not level",
 }
 
 Value = Union[int, float, str]
