@@ -86,6 +86,7 @@ struct Rig {
   double last_roll = 0, last_pitch = 0;
   double accel_offset_x_mg = 0, accel_offset_y_mg = 0;  // the part's error, added to what it reads
   double gyro_wobble_rad_s = 0;                          // a rate that alternates sign every tick (a shaking robot)
+  bool reads_fail = false;                               // the part stops answering: imu(nullptr), as the firmware's glue
   int ticks = 0;
 
   Rig(double roll_deg, double pitch_deg, bool with_imu = true, double offset_deg_s = 0)
@@ -113,7 +114,7 @@ struct Rig {
       s.temp_c = S(25);
       last_roll = r;
       last_pitch = p;
-      app.imu(&s, lines);
+      app.imu(reads_fail ? nullptr : &s, lines);
       app.tick(now_us, lines);
       out.writes.clear();
       out.relaxed.clear();
@@ -326,6 +327,17 @@ TYPED_TEST(LevelAppTest, CalLevelRefusals) {
   EXPECT_EQ(rig.lines.sent[1], not_still);
   EXPECT_EQ(rig.send("stop\n"), "ok stop");
   rig.run_ms(3000);
+  // The part stops answering while measuring: err 34 at the first failed
+  // read (every line gets its reply), nothing kept.
+  EXPECT_EQ(rig.send("cal level\n"), "");
+  rig.run_ms(200);
+  rig.lines.sent.clear();
+  rig.reads_fail = true;
+  rig.run_ms(2000);
+  ASSERT_EQ(rig.lines.sent.size(), 1u);
+  EXPECT_EQ(rig.lines.sent[0], "err 34 no imu: level needs an MPU-6050 on the I2C bus (status shows imu=)");
+  rig.reads_fail = false;
+  rig.run_ms(1000);
   // On a 6 deg slope: not level.
   rig.ground_roll = 6.0 * kDeg;
   rig.run_ms(8000);

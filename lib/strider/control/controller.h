@@ -154,6 +154,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   //! and applied; or why it failed (nothing changed). *w: the reply.
   void level_cal_done(LevelCalStatus st, int8_t x_mg, int8_t y_mg, ReplyWriter& w) {
     if (st == LevelCalStatus::kMoving) return fail(w, ControlError::kNotStill, FlashText{text::kNotStill});
+    if (st == LevelCalStatus::kNoReading) return fail(w, ControlError::kNoImu, FlashText{text::kNoImu});
     if (st != LevelCalStatus::kDone) return fail(w, ControlError::kNotLevel, FlashText{text::kNotLevel});
     Settings s = settings_;
     s.accel_x_mg = x_mg;

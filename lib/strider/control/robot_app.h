@@ -268,8 +268,8 @@ class RobotApp {
   //! taken from every sample first.
   template <typename Link>
   STRIDER_NOINLINE void imu(const ImuSample<S>* sample, Link& link) {
+    if (level_cal_.running() && imu_present_) level_cal(sample, link);  // a failed read (nullptr) ends it
     if (sample == nullptr || !imu_present_) return;
-    if (level_cal_.running()) level_cal(*sample, link);
     ImuSample<S> s = *sample;
     constexpr S kMs2PerMg = scalar<S>(kStandardGravity / 1000.0);
     s.accel_m_s2.x -= S(int(controller_.settings().accel_x_mg)) * kMs2PerMg;
@@ -575,11 +575,12 @@ class RobotApp {
   //! One raw sample into the `cal level` measurement; a robot that leaves
   //! its stand meanwhile ends it (moving). At the end, the deferred reply.
   template <typename Link>
-  STRIDER_NOINLINE void level_cal(const ImuSample<S>& sample, Link& link) {
+  STRIDER_NOINLINE void level_cal(const ImuSample<S>* sample, Link& link) {
     int8_t x = 0, y = 0;
-    const LevelCalStatus st = motion_.walker().engine().state() != GaitState::kStanding || !stage_.all_on()
+    const LevelCalStatus st = sample == nullptr ? (level_cal_.stop(), LevelCalStatus::kNoReading)
+                              : motion_.walker().engine().state() != GaitState::kStanding || !stage_.all_on()
                                   ? (level_cal_.stop(), LevelCalStatus::kMoving)
-                                  : level_cal_.add(sample, attitude_.gyro_bias_rad_s(), &x, &y);
+                                  : level_cal_.add(*sample, attitude_.gyro_bias_rad_s(), &x, &y);
     if (st == LevelCalStatus::kCollecting) return;
     const bool checked = (level_cal_.tag() & kLevelCalChecked) != 0;
     ReplyWriter w(reply_buf_, uint16_t(sizeof reply_buf_ - (checked ? kLineCheckBytes : 0)));

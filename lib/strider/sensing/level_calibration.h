@@ -36,7 +36,8 @@ enum class LevelCalStatus : uint8_t {
   kCollecting = 1,  //!< still and level so far, not enough readings yet
   kDone = 2,        //!< the offsets are the mean of kLevelCalSamples readings
   kMoving = 3,      //!< a reading turned: the run ended, nothing kept
-  kNotLevel = 4     //!< a reading or the mean is too far from level: the run ended
+  kNotLevel = 4,    //!< a reading or the mean is too far from level: the run ended
+  kNoReading = 5    //!< the part did not answer (a failed read): the run ended
 };
 
 template <typename S>
