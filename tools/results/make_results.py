@@ -12,6 +12,8 @@ Sources:
 - strider-sim and tools/sim/scenarios (seed 000 speed and turning, seed 003
   table 5 distances), when the simulator is built;
 - tools/pso_bench/gait_tune (PSO gait tuning over strider-sim rollouts);
+- tools/sim/measure_speed.py (the phone pad per model: each firmware in
+  strider-sim's firmware mode, RC buttons at four slider steps);
 - tools/results/sim_crosscheck.py (strider-sim's runs replayed in pybullet
   and MuJoCo), when they are installed.
 Intermediate results go to out/results/.
@@ -25,7 +27,8 @@ usage: make_results.py [--build DIR] [--out docs/results.md] [--reuse] [--quick]
   --no-slow  skip the PSO comparison, the simulator and the gait tuning
            (they then read "not measured"); for the generator's own test
   --only   measure only the named section groups (pso: seed 003 table 4
-           and the pyswarms comparison; gait: the gait tuning) and replace
+           and the pyswarms comparison; gait: the gait tuning; pad: the phone
+           pad per model) and replace
            those sections and their summary rows in the existing page
 """
 import argparse
@@ -39,12 +42,14 @@ import time
 from results_avr import avr, avr_data
 from results_common import RESULTS, ROOT, Cli, NotMeasured, cpu_name, git_describe, not_measured, section, table
 from results_kinematics import accuracy, seed001, seed002
+from results_pad import pad_data, pad_table
 from results_pso import pso_data, pso_vs_pyswarms, seed003_pso
 from results_sim import gait_tune_data, gait_tuning, physics_check, seed000, seed003_distance, sim_metrics, sim_table
 
 
 SECTION_GROUPS = {"pso": ("Seed 003: PSO joint angles, table 4", "PSO: Strider against pyswarms"),
-                  "gait": ("Gait tuning by PSO (simulator rollouts)",)}
+                  "gait": ("Gait tuning by PSO (simulator rollouts)",),
+                  "pad": ("Phone pad per model (simulator, firmware mode)",)}
 
 
 def splice(old_text, parts, summary, notes):
@@ -131,6 +136,14 @@ def main():
         summary.extend(rows)
 
     add("Seed 000: speed and turning (simulator)", seed000, sim)
+    pad = slow(lambda: pad_data(build, a.reuse), *SECTION_GROUPS["pad"])
+
+    def from_pad():
+        if isinstance(pad, NotMeasured):
+            raise pad
+        return pad_table(pad)
+
+    add("Phone pad per model (simulator, firmware mode)", from_pad)
     add("Seed 001: body pose ranges", needs_cli(seed001), a.quick)
     add("Seed 002: foot positions, tables 4-9", needs_cli(seed002))
     add("Seed 003: PSO joint angles, table 4", from_pso(seed003_pso))

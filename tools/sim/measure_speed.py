@@ -22,6 +22,7 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 import tempfile
 
@@ -62,13 +63,17 @@ def run(sim, elf, robot, gait, command, slider=""):
             if slider:
                 f.write(f"at 0.6 send {slider}\n")
             end = "S" if slider else "stop\\n"
-            f.write(f"at {COMMAND_S:g} send {command}\nat {STOP_S:g} send {end}\n")
+            f.write(f"at {COMMAND_S:g} send {command}\nat {STOP_S - 0.5:g} send status\\n\n"
+                    f"at {STOP_S:g} send {end}\n")
         args = [sim, sc, "--out", os.path.join(d, "out"), "--quiet"]
         if elf:
             args += ["--firmware", elf]
         subprocess.run(args, check=True)
         with open(os.path.join(d, "out", "metrics.json")) as f:
             m = json.load(f)
+        with open(os.path.join(d, "out", "robot.log")) as f:
+            walked = re.findall(r"\bok status\b.* gait=(\w+)", f.read())
+        m["gait_walked"] = walked[-1] if walked else ""  # the status sent before the stop
         return m, steady(os.path.join(d, "out", "trace.csv"))
 
 

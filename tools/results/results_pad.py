@@ -1,0 +1,78 @@
+"""The phone-pad section of docs/results.md: every model's firmware on the
+virtual Mega in strider-sim (firmware mode), driven by the RC Controller
+app's bytes (a slider step, then F or G held) from standing in its default
+gait, against the body speed it makes (tools/sim/measure_speed.py's steady
+window). Issue 20's bar: within 10 % of the command."""
+import json
+import sys
+
+from results_common import RESULTS, ROOT, NotMeasured, table
+
+sys.path.insert(0, str(ROOT / "tools" / "sim"))
+import measure_speed  # noqa: E402  (tools/sim is not a package)
+
+MODELS = ("sprawl8", "hexapod18", "spider12", "mammal8", "dog12")
+SLIDERS = ("1", "2", "5", "q")  # 10, 20, 50, 100 %
+FULL = {"F": 155.0, "G": 60.0}  # the app's 100 % [mm/s, deg/s] (docs/protocol.md)
+UNIT = {"F": "mm/s", "G": "deg/s"}
+BAR_PCT = 10.0
+
+
+def pad_data(build, reuse):
+    """{model: [{button, commanded, achieved, drift_pct, gait}]}, measured (or
+    read back from out/results/pad.json with reuse)."""
+    path = RESULTS / "pad.json"
+    if reuse and path.is_file():
+        return json.loads(path.read_text())
+    sim = build / "tools" / "sim" / "strider-sim"
+    if not sim.is_file():
+        raise NotMeasured("strider-sim is not built (tools/sim, needs libbullet-dev)")
+    out = {}
+    for model in MODELS:
+        elf = build / "src" / f"strider_firmware_{model}.elf"
+        if not elf.is_file():
+            raise NotMeasured(f"the {model} firmware is not built ({elf.name}: needs gcc-avr)")
+        rows = out[model] = []
+        for slider in SLIDERS:
+            pct = 100 if slider == "q" else 10 * int(slider)
+            for button in ("F", "G"):
+                m, (speed, yaw_rate, lateral, dist) = measure_speed.run(str(sim), str(elf), model, "", button, slider)
+                rows.append({"button": slider + button, "commanded": FULL[button] * pct / 100,
+                             "achieved": speed if button == "F" else yaw_rate,
+                             "drift_pct": 100 * abs(lateral) / dist if button == "F" and dist > 1 else None,
+                             "gait": m.get("gait_walked", "")})
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(out, indent=1))
+    return out
+
+
+def pad_table(data):
+    rows, misses, worst = [], [], {}
+    for model, runs in data.items():
+        for r in runs:
+            err = 100 * (r["achieved"] / r["commanded"] - 1)
+            unit = UNIT[r["button"][-1]]
+            drift = "-" if r["drift_pct"] is None else f"{r['drift_pct']:.1f} %"
+            rows.append([model, r["gait"] or "-", f"`{r['button']}`", f"{r['commanded']:g} {unit}",
+                         f"{r['achieved']:.1f} {unit}", f"{err:+.1f} %", drift])
+            worst[model] = max(worst.get(model, 0.0), abs(err))
+            if abs(err) > BAR_PCT:
+                misses.append(f"{model} `{r['button']}` {err:+.0f} %")
+    md = ("The RC Controller app's buttons (the slider's `1` = 10 %, `2`, `5`, `q` = 100 %, then `F` forward, "
+          "155 mm/s at 100 %, or `G` anticlockwise, 60 deg/s at 100 %) from standing in the model's default gait, "
+          "against the body speed the model's firmware makes on the virtual Mega (strider-sim firmware mode). "
+          "Achieved is the **steady** speed: the body's displacement (unwrapped yaw for `G`) from 3 s after the "
+          "button, when the speed ramp is over, to the stop 4 s later, over that time "
+          "(tools/sim/measure_speed.py; metrics.json's best 2 s window flatters gaits that rock the body and is not "
+          "used). Gait: the one `status` reports while the button is held (sprawl8's pad changes gait by speed, "
+          "lib/strider/gait/gait_choice.h). The command reaches the gait through the per-(model, gait) speed "
+          "correction of lib/strider/gait/speed_correction.h. Drift: the displacement across the heading over the "
+          "same window.\n\n")
+    md += table(["model", "gait", "button", "commanded", "achieved", "error", "drift"], rows)
+    md += (f"\nOutside the {BAR_PCT:g} % bar: " + ("; ".join(misses) if misses else "none") + ".\n")
+    summary = [("000", "phone pad, sprawl8 `qF` / `qG`", "155 mm/s / 360 deg in 6 s",
+                "; ".join(f"{r['achieved']:.1f} {UNIT[r['button'][-1]]}" for r in data.get("sprawl8", [])
+                          if r["button"] in ("qF", "qG")) or "not measured"),
+               ("-", "phone pad, worst error per model", f"within {BAR_PCT:g} %",
+                ", ".join(f"{k} {v:.0f} %" for k, v in worst.items()))]
+    return md, summary
