@@ -48,6 +48,7 @@ struct NullSink {
   void relax() {}
   bool set_gait(const char* name) { return name[0] == 't'; }
   void choose_pad_gait(const strider::Twist& v) { g_sink = uint16_t(v.wz); }
+  strider::RcLimits pad_limits() const { return {}; }
   bool set_body_pose(int32_t, int32_t, int32_t) { return true; }
   bool set_body_height(int32_t h) { return h < 1000; }
   bool set_level(bool on) { return on; }

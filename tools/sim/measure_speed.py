@@ -3,7 +3,7 @@
 
 For a model and gait: the model's firmware on the virtual Mega (firmware
 mode), the gait, then `walk V` (or `turn W`, or an RC pad button at a
-slider step) held 7 s from standing; prints the commanded and achieved
+slider step) held 7 s from standing (the pad's speed as `status` reports it); prints the commanded and achieved
 speeds, the error, and achieved/commanded x the ratio in force, the table's
 new entry. About 2 s of CPU a run.
 
@@ -52,19 +52,23 @@ def steady(trace_path, t0=STEADY_S, t1=STOP_S):
     return dist / dt, yaw / dt, lateral, dist
 
 
-def run(sim, elf, robot, gait, command, slider=""):
+def run(sim, elf, robot, gait, command, slider="", window_s=STOP_S - STEADY_S):
+    """One run: the command held from COMMAND_S; the steady window is
+    window_s long from STEADY_S (slow speeds take a longer one: the body's
+    sway within a step is then a smaller part of the displacement)."""
+    stop_s = STEADY_S + window_s
     with tempfile.TemporaryDirectory() as d:
         sc = os.path.join(d, "run.scenario")
         with open(sc, "w") as f:
-            f.write(f"robot {robot}\nduration {STOP_S + 1:g}\n"
+            f.write(f"robot {robot}\nduration {stop_s + 1:g}\n"
                     "at 0.2 send $deadman off*cb77\\n\n")
             if gait:
                 f.write(f"at 0.4 send gait {gait}\\n\n")
             if slider:
                 f.write(f"at 0.6 send {slider}\n")
             end = "S" if slider else "stop\\n"
-            f.write(f"at {COMMAND_S:g} send {command}\nat {STOP_S - 0.5:g} send status\\n\n"
-                    f"at {STOP_S:g} send {end}\n")
+            f.write(f"at {COMMAND_S:g} send {command}\nat {stop_s - 0.5:g} send status\\n\n"
+                    f"at {stop_s:g} send {end}\n")
         args = [sim, sc, "--out", os.path.join(d, "out"), "--quiet"]
         if elf:
             args += ["--firmware", elf]
@@ -72,9 +76,13 @@ def run(sim, elf, robot, gait, command, slider=""):
         with open(os.path.join(d, "out", "metrics.json")) as f:
             m = json.load(f)
         with open(os.path.join(d, "out", "robot.log")) as f:
-            walked = re.findall(r"\bok status\b.* gait=(\w+)", f.read())
-        m["gait_walked"] = walked[-1] if walked else ""  # the status sent before the stop
-        return m, steady(os.path.join(d, "out", "trace.csv"))
+            status = [line for line in f if re.search(r"\bok status\b", line)]
+        # The status sent before the stop: the gait walked, the command in force.
+        fields = dict(re.findall(r" (\w+)=(\S+)", status[-1])) if status else {}
+        m["gait_walked"] = fields.get("gait", "")
+        m["commanded_vx"] = float(fields.get("vx", "nan"))
+        m["commanded_wz"] = float(fields.get("wz", "nan"))
+        return m, steady(os.path.join(d, "out", "trace.csv"), STEADY_S, stop_s)
 
 
 def main():
@@ -89,6 +97,7 @@ def main():
     p.add_argument("--slider", default="q", help="RC slider byte: 0-9, q (100 %%)")
     p.add_argument("--ratio", type=float, default=10000, help="linear ratio in force [1/10000]")
     p.add_argument("--turn-ratio", type=float, default=10000, help="turn ratio in force [1/10000]")
+    p.add_argument("--window", type=float, default=STOP_S - STEADY_S, help="steady window [s]")
     a = p.parse_args()
     pct = 100 if a.slider == "q" else 10 * int(a.slider)
     name = f"{a.robot} {a.gait or '(default)'}"
@@ -96,13 +105,15 @@ def main():
     turn = a.turn or (60 * pct / 100 if a.pad == "G" else None)
     if walk:
         cmd = ("F", a.slider) if a.pad else (f"walk {walk:g}\\n", "")
-        m, (got, _, lateral, dist) = run(a.sim, a.elf, a.robot, a.gait, *cmd)
+        m, (got, _, lateral, dist) = run(a.sim, a.elf, a.robot, a.gait, *cmd, window_s=a.window)
+        walk = m["commanded_vx"] if a.pad else walk  # the pad's speed for this model (status)
         drift = 100 * abs(lateral) / max(dist, 1e-9)
         print(f"{name} walk {walk:g} mm/s -> {got:.1f} mm/s ({100 * (got / walk - 1):+.1f} %), "
               f"drift {drift:.1f} %, best2s {m['speed_mm_s']:.1f}, ratio {a.ratio * got / walk:.0f}")
     if turn:
         cmd = ("G", a.slider) if a.pad else (f"turn {turn:g}\\n", "")
-        m, (_, got, _, _) = run(a.sim, a.elf, a.robot, a.gait, *cmd)
+        m, (_, got, _, _) = run(a.sim, a.elf, a.robot, a.gait, *cmd, window_s=a.window)
+        turn = m["commanded_wz"] if a.pad else turn
         print(f"{name} turn {turn:g} deg/s -> {got:.1f} deg/s ({100 * (got / turn - 1):+.1f} %), "
               f"360 deg in {360 / got if got else float('inf'):.2f} s, best2s {m['yaw_rate_deg_s']:.1f}, "
               f"ratio {a.turn_ratio * got / turn:.0f}")

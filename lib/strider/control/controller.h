@@ -10,6 +10,7 @@
 //!   void relax();                         // servos limp
 //!   bool set_gait(const char* name);      // false: no such gait for this robot
 //!   void choose_pad_gait(const Twist& v); // an RC button's speed: the gait for it (gait/gait_choice.h)
+//!   RcLimits pad_limits();                // the RC buttons' speeds at 100 % (walker_motion.h)
 //!   bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw);  // [0.1 deg]; false: refused
 //!   bool set_body_height(int32_t height); // [0.1 mm]; false: out of the robot's range
 //!   bool set_level(bool on);              // hold the body level (level_body.h); false: no IMU
@@ -232,7 +233,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser> {
   void apply(const Command& c, ReplyWriter& w) {
     switch (c.kind) {
       case CommandKind::kDrive: {
-        const RcLimits lim;
+        const RcLimits lim = sink_.pad_limits();
         const int32_t s = speed_pct_;
         return move(Twist{c.arg[0] * lim.linear * s / 100, c.arg[1] * lim.linear * s / 100,
                           c.arg[2] * lim.turn * s / 100}, w, true);

@@ -398,6 +398,7 @@ class RobotApp {
       char name[kGaitNameBytes];
       if (app_.motion_.pad_gait(v, name)) set_gait(name);
     }
+    RcLimits pad_limits() const { return app_.motion_.pad_limits(); }
     const char* gait_name() const { return app_.motion_.gait().name; }
     bool tune(TuneParam p, int32_t v) { return app_.tuner_.set(app_.motion_, p, v); }
     TuneRange tune_range(TuneParam p) const { return app_.tuner_.range(app_.motion_, p); }

@@ -20,6 +20,7 @@
 #include "../gait/walker.h"
 #include "avoidance.h"
 #include "motion_reach.h"
+#include "robot_mode.h"
 
 namespace strider {
 
@@ -87,16 +88,15 @@ class WalkerMotion {
     constexpr S tenth = scalar<S>(0.1);
     constexpr S decideg_to_rad = scalar<S>(kDegToRad / 10.0);
     // The gait's own speed that makes the commanded body speed (speed_correction.h).
-    walker_.engine().set_command(S(speed_corrected(int32_t(v.vx), linear_per10k_)) * tenth,
-                                 S(speed_corrected(int32_t(v.vy), linear_per10k_)) * tenth,
+    walker_.engine().set_command(S(speed_corrected(int32_t(v.vx), linear_per10k_, linear_offset_)) * tenth,
+                                 S(speed_corrected(int32_t(v.vy), linear_per10k_, linear_offset_)) * tenth,
                                  S(speed_corrected(int32_t(v.wz), turn_per10k_)) * decideg_to_rad);
   }
 
   //! The gait's own speed [0.1 mm/s] -> the body speed it makes on the
   //! ground (speed_correction.h); turn: a turn rate [0.1 deg/s].
   int32_t body_speed(int32_t gait_tenths, bool turn = false) const {
-    const uint16_t p = turn ? turn_per10k_ : linear_per10k_;
-    return p == 0 ? gait_tenths : int32_t(int64_t(gait_tenths) * p / 10000);
+    return turn ? body_speed_of(gait_tenths, turn_per10k_) : body_speed_of(gait_tenths, linear_per10k_, linear_offset_);
   }
 
   //! The gait the RC pad walks body speed v in (gait_choice.h): true and
@@ -105,6 +105,18 @@ class WalkerMotion {
     return robot_ != nullptr && gait_choice_for(robot_, gait().name, v.vx, v.vy, v.wz, to);
   }
 
+  //! The RC buttons' speeds at 100 %: the pad's defaults (RcLimits), or the
+  //! top speeds of the gait the pad walks at 100 % where it makes less
+  //! (speed_correction.h): the pad at 100 % is the fastest speed the robot
+  //! really makes.
+  RcLimits pad_limits() const {
+    RcLimits lim;
+    if (robot_ == nullptr) return lim;
+    char fast[kGaitNameBytes];
+    const bool other = gait_choice_for(robot_, gait().name, lim.linear, 0, lim.turn, fast);
+    pad_top_of(robot_, other ? fast : gait().name, &lim.linear, &lim.turn);
+    return lim;
+  }
   //! Stop stepping; the feet finish their swing and the robot stands.
   void stand() { set_velocity(Twist{0, 0, 0}); }
 
@@ -213,7 +225,7 @@ class WalkerMotion {
 
   //! The speed correction of the model and the gait in force.
   void correct_for_gait() {
-    if (robot_ != nullptr) speed_correction_of(robot_, gait().name, &linear_per10k_, &turn_per10k_);
+    if (robot_ != nullptr) speed_correction_of(robot_, gait().name, &linear_per10k_, &turn_per10k_, &linear_offset_);
   }
 
   //! After the walker's configuration: no offsets, no command, the standing height.
@@ -261,6 +273,7 @@ class WalkerMotion {
   const char* robot_ = nullptr;     //!< the model's name (configure)
   uint16_t linear_per10k_ = 0;    //!< speed_correction.h; 0: none
   uint16_t turn_per10k_ = 0;
+  uint16_t linear_offset_ = 0;  //!< [0.1 mm/s], speed_correction.h
   MotionReach reach_{0, 0, {0, 0, 0}, {0, 0, 0}};
 };
 

@@ -37,6 +37,7 @@ struct FakeMotionSink {
   // RC buttons' speeds, as the controller passed them for a gait choice.
   std::vector<strider::Twist> pad_speeds;
   void choose_pad_gait(const strider::Twist& v) { pad_speeds.push_back(v); }
+  strider::RcLimits pad_limits() const { return {}; }
   bool refuse_pose = false;
   bool set_body_pose(int32_t r, int32_t p, int32_t y) {
     if (refuse_pose) return false;
