@@ -8,7 +8,7 @@
 #define STRIDER_KINEMATICS_TWO_LINK_H
 
 #include "leg_ik_common.h"
-#include "wide_units.h"
+#include "wide_sqrt.h"
 
 namespace strider {
 
