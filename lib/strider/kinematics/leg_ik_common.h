@@ -6,8 +6,6 @@
 #ifndef STRIDER_KINEMATICS_LEG_IK_COMMON_H
 #define STRIDER_KINEMATICS_LEG_IK_COMMON_H
 
-#include <string.h>
-
 #include "../math/vec3.h"
 #include "../math/working_units.h"
 #include "ik_status.h"
@@ -17,18 +15,11 @@ namespace strider {
 
 namespace leg_ik {
 
-//! The first test of every solver: false when a target coordinate is so far
-//! out (|v| > bound [mm], the leg's reach plus max_clamp) that the target is
-//! unreachable anyway, and for NaN and infinities. Fixed tests the bound
-//! exactly (it keeps the squares that follow from saturating). Float only
-//! needs finite, not absurd values (|v| < 2^15 mm): one integer test of the
-//! exponent instead of a ~100-cycle compare, and the miss distance decides
-//! the rest.
-inline bool within(float v, float) {
-  uint32_t bits;
-  memcpy(&bits, &v, sizeof bits);
-  return (bits & 0x7F800000ul) < (uint32_t(127 + 15) << 23);
-}
+//! The first test of every solver: |v| <= bound [mm] (the leg's reach plus
+//! max_clamp; further out the target is unreachable anyway), false for NaN
+//! and infinities. Float compares the bits of |v| and of bound (>= 0), one
+//! integer test instead of a ~100-cycle float compare.
+inline bool within(float v, float bound) { return detail::magnitude_bits(v) <= detail::float_bits(bound); }
 inline bool within(Fixed v, Fixed bound) { return abs(v) <= bound; }
 
 //! a < b and v == 0 for the solvers' hot paths: Fixed compares raws, float
