@@ -47,7 +47,6 @@ class Fixed {
 
   static constexpr Fixed max() { return from_raw(kMaxRaw); }
   static constexpr Fixed min() { return from_raw(kMinRaw); }
-  static constexpr Fixed epsilon() { return from_raw(1); }
 
   // Addition and subtraction saturate: a wrapped coordinate would jump a leg.
   // Constant operands fold through the constexpr path; at run time the AVR
