@@ -22,11 +22,7 @@
 #ifndef STRIDER_KINEMATICS_PLANAR_LEG_H
 #define STRIDER_KINEMATICS_PLANAR_LEG_H
 
-#include "../math/vec3.h"
-#include "ik_status.h"
-#include "joints.h"
-#include "leg_ik_common.h"
-#include "two_link.h"
+#include "two_link.h"  // with leg_ik_common.h, joints.h and ik_status.h
 
 namespace strider {
 

@@ -99,21 +99,6 @@ class Fixed {
     return (b < 0 && a > kMaxRaw + b) ? kMaxRaw : (b > 0 && a < kMinRaw + b) ? kMinRaw : a - b;
   }
   static constexpr int32_t neg_raw(int32_t a) { return a == kMinRaw ? kMaxRaw : -a; }
-  //! sat_add and sat_sub for run time (on the AVR in fixed_avr.h).
-  STRIDER_ALWAYS_INLINE static int32_t sat_add_fast(int32_t a, int32_t b) {
-#if defined(__AVR__)
-    return fixed_avr::sat_add(a, b);
-#else
-    return sat_add(a, b);
-#endif
-  }
-  STRIDER_ALWAYS_INLINE static int32_t sat_sub_fast(int32_t a, int32_t b) {
-#if defined(__AVR__)
-    return fixed_avr::sat_sub(a, b);
-#else
-    return sat_sub(a, b);
-#endif
-  }
   static constexpr uint32_t abs_raw(int32_t a) { return a < 0 ? uint32_t(0) - uint32_t(a) : uint32_t(a); }
 
   //! round((a * b) / 2^16), saturated, with no 64-bit type: |a| = ah:al and
@@ -125,24 +110,6 @@ class Fixed {
   static constexpr uint32_t mul_mag(uint32_t ua, uint32_t ub) {
     return mul_mag_parts(ua >> 16, ua & 0xFFFFu, ub >> 16, ub & 0xFFFFu);
   }
-  //! mul_raw for run time: identical results, and on the AVR 16 x 16-bit
-  //! hardware products instead of four 32-bit multiply calls (avr-gcc 5.4
-  //! does not narrow them: 582 cycles in C).
-  static inline int32_t mul_raw_fast(int32_t a, int32_t b) {
-#if defined(__AVR__)
-    return fixed_avr::mul_raw(a, b);
-#else
-    return mul_raw(a, b);
-#endif
-  }
-
-#if defined(__AVR__)
-  //! mul_raw with both factors 1 or more in magnitude, for the AVR (the
-  //! target of strider_fixed_mul_full_avr()).
-  static int32_t mul_raw_full_avr(int32_t a, int32_t b) {
-    return apply_sign(fixed_avr::mul_mag_full(abs_raw(a), abs_raw(b)), (a < 0) != (b < 0));
-  }
-#endif
 
   //! round(a * 2^16 / b) by restoring division on 32-bit words; b == 0
   //! saturates toward the sign of a (never traps, never NaN).
@@ -150,17 +117,31 @@ class Fixed {
     return b == 0 ? (a < 0 ? kMinRaw : kMaxRaw)
                   : apply_sign(div_mag(abs_raw(a), abs_raw(b)), (a < 0) != (b < 0));
   }
-  //! div_raw for run time: identical results; on the AVR one 31-step
-  //! restoring loop in registers (~880 cycles) instead of a 32-bit library
-  //! division and 17 steps in C (~1,600).
-  static inline int32_t div_raw_fast(int32_t a, int32_t b) {
+
+  //! sat_add, sat_sub, mul_raw and div_raw for run time: the same results; on
+  //! the AVR the kernels of fixed_avr.h (an add and a branch on the overflow
+  //! flag; 16 x 16-bit hardware products instead of four 32-bit multiply
+  //! calls, 582 cycles in C; a 31-step restoring loop, ~880 cycles, instead
+  //! of a 32-bit library division and 17 steps in C, ~1,600).
 #if defined(__AVR__)
+  STRIDER_ALWAYS_INLINE static int32_t sat_add_fast(int32_t a, int32_t b) { return fixed_avr::sat_add(a, b); }
+  STRIDER_ALWAYS_INLINE static int32_t sat_sub_fast(int32_t a, int32_t b) { return fixed_avr::sat_sub(a, b); }
+  static inline int32_t mul_raw_fast(int32_t a, int32_t b) { return fixed_avr::mul_raw(a, b); }
+  static inline int32_t div_raw_fast(int32_t a, int32_t b) {
     return b == 0 ? (a < 0 ? kMinRaw : kMaxRaw)
                   : apply_sign(fixed_avr::div_mag(abs_raw(a), abs_raw(b)), (a < 0) != (b < 0));
-#else
-    return div_raw(a, b);
-#endif
   }
+  //! mul_raw with both factors 1 or more in magnitude (the target of
+  //! strider_fixed_mul_full_avr()).
+  static int32_t mul_raw_full_avr(int32_t a, int32_t b) {
+    return apply_sign(fixed_avr::mul_mag_full(abs_raw(a), abs_raw(b)), (a < 0) != (b < 0));
+  }
+#else
+  STRIDER_ALWAYS_INLINE static int32_t sat_add_fast(int32_t a, int32_t b) { return sat_add(a, b); }
+  STRIDER_ALWAYS_INLINE static int32_t sat_sub_fast(int32_t a, int32_t b) { return sat_sub(a, b); }
+  static inline int32_t mul_raw_fast(int32_t a, int32_t b) { return mul_raw(a, b); }
+  static inline int32_t div_raw_fast(int32_t a, int32_t b) { return div_raw(a, b); }
+#endif
 
  private:
   struct RawTag {};
