@@ -6,6 +6,7 @@
 
 #include "chain_random.h"
 #include "kinematics/dh_chain.h"
+#include "math/working_units.h"
 
 namespace {
 
@@ -144,12 +145,12 @@ TEST(ChainNorm, FixedNormIsOverflowSafeAndPrecise) {
   for (const auto& c : cases) {
     const Vec3<Fixed> v(Fixed(c.x), Fixed(c.y), Fixed(c.z));
     const double exact = std::sqrt(dbl(v.x) * dbl(v.x) + dbl(v.y) * dbl(v.y) + dbl(v.z) * dbl(v.z));
-    const double got = strider::norm_safe(v).to_double();
+    const double got = strider::units::norm(v).to_double();
     EXPECT_NEAR(got, exact, 2e-4 * exact + 2.0 / 65536) << c.x << " " << c.y << " " << c.z;
     const double exact_f = std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
-    EXPECT_NEAR(strider::norm_safe(Vec3<float>(float(c.x), float(c.y), float(c.z))), exact_f, 1e-6 * exact_f + 1e-9);
+    EXPECT_NEAR(strider::units::norm(Vec3<float>(float(c.x), float(c.y), float(c.z))), exact_f, 1e-6 * exact_f + 1e-9);
   }
-  EXPECT_NEAR(strider::distance_safe(Vec3<Fixed>(Fixed(-300), Fixed(0), Fixed(0)),
+  EXPECT_NEAR(strider::units::distance(Vec3<Fixed>(Fixed(-300), Fixed(0), Fixed(0)),
                                      Vec3<Fixed>(Fixed(300), Fixed(0), Fixed(0))).to_double(),
               600.0, 0.05);
 }

@@ -209,7 +209,7 @@ TYPED_TEST(DlsTyped, JointLimitsClampAndReport) {
   q = JointVector<S, 3>{{S(0), S(0), S(-1)}};
   EXPECT_EQ(strider::dls_ik(leg, leg.fk(q_in), q, reached, DlsCase<S>::options()), IkStatus::kOk);
   EXPECT_TRUE(lim.contains(q));
-  EXPECT_LT(dbl(strider::distance_safe(reached, leg.fk(q_in))), DlsCase<S>::kResidual);
+  EXPECT_LT(dbl(strider::units::distance(reached, leg.fk(q_in))), DlsCase<S>::kResidual);
 }
 
 // A dense sweep of the seed 002 leg's workspace, IK(FK(q)) from a neutral
@@ -228,7 +228,7 @@ TYPED_TEST(DlsTyped, HexapodLegWorkspaceSweep) {
         Vec3<S> reached;
         ASSERT_EQ(strider::dls_ik(leg, target, q, reached, DlsCase<S>::options()), IkStatus::kOk)
             << t1 << " " << t2 << " " << t3;
-        worst = std::max(worst, dbl(strider::distance_safe(reached, target)));
+        worst = std::max(worst, dbl(strider::units::distance(reached, target)));
         ++n;
       }
   EXPECT_LT(worst, DlsCase<S>::kResidual);
@@ -246,7 +246,7 @@ TYPED_TEST(DlsTyped, DegenerateInputsNeverGiveNaN) {
   const IkStatus st = strider::dls_ik(leg, Vec3<S>(), q, reached, DlsCase<S>::options());
   EXPECT_TRUE(st == IkStatus::kOk || st == IkStatus::kClamped);
   EXPECT_TRUE(all_finite(q, reached));
-  EXPECT_LT(dbl(strider::norm_safe(reached)), 1.0);
+  EXPECT_LT(dbl(strider::units::norm(reached)), 1.0);
   // A chain of zero-length links: the tip never moves.
   const DhChain<S, 2> point;
   q = JointVector<S, 2>{{S(0), S(0)}};

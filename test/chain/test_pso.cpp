@@ -195,7 +195,7 @@ TYPED_TEST(PsoTyped, Seed003ExperimentsThroughTheFkCost) {
       worst = std::max(worst, dbl(res.cost));
       worst_it = std::max(worst_it, int(res.iterations));
       // The cost is what it says: the distance of FK(best) to the target.
-      EXPECT_EQ(dbl(strider::distance_safe(fk(res.position), c.target)), dbl(res.cost));
+      EXPECT_EQ(dbl(strider::units::distance(fk(res.position), c.target)), dbl(res.cost));
     }
     EXPECT_LT(worst, cost_bound<S>()) << c.name;
     std::printf("[ pso seed 003 %s, %s ] worst cost %.1e mm after %d iterations, %.2f ms/run\n", c.name,
@@ -404,7 +404,7 @@ TYPED_TEST(PsoTyped, IkUnderJointLimits) {
   // Inside the limits: reached.
   const JointVector<S, 2> qt{{strider::deg_to_rad<S>(5.0), strider::deg_to_rad<S>(12.0)}};
   EXPECT_EQ(strider::pso_ik(swarm, fk, lim, fk(qt), q, reached, p, opt, &res), IkStatus::kOk);
-  EXPECT_LT(dbl(strider::distance_safe(reached, fk(qt))), dbl(opt.tolerance_mm));
+  EXPECT_LT(dbl(strider::units::distance(reached, fk(qt))), dbl(opt.tolerance_mm));
   EXPECT_TRUE(lim.contains(q));
   // Needs t2 = 30 deg: the best within the limits has t2 on its bound.
   const JointVector<S, 2> qo{{strider::deg_to_rad<S>(10.0), strider::deg_to_rad<S>(30.0)}};

@@ -382,7 +382,7 @@ GaitConfig<Fixed> to_fixed(const GaitConfig<float>& f) {
   x.min_support = f.min_support;
   double reach = 0.0;
   for (int i = 0; i < f.leg_count; ++i) reach = std::max({reach, std::fabs(double(f.home[i].x)), std::fabs(double(f.home[i].y))});
-  x.unit_shift = strider::gait_units::shift_for(Fixed(2.0 * reach));
+  x.unit_shift = strider::units::unit_shift(Fixed(2.0 * reach));
   x.limits.leg_count = f.limits.leg_count;
   x.limits.sideways = f.limits.sideways;
   x.limits.min_hz = X(f.limits.min_hz);

@@ -548,7 +548,7 @@ TYPED_TEST(StabilityTest, KnownAnswers) {
                   Vec3<S>(sc<S>(0), sc<S>(50), S(0))};
   bool all[5] = {true, true, true, true, true};
   SupportPolygon<S> poly;
-  poly.build(f, all, 5, sc<S>(10), strider::gait_units::shift_for(sc<S>(400)));
+  poly.build(f, all, 5, sc<S>(10), strider::units::unit_shift(sc<S>(400)));
   EXPECT_EQ(poly.size(), 4);  // the inner foot is not a vertex
   EXPECT_NEAR(dbl(poly.margin(f, S(0), S(0))), 110.0, 0.01);
   EXPECT_NEAR(dbl(poly.margin(f, sc<S>(90), S(0))), 20.0, 0.01);
@@ -556,22 +556,22 @@ TYPED_TEST(StabilityTest, KnownAnswers) {
   EXPECT_NEAR(dbl(poly.margin(f, sc<S>(130), sc<S>(140))), 10.0 - 50.0, 0.01);  // nearest is a corner
   // Three feet (seed 003's walk): the triangle without the rear right foot.
   bool three[5] = {true, true, false, true, false};
-  poly.build(f, three, 5, S(0), strider::gait_units::shift_for(sc<S>(400)));
+  poly.build(f, three, 5, S(0), strider::units::unit_shift(sc<S>(400)));
   EXPECT_EQ(poly.size(), 3);
   EXPECT_NEAR(dbl(poly.margin(f, S(0), S(0))), 0.0, 0.01);  // on the diagonal
   EXPECT_NEAR(dbl(poly.margin(f, sc<S>(10), sc<S>(10))), 20.0 / std::sqrt(2.0), 0.01);
   // Two feet (seed 000's crawl): a strip of half-width r around the diagonal.
   bool two[5] = {true, false, true, false, false};
-  poly.build(f, two, 5, sc<S>(10), strider::gait_units::shift_for(sc<S>(400)));
+  poly.build(f, two, 5, sc<S>(10), strider::units::unit_shift(sc<S>(400)));
   EXPECT_EQ(poly.size(), 2);
   EXPECT_NEAR(dbl(poly.margin(f, S(0), S(0))), 10.0, 0.01);
   EXPECT_NEAR(dbl(poly.margin(f, sc<S>(5), sc<S>(-5))), 10.0 - std::sqrt(50.0), 0.01);
   EXPECT_NEAR(dbl(poly.margin(f, sc<S>(110), sc<S>(110))), 10.0 - std::sqrt(200.0), 0.01);  // past the end
   bool one[5] = {false, false, false, false, true};
-  poly.build(f, one, 5, sc<S>(10), strider::gait_units::shift_for(sc<S>(400)));
+  poly.build(f, one, 5, sc<S>(10), strider::units::unit_shift(sc<S>(400)));
   EXPECT_NEAR(dbl(poly.margin(f, S(0), sc<S>(50))), 10.0, 0.01);
   bool none[5] = {};
-  poly.build(f, none, 5, sc<S>(10), strider::gait_units::shift_for(sc<S>(400)));
+  poly.build(f, none, 5, sc<S>(10), strider::units::unit_shift(sc<S>(400)));
   EXPECT_EQ(dbl(poly.margin(f, S(0), S(0))), strider::kNoSupportMarginMm);
 }
 
@@ -595,7 +595,7 @@ TYPED_TEST(StabilityTest, MatchesDoubleReference) {
     if (pts.empty()) continue;
     const double r = pad(rng);
     SupportPolygon<S> poly;
-    poly.build(f, c, uint8_t(legs), sc<S>(r), strider::gait_units::shift_for(sc<S>(800)));
+    poly.build(f, c, uint8_t(legs), sc<S>(r), strider::units::unit_shift(sc<S>(800)));
     const Eigen::Vector2d p(pos(rng) * 0.5, pos(rng) * 0.5);
     const Eigen::Vector2d pq(dbl(sc<S>(p.x())), dbl(sc<S>(p.y())));
     const double want = r + ref_signed_distance(pts, pq);
@@ -623,7 +623,7 @@ TYPED_TEST(StabilityTest, ConstrainReachesTheMargin) {
     else { c[lifted - 4] = false; c[lifted - 2] = false; }  // a diagonal pair
     const double r = lifted < 4 ? 5.0 : 10.0, want = 4.0;
     SupportPolygon<S> poly;
-    poly.build(f, c, 4, sc<S>(r), strider::gait_units::shift_for(sc<S>(400)));
+    poly.build(f, c, 4, sc<S>(r), strider::units::unit_shift(sc<S>(400)));
     S x = sc<S>(pos(rng)), y = sc<S>(pos(rng));
     poly.constrain(f, x, y, sc<S>(want), false);
     const double m = dbl(poly.margin(f, x, y));
@@ -640,7 +640,7 @@ TYPED_TEST(StabilityTest, ConstrainAlongXOnly) {
                   Vec3<S>(sc<S>(-75), sc<S>(-45), S(0)), Vec3<S>(sc<S>(75), sc<S>(-45), S(0))};
   bool c[4] = {true, true, false, true};
   SupportPolygon<S> poly;
-  poly.build(f, c, 4, sc<S>(5), strider::gait_units::shift_for(sc<S>(400)));
+  poly.build(f, c, 4, sc<S>(5), strider::units::unit_shift(sc<S>(400)));
   S x = S(0), y = S(0);
   poly.constrain(f, x, y, sc<S>(8), true);
   EXPECT_EQ(dbl(y), 0.0);

@@ -236,7 +236,7 @@ bool edge_exact(const GaitEngine<S>& e, uint8_t i, const Vec3<S>& p) {
   const S dx = p.x - c.home[i].x, dy = p.y - c.home[i].y;
   if (dx == S(0) && dy == S(0)) return false;
   const S stride = c.limits.leg_stride(i, dx, dy);
-  const S d = strider::gait_units::length_mm(dx, dy, c.unit_shift);
+  const S d = strider::units::norm_in(dx, dy, S(0), c.unit_shift);
   return d > stride * strider::scalar<S>(GaitEngine<S>::edge_share());
 }
 

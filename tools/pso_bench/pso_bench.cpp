@@ -164,7 +164,7 @@ struct CostLib {
     const S a = strider::scalar<S>(kLinkMm);
     const Vec3<S> foot(a * strider::cos(q[0]) + a * strider::cos(q[0] + q[1]), S(0),
                        a * strider::sin(q[0]) + a * strider::sin(q[0] + q[1]));
-    return strider::distance_safe(foot, target);
+    return strider::units::distance(foot, target);
   }
 };
 

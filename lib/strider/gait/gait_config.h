@@ -93,7 +93,7 @@ constexpr void set_params(GaitConfig<S>& c, const RobotModel& model, const GaitP
   c.transition_s = scalar<S>(params.transition_s);
   c.shift_x_only = model.kind == LegKind::kPlanar;
   c.min_support = model.leg_count == 6 ? 3 : 2;
-  c.unit_shift = gait_units::shift_for(reach + reach);
+  c.unit_shift = units::unit_shift(reach + reach);
 }
 }  // namespace gait_config_detail
 

@@ -290,10 +290,10 @@ class GaitEngine {
   STRIDER_NOINLINE bool beyond_diamond(uint8_t i, S dx, S dy) const {
     // Inside the shortest stride's circle (a little smaller, for rounding):
     // two products instead of the atan2, the square root and the lookup.
-    const S ux = gait_units::to_unit(dx, cfg_.unit_shift), uy = gait_units::to_unit(dy, cfg_.unit_shift);
+    const S ux = units::to_unit(dx, cfg_.unit_shift), uy = units::to_unit(dy, cfg_.unit_shift);
     if (ux * ux + uy * uy <= edge_r2_[i]) return false;
     const S stride = cfg_.limits.leg_stride(i, dx, dy);
-    const S d = gait_units::length_mm(dx, dy, cfg_.unit_shift);
+    const S d = units::norm_in(dx, dy, S(0), cfg_.unit_shift);
     constexpr S share = scalar<S>(kEdgeShare);
     return d > stride * share;
   }

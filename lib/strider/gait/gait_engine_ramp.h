@@ -47,7 +47,7 @@ void GaitEngine<S>::configure(const GaitConfig<S>& config, const GaitTable& gait
   // for rounding, squared in working units.
   constexpr S share = scalar<S>(kEdgeShare * 2.0 * 0.99);
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
-    const S r = gait_units::to_unit(cfg_.edge_mm[i] * share, cfg_.unit_shift);
+    const S r = units::to_unit(cfg_.edge_mm[i] * share, cfg_.unit_shift);
     edge_r2_[i] = r * r;
   }
 }

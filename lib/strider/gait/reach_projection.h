@@ -24,7 +24,7 @@
 #define STRIDER_GAIT_REACH_PROJECTION_H
 
 #include "../robots/robot_model.h"
-#include "gait_units.h"
+#include "../math/working_units.h"
 
 namespace strider {
 
@@ -34,11 +34,11 @@ struct ReachProjection {
   LegKind kind;
   S a1_mm;      //!< sprawl: thigh a1
   S a2_mm;      //!< sprawl: shank a2
-  int8_t shift; //!< working units for the sprawl's squares (gait_units.h)
+  int8_t shift; //!< working units for the sprawl's squares (math/working_units.h)
 
   static constexpr ReachProjection make(const RobotModel& model) {
     const S a1 = scalar<S>(model.links.l1_mm), a2 = scalar<S>(model.links.l2_mm);
-    return ReachProjection{model.kind, a1, a2, gait_units::shift_for(a1 + a2)};
+    return ReachProjection{model.kind, a1, a2, units::unit_shift(a1 + a2)};
   }
 
   //! True for the kinds whose reachable set is a surface.
@@ -56,9 +56,9 @@ struct ReachProjection {
       return Vec3<S>(target.x, S(0), target.z);
     }
     if (!sprawl()) return target;
-    const S x = gait_units::to_unit(target.x, shift), y = gait_units::to_unit(target.y, shift);
-    const S a1 = gait_units::to_unit(a1_mm, shift), a2 = gait_units::to_unit(a2_mm, shift);
-    const S z = clamp(gait_units::to_unit(target.z, shift), -a2, a2);
+    const S x = units::to_unit(target.x, shift), y = units::to_unit(target.y, shift);
+    const S a1 = units::to_unit(a1_mm, shift), a2 = units::to_unit(a2_mm, shift);
+    const S z = clamp(units::to_unit(target.z, shift), -a2, a2);
     const S rho = sqrt(x * x + y * y);
     const S rho_new = a1 + sqrt(a2 * a2 - z * z);
     Vec3<S> out;
@@ -68,10 +68,10 @@ struct ReachProjection {
     } else {
       out = Vec3<S>(rho_new, S(0), z);  // on the yaw axis: face forward
     }
-    const S dr = rho_new - rho, dz = z - gait_units::to_unit(target.z, shift);
-    moved_mm = gait_units::from_unit(sqrt(dr * dr + dz * dz), shift);  // the move is radial and vertical
-    return Vec3<S>(gait_units::from_unit(out.x, shift), gait_units::from_unit(out.y, shift),
-                   gait_units::from_unit(out.z, shift));
+    const S dr = rho_new - rho, dz = z - units::to_unit(target.z, shift);
+    moved_mm = units::from_unit(sqrt(dr * dr + dz * dz), shift);  // the move is radial and vertical
+    return Vec3<S>(units::from_unit(out.x, shift), units::from_unit(out.y, shift),
+                   units::from_unit(out.z, shift));
   }
 };
 

@@ -23,7 +23,7 @@
 #define STRIDER_GAIT_STABILITY_H
 
 #include "../robots/robot_model.h"
-#include "gait_units.h"
+#include "../math/working_units.h"
 
 namespace strider {
 
@@ -104,14 +104,14 @@ class SupportPolygon {
       if (d < S(0)) is_inside = false;
       if (k == 0 || d < inside) inside = d;
     }
-    if (is_inside) return radius_ + gait_units::from_unit(inside, shift_);
+    if (is_inside) return radius_ + units::from_unit(inside, shift_);
     S best = S(0);
     for (uint8_t k = 0; k < count_; ++k) {
       const S d = segment_distance(feet, k, p);
       if (k == 0 || d < best) best = d;
       if (count_ <= 2) break;  // one segment (or one point)
     }
-    return radius_ - gait_units::from_unit(best, shift_);
+    return radius_ - units::from_unit(best, shift_);
   }
 
   //! Moves the point (x, y) [mm] to the nearest point whose margin is at
@@ -145,12 +145,12 @@ class SupportPolygon {
         }
       }
     }
-    x_mm = gait_units::from_unit(q.x, shift_);
-    y_mm = gait_units::from_unit(q.y, shift_);
+    x_mm = units::from_unit(q.x, shift_);
+    y_mm = units::from_unit(q.y, shift_);
   }
 
  private:
-  S unit(S mm) const { return gait_units::to_unit(mm, shift_); }
+  S unit(S mm) const { return units::to_unit(mm, shift_); }
   //! The vertex after k (no modulo: a 16-bit division on the AVR).
   uint8_t next(uint8_t k) const { return uint8_t(k + 1) == count_ ? uint8_t(0) : uint8_t(k + 1); }
   Vec3<S> at(const Vec3<S>* feet, uint8_t i) const { return Vec3<S>(unit(feet[i].x), unit(feet[i].y), S(0)); }

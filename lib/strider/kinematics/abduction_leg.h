@@ -46,11 +46,7 @@
 #ifndef STRIDER_KINEMATICS_ABDUCTION_LEG_H
 #define STRIDER_KINEMATICS_ABDUCTION_LEG_H
 
-#include "../math/vec3.h"
-#include "ik_status.h"
-#include "joints.h"
-#include "leg_ik_common.h"
-#include "two_link.h"
+#include "two_link.h"  // with leg_ik_common.h, joints.h and ik_status.h
 
 namespace strider {
 
@@ -117,7 +113,7 @@ struct AbductionLeg {
   LegSide side;
   JointLimits<S, kDof> limits;
   // Filled by make(); do not set by hand.
-  int8_t unit_shift;        //!< working units, see leg_ik_common.h
+  int8_t unit_shift;        //!< working units (math/working_units.h)
   S la_fine;                //!< La in fine units (working units * 8)
   S la_fine_sq;             //!< La^2 in fine units
   leg_ik::TwoLink<S> link;  //!< femur and tibia in working units
@@ -129,10 +125,10 @@ struct AbductionLeg {
   //! The leg with its cached working-unit constants. Always build legs here.
   static constexpr AbductionLeg make(S la, S lb, S lc, const JointLimits<S, kDof>& limits,
                                      LegSide side = LegSide::kLeft) {
-    const int8_t n = leg_ik::unit_shift(lb + lc);
-    const S la_f = leg_ik::to_unit(la, int8_t(n - kFineBits));
+    const int8_t n = units::unit_shift(lb + lc);
+    const S la_f = units::to_unit(la, int8_t(n - kFineBits));
     return AbductionLeg{la, lb, lc, side, limits, n, la_f, la_f * la_f,
-                        leg_ik::TwoLink<S>::make(leg_ik::to_unit(lb, n), leg_ik::to_unit(lc, n))};
+                        leg_ik::TwoLink<S>::make(units::to_unit(lb, n), units::to_unit(lc, n))};
   }
 
   //! t1 of the standing leg: La horizontal and pointing outward [rad].
@@ -173,8 +169,8 @@ struct AbductionLeg {
         !leg_ik::within(target.z, bound_yz))
       return IkStatus::kUnreachable;
     const int8_t fine = int8_t(unit_shift - kFineBits);
-    const S y = leg_ik::to_unit(target.y, fine);
-    const S z = leg_ik::to_unit(target.z, fine);
+    const S y = units::to_unit(target.y, fine);
+    const S z = units::to_unit(target.z, fine);
     const S a_sq = y * y + z * z;     // A^2, eq 4.1
     const S p_sq = a_sq - la_fine_sq;  // d^2 = A^2 - La^2 (triangle OCD, phi = 90 deg)
     Joints sol;
@@ -197,9 +193,9 @@ struct AbductionLeg {
     }
     // In the leg plane: backward = -x, down = d = p (the seed's -z), and
     // D^2 = x^2 + p^2 with p^2 already at hand (fine units^2 -> units^2).
-    const S back = leg_ik::to_unit(-target.x, unit_shift);
-    const S d2 = back * back + leg_ik::to_unit(p_sq > S(0) ? p_sq : S(0), int8_t(2 * kFineBits));
-    if (link.solve(back, leg_ik::to_unit(p, kFineBits), d2, KneeBranch::kPositive, sol[1], sol[2])) clamped = true;
+    const S back = units::to_unit(-target.x, unit_shift);
+    const S d2 = back * back + units::to_unit(p_sq > S(0) ? p_sq : S(0), int8_t(2 * kFineBits));
+    if (link.solve(back, units::to_unit(p, kFineBits), d2, KneeBranch::kPositive, sol[1], sol[2])) clamped = true;
     return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);
   }
 };

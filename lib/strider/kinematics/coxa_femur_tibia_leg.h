@@ -25,11 +25,7 @@
 #ifndef STRIDER_KINEMATICS_COXA_FEMUR_TIBIA_LEG_H
 #define STRIDER_KINEMATICS_COXA_FEMUR_TIBIA_LEG_H
 
-#include "../math/vec3.h"
-#include "ik_status.h"
-#include "joints.h"
-#include "leg_ik_common.h"
-#include "two_link.h"
+#include "two_link.h"  // with leg_ik_common.h, joints.h and ik_status.h
 
 namespace strider {
 
@@ -112,7 +108,7 @@ struct CoxaFemurTibiaLeg {
   KneeBranch branch;  //!< sign of the t3 that ik() returns
   JointLimits<S, kDof> limits;
   // Filled by make(); do not set by hand.
-  int8_t unit_shift;        //!< working units, see leg_ik_common.h
+  int8_t unit_shift;        //!< working units (math/working_units.h)
   S coxa_unit;              //!< l1 in working units
   S reach_mm;               //!< l2 + l3 [mm]
   leg_ik::TwoLink<S> link;  //!< femur and tibia in working units
@@ -120,9 +116,9 @@ struct CoxaFemurTibiaLeg {
   //! The leg with its cached working-unit constants. Always build legs here.
   static constexpr CoxaFemurTibiaLeg make(S d1, S coxa, S femur, S tibia, const JointLimits<S, kDof>& limits,
                                           KneeBranch branch = KneeBranch::kNegative) {
-    const int8_t n = leg_ik::unit_shift(femur + tibia);
-    return CoxaFemurTibiaLeg{d1, coxa, femur, tibia, branch, limits, n, leg_ik::to_unit(coxa, n), femur + tibia,
-                             leg_ik::TwoLink<S>::make(leg_ik::to_unit(femur, n), leg_ik::to_unit(tibia, n))};
+    const int8_t n = units::unit_shift(femur + tibia);
+    return CoxaFemurTibiaLeg{d1, coxa, femur, tibia, branch, limits, n, units::to_unit(coxa, n), femur + tibia,
+                             leg_ik::TwoLink<S>::make(units::to_unit(femur, n), units::to_unit(tibia, n))};
   }
 
   //! Seed 002 eqs 5-7.
@@ -164,17 +160,17 @@ struct CoxaFemurTibiaLeg {
     if (!leg_ik::within(target.x, bound_xy) || !leg_ik::within(target.y, bound_xy) ||
         !leg_ik::within(target.z - d1_mm, bound_z))
       return IkStatus::kUnreachable;
-    const S x = leg_ik::to_unit(target.x, unit_shift);
-    const S y = leg_ik::to_unit(target.y, unit_shift);
-    const S v = leg_ik::to_unit(target.z - d1_mm, unit_shift);  // eq 11, row 2
+    const S x = units::to_unit(target.x, unit_shift);
+    const S y = units::to_unit(target.y, unit_shift);
+    const S v = units::to_unit(target.z - d1_mm, unit_shift);  // eq 11, row 2
     S rho = S(0);  // [unit]
     if (leg_ik::is_zero(target.x) && leg_ik::is_zero(target.y)) {
       sol[0] = leg_ik::free_angle(limits, 0, S(0));  // on the yaw axis
     } else {
       sol[0] = atan2(target.y, target.x);  // eq 12
       const S rho2 = x * x + y * y;
-      // Near the axis a Fixed square loses the digits that matter: hypot.
-      rho = leg_ik::tiny_square(rho2) ? leg_ik::to_unit(leg_ik::hypot(target.x, target.y), unit_shift) : sqrt(rho2);
+      // Near the axis a Fixed square loses the digits that matter: units::norm.
+      rho = leg_ik::tiny_square(rho2) ? units::to_unit(units::norm(target.x, target.y, S()), unit_shift) : sqrt(rho2);
     }
     S h = rho - coxa_unit;  // eq 11, row 1
     S d2 = h * h + v * v;

@@ -14,29 +14,6 @@
 
 namespace strider {
 
-//! |v| without overflow for any S: float and double directly, Fixed scaled by
-//! a power of two so that no square exceeds Q16.16 and small vectors keep
-//! their precision [mm].
-template <typename S>
-S norm_safe(const Vec3<S>& v) { return sqrt(dot(v, v)); }
-
-inline Fixed norm_safe(const Vec3<Fixed>& v) {
-  uint32_t m = Fixed::abs_raw(v.x.raw());
-  if (Fixed::abs_raw(v.y.raw()) > m) m = Fixed::abs_raw(v.y.raw());
-  if (Fixed::abs_raw(v.z.raw()) > m) m = Fixed::abs_raw(v.z.raw());
-  if (m == 0u) return Fixed();
-  // Bring the largest component into [32, 64): squares sum below 12288.
-  int down = 0;
-  while (m >= (uint32_t(64) << 16)) { m >>= 1; ++down; }
-  while (m < (uint32_t(32) << 16)) { m <<= 1; --down; }
-  const Vec3<Fixed> s(v.x.scaled_pow2(-down), v.y.scaled_pow2(-down), v.z.scaled_pow2(-down));
-  return sqrt(dot(s, s)).scaled_pow2(down);
-}
-
-//! |a - b| without overflow [mm].
-template <typename S>
-S distance_safe(const Vec3<S>& a, const Vec3<S>& b) { return norm_safe(a - b); }
-
 //! The positional Jacobian of a chain: col[i] = d tip / d q_i [mm/rad].
 template <typename S, uint8_t N>
 struct PositionJacobian {

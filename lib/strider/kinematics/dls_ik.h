@@ -27,6 +27,7 @@
 #ifndef STRIDER_KINEMATICS_DLS_IK_H
 #define STRIDER_KINEMATICS_DLS_IK_H
 
+#include "../math/working_units.h"
 #include "dls_step.h"
 #include "ik_status.h"
 
@@ -72,7 +73,7 @@ IkStatus dls_ik(const DhChain<S, N>& chain, const Vec3<S>& target, JointVector<S
     return IkStatus::kUnreachable;
   // Farther than reach + max_clamp from frame 0: no joint values can help.
   const S reach = chain.reach_bound_mm();
-  if (distance_safe(target, chain.base().translation) > reach + opt.max_clamp_mm)
+  if (units::distance(target, chain.base().translation) > reach + opt.max_clamp_mm)
     return IkStatus::kUnreachable;
   int k_len = 0;  // L = 2^k_len >= reach
   for (S len = S(1); len < reach && k_len < 14; len = len * S(2)) ++k_len;
@@ -92,7 +93,7 @@ IkStatus dls_ik(const DhChain<S, N>& chain, const Vec3<S>& target, JointVector<S
   lim.clamp_into(cur);
   PositionJacobian<S, N> jac;
   Vec3<S> tip = dls_detail::scaled_jacobian(chain, cur, k_jac, jac);
-  S err = distance_safe(target, tip);
+  S err = units::distance(target, tip);
   Joints best = cur;
   S best_err = err;
   S lambda = lambda_start;
@@ -137,10 +138,10 @@ IkStatus dls_ik(const DhChain<S, N>& chain, const Vec3<S>& target, JointVector<S
       // The linear model's prediction of the new error [mm].
       Vec3<S> jdq;
       for (uint8_t i = 0; i < N; ++i) jdq += jac.col[i] * (cand[i] - cur[i]);
-      const S predicted = distance_safe(target - tip, dls_detail::mul_pow2(jdq, k_jac));
+      const S predicted = units::distance(target - tip, dls_detail::mul_pow2(jdq, k_jac));
       PositionJacobian<S, N> jac_c;
       const Vec3<S> tip_c = dls_detail::scaled_jacobian(chain, cand, k_jac, jac_c);
-      const S err_c = distance_safe(target, tip_c);
+      const S err_c = units::distance(target, tip_c);
       if (err_c < err) {
         const S err_prev = err;
         accepted = true;
@@ -172,7 +173,7 @@ IkStatus dls_ik(const DhChain<S, N>& chain, const Vec3<S>& target, JointVector<S
       attempt_start = it;
       dls_detail::random_joints(rng, lim, cur);
       tip = dls_detail::scaled_jacobian(chain, cur, k_jac, jac);
-      err = distance_safe(target, tip);
+      err = units::distance(target, tip);
       lambda = lambda_start;
       rejects = slow = 0;
       if (err < best_err) {

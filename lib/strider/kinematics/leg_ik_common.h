@@ -1,25 +1,13 @@
 //! Building blocks shared by the analytic leg solvers (sprawl, planar,
-//! coxa/femur/tibia, abduction): working units that keep Fixed from
-//! overflowing, overflow-free lengths, revolute joint limits, and the common
-//! end of ik() (status of a missed target, limits, outputs). The planar
-//! two-link problem is in two_link.h.
-//!
-//! Working units: Fixed (Q16.16) overflows above 32767, so a 280 mm link
-//! cannot be squared in millimetres. Each leg picks a power of two 2^n (its
-//! "unit shift") that brings its two main links into [4, 8) units, where the
-//! two-link solver's largest product, (2 a1 a2 sin)^2, stays below 1024 and
-//! one unit keeps 16 fraction bits (2^(n-16) mm: 0.002 mm for a 557 mm leg).
-//! Shifts are exact for lengths with few fraction bits and cost no multiply.
-//! Lengths of small vectors (a foot near an axis, a miss distance) use
-//! hypot/norm3, which shift each call's operands into [32, 64) instead.
-//! Float needs no scaling: its shift is 0 and the conversions are no-ops.
+//! coxa/femur/tibia, abduction): bounds of a sane target, cheap comparisons,
+//! revolute joint limits, and the common end of ik() (status of a missed
+//! target, limits, outputs). Working units: math/working_units.h; the planar
+//! two-link problem: two_link.h.
 #ifndef STRIDER_KINEMATICS_LEG_IK_COMMON_H
 #define STRIDER_KINEMATICS_LEG_IK_COMMON_H
 
-#include <math.h>
-#include <string.h>
-
 #include "../math/vec3.h"
+#include "../math/working_units.h"
 #include "ik_status.h"
 #include "joints.h"
 
@@ -27,41 +15,11 @@ namespace strider {
 
 namespace leg_ik {
 
-//! Working-unit shift n of a leg whose main links add up to length [mm]:
-//! length * 2^-n lies in [4, 8). Float works in millimetres (n = 0).
-constexpr int8_t unit_shift(float) { return 0; }
-constexpr int8_t unit_shift(Fixed length) {
-  uint32_t r = Fixed::abs_raw(length.raw());
-  int8_t n = 0;
-  if (r == 0) return 0;
-  while (r >= (uint32_t(8) << Fixed::kFracBits)) { r >>= 1; ++n; }
-  while (r < (uint32_t(4) << Fixed::kFracBits)) { r <<= 1; --n; }
-  return n;
-}
-
-//! Millimetres to working units, and back (saturating for Fixed). Going
-//! down is a rounded right shift (half away from zero, like scaled_pow2).
-constexpr float to_unit(float v_mm, int8_t) { return v_mm; }
-constexpr Fixed to_unit(Fixed v_mm, int8_t shift) {
-  return shift <= 0 ? v_mm.scaled_pow2(-shift)
-                    : Fixed::from_raw(v_mm.raw() < 0 ? -int32_t(((Fixed::abs_raw(v_mm.raw()) >> (shift - 1)) + 1u) >> 1)
-                                                     : int32_t(((uint32_t(v_mm.raw()) >> (shift - 1)) + 1u) >> 1));
-}
-constexpr float from_unit(float v, int8_t) { return v; }
-constexpr Fixed from_unit(Fixed v, int8_t shift) { return v.scaled_pow2(shift); }
-
-//! The first test of every solver: false when a target coordinate is so far
-//! out (|v| > bound [mm], the leg's reach plus max_clamp) that the target is
-//! unreachable anyway, and for NaN and infinities. Fixed tests the bound
-//! exactly (it keeps the squares that follow from saturating). Float only
-//! needs finite, not absurd values (|v| < 2^15 mm): one integer test of the
-//! exponent instead of a ~100-cycle compare, and the miss distance decides
-//! the rest.
-inline bool within(float v, float) {
-  uint32_t bits;
-  memcpy(&bits, &v, sizeof bits);
-  return (bits & 0x7F800000ul) < (uint32_t(127 + 15) << 23);
-}
+//! The first test of every solver: |v| <= bound [mm] (the leg's reach plus
+//! max_clamp; further out the target is unreachable anyway), false for NaN
+//! and infinities. Float compares the bits of |v| and of bound (>= 0), one
+//! integer test instead of a ~100-cycle float compare.
+inline bool within(float v, float bound) { return detail::magnitude_bits(v) <= detail::float_bits(bound); }
 inline bool within(Fixed v, Fixed bound) { return abs(v) <= bound; }
 
 //! a < b and v == 0 for the solvers' hot paths: Fixed compares raws, float
@@ -77,33 +35,9 @@ STRIDER_ALWAYS_INLINE bool same_bits(float a, float b) { return detail::float_bi
 STRIDER_ALWAYS_INLINE bool same_bits(Fixed a, Fixed b) { return a == b; }
 
 //! Whether a sum of squares [unit^2] is too small for its square root to keep
-//! Fixed's precision (a length under 1/4 unit); then use hypot(). Never for float.
+//! Fixed's precision (a length under 1/4 unit); then use units::norm(). Never for float.
 constexpr bool tiny_square(float) { return false; }
 constexpr bool tiny_square(Fixed sq) { return sq < Fixed(0.0625); }
-
-//! sqrt(x^2 + y^2) and |v| without overflow or loss of precision for any
-//! magnitude. Fixed: the operands are shifted so the larger lies in [32, 64)
-//! (squares then keep ~28 significant bits and sum below 12288), and the
-//! root is shifted back; a plain sqrt of small squares would lose up to
-//! sqrt(2^-17) of absolute precision.
-inline float hypot(float x, float y) { return sqrt(x * x + y * y); }
-inline float norm3(float x, float y, float z) { return sqrt(x * x + y * y + z * z); }
-inline int fit_shift(uint32_t max_raw) {
-  int k = 0;
-  while (max_raw >= (uint32_t(1) << 22)) { max_raw >>= 1; --k; }
-  while (max_raw < (uint32_t(1) << 21)) { max_raw <<= 1; ++k; }
-  return k;
-}
-inline Fixed norm3(Fixed x, Fixed y, Fixed z) {
-  uint32_t m = Fixed::abs_raw(x.raw());
-  if (Fixed::abs_raw(y.raw()) > m) m = Fixed::abs_raw(y.raw());
-  if (Fixed::abs_raw(z.raw()) > m) m = Fixed::abs_raw(z.raw());
-  if (m == 0) return Fixed();
-  const int k = fit_shift(m);
-  const Fixed xs = x.scaled_pow2(k), ys = y.scaled_pow2(k), zs = z.scaled_pow2(k);
-  return sqrt(xs * xs + ys * ys + zs * zs).scaled_pow2(-k);
-}
-inline Fixed hypot(Fixed x, Fixed y) { return leg_ik::norm3(x, y, Fixed()); }
 
 //! Scales a pair by one power of two so that its larger magnitude is at
 //! least 1 (Fixed; float is left alone). The angle of the pair is unchanged,
@@ -119,10 +53,6 @@ inline void lift_pair(Fixed& a, Fixed& b) {
   a = a.scaled_pow2(k);
   b = b.scaled_pow2(k);
 }
-
-//! |a - b| [mm].
-template <typename S>
-S gap_mm(const Vec3<S>& a, const Vec3<S>& b) { return leg_ik::norm3(a.x - b.x, a.y - b.y, a.z - b.z); }
 
 //! The status of a target missed by miss_mm (its distance to the point solved
 //! for): within tolerance kOk, within max_clamp kClamped, else kUnreachable.
@@ -218,8 +148,8 @@ IkStatus apply_limits(const Leg& leg, const Vec3<S>& target, typename Leg::Joint
   if (!leg_ik::fit_into_limits(leg.limits, sol)) return status;
   const Vec3<S> before = at;
   at = leg.fk(sol);
-  const bool moved = leg_ik::gap_mm(at, before) > opt.tolerance_mm ||
-                     (status == IkStatus::kOk && leg_ik::gap_mm(at, target) > opt.tolerance_mm);
+  const bool moved = units::distance(at, before) > opt.tolerance_mm ||
+                     (status == IkStatus::kOk && units::distance(at, target) > opt.tolerance_mm);
   return moved ? worst(status, IkStatus::kJointLimit) : status;
 }
 
@@ -240,7 +170,7 @@ IkStatus finish(const Leg& leg, const Vec3<S>& target, typename Leg::Joints sol,
   Vec3<S> at = target;
   if (clamped) {
     at = leg.fk(sol);
-    status = leg_ik::miss_status(leg_ik::gap_mm(at, target), opt);
+    status = leg_ik::miss_status(units::distance(at, target), opt);
     if (status == IkStatus::kUnreachable) return status;
   }
   status = leg_ik::apply_limits(leg, target, sol, at, status, opt);

@@ -22,11 +22,7 @@
 #ifndef STRIDER_KINEMATICS_PLANAR_LEG_H
 #define STRIDER_KINEMATICS_PLANAR_LEG_H
 
-#include "../math/vec3.h"
-#include "ik_status.h"
-#include "joints.h"
-#include "leg_ik_common.h"
-#include "two_link.h"
+#include "two_link.h"  // with leg_ik_common.h, joints.h and ik_status.h
 
 namespace strider {
 
@@ -40,15 +36,15 @@ struct PlanarLeg {
   KneeBranch branch;  //!< sign of the t2 that ik() returns
   JointLimits<S, kDof> limits;
   // Filled by make(); do not set by hand.
-  int8_t unit_shift;         //!< working units, see leg_ik_common.h
+  int8_t unit_shift;         //!< working units (math/working_units.h)
   leg_ik::TwoLink<S> link;   //!< a1, a2 in working units
 
   //! The leg with its cached working-unit constants. Always build legs here.
   static constexpr PlanarLeg make(S a1, S a2, const JointLimits<S, kDof>& limits,
                                   KneeBranch branch = KneeBranch::kPositive) {
-    const int8_t n = leg_ik::unit_shift(a1 + a2);
+    const int8_t n = units::unit_shift(a1 + a2);
     return PlanarLeg{a1, a2, branch, limits, n,
-                     leg_ik::TwoLink<S>::make(leg_ik::to_unit(a1, n), leg_ik::to_unit(a2, n))};
+                     leg_ik::TwoLink<S>::make(units::to_unit(a1, n), units::to_unit(a2, n))};
   }
 
   //! Seed 003 eq 3 (the position column of eq 2's A1 A2).
@@ -73,7 +69,7 @@ struct PlanarLeg {
     if (!leg_ik::within(target.x, bound) || !leg_ik::within(target.z, bound) ||
         !leg_ik::within(target.y, opt.max_clamp_mm))
       return IkStatus::kUnreachable;
-    bool clamped = link.solve(leg_ik::to_unit(target.x, unit_shift), leg_ik::to_unit(target.z, unit_shift),
+    bool clamped = link.solve(units::to_unit(target.x, unit_shift), units::to_unit(target.z, unit_shift),
                               branch, sol[0], sol[1]);
     if (!(target.y == S(0))) clamped = true;  // projected onto the leg plane
     return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);

@@ -28,6 +28,7 @@
 #define STRIDER_KINEMATICS_PSO_H
 
 #include "../math/prng.h"
+#include "../math/working_units.h"
 #include "dh_chain.h"
 #include "ik_status.h"
 
@@ -205,7 +206,7 @@ struct FkDistanceCost {
   const Fk* fk;
   Vec3<S> target_mm;
   template <typename Joints>
-  S operator()(const Joints& q) const { return distance_safe((*fk)(q), target_mm); }
+  S operator()(const Joints& q) const { return units::distance((*fk)(q), target_mm); }
 };
 
 template <typename S, typename Fk>

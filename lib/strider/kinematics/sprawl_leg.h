@@ -18,11 +18,7 @@
 #ifndef STRIDER_KINEMATICS_SPRAWL_LEG_H
 #define STRIDER_KINEMATICS_SPRAWL_LEG_H
 
-#include "../math/vec3.h"
-#include "ik_status.h"
-#include "joints.h"
-#include "leg_ik_common.h"
-#include "two_link.h"
+#include "two_link.h"  // with leg_ik_common.h, joints.h and ik_status.h
 
 namespace strider {
 
@@ -59,7 +55,7 @@ STRIDER_ALWAYS_INLINE bool sprawl_solve_fast(const Leg& leg, const Vec3<Fixed>& 
   // and more take the general path (their raw sum could overflow).
   const uint32_t ra1 = uint32_t(leg.a1_mm.raw()), ra2 = uint32_t(leg.a2_mm.raw());
   if (ra1 >= 0x40000000UL || ra2 >= 0x40000000UL) return false;
-  const int8_t n = unit_shift(Fixed::from_raw(int32_t(ra1 + ra2)));
+  const int8_t n = units::unit_shift(Fixed::from_raw(int32_t(ra1 + ra2)));
   int32_t x, y, z, a1, a2;
   if (!wide::from_mm_call(target.x, n, x) || !wide::from_mm_call(target.y, n, y) ||
       !wide::from_mm_call(target.z, n, z) || !wide::from_mm_call(leg.a1_mm, n, a1) ||
@@ -137,9 +133,9 @@ struct SprawlLeg {
         !leg_ik::within(target.z, a2_mm + opt.max_clamp_mm))
       return IkStatus::kUnreachable;  // farther than max_clamp from the torus
     // Working units per call (leg_ik_common.h), so the aggregate needs no cache.
-    const int8_t n = leg_ik::unit_shift(a1_mm + a2_mm);
-    const S x = leg_ik::to_unit(target.x, n), y = leg_ik::to_unit(target.y, n), z = leg_ik::to_unit(target.z, n);
-    const S a1 = leg_ik::to_unit(a1_mm, n), a2 = leg_ik::to_unit(a2_mm, n);
+    const int8_t n = units::unit_shift(a1_mm + a2_mm);
+    const S x = units::to_unit(target.x, n), y = units::to_unit(target.y, n), z = units::to_unit(target.z, n);
+    const S a1 = units::to_unit(a1_mm, n), a2 = units::to_unit(a2_mm, n);
     Joints sol;
     S rho = S(0);
     if (target.x == S(0) && target.y == S(0)) {
@@ -147,8 +143,8 @@ struct SprawlLeg {
     } else {
       sol[0] = atan2(target.y, target.x);  // eq 7
       const S rho2 = x * x + y * y;
-      // Near the axis a Fixed square loses the digits that matter: hypot.
-      rho = leg_ik::tiny_square(rho2) ? leg_ik::to_unit(leg_ik::hypot(target.x, target.y), n) : sqrt(rho2);
+      // Near the axis a Fixed square loses the digits that matter: units::norm.
+      rho = leg_ik::tiny_square(rho2) ? units::to_unit(units::norm(target.x, target.y, S()), n) : sqrt(rho2);
     }
     S dr = rho - a1;
     if (dr == S(0) && z == S(0)) return IkStatus::kUnreachable;  // on the knee circle
@@ -166,7 +162,7 @@ struct SprawlLeg {
     S zl = z;
     leg_ik::lift_pair(dr, zl);  // keeps the digits of a foot near the knee circle
     sol[1] = atan2(zl, dr);  // eq 8
-    miss = leg_ik::from_unit(miss, n);
+    miss = units::from_unit(miss, n);
     IkStatus status = leg_ik::miss_status(miss, opt);
     if (status == IkStatus::kUnreachable) return status;
     return finish_at_fk(target, sol, status, opt, q, reached);

@@ -2,13 +2,13 @@
 //! (seed 003 eqs 3-5; the femur and tibia of seed 002 eqs 8-11 and of seed
 //! 001 eqs 4.12-4.21), and KneeBranch, the choice between its two solutions.
 //!
-//! Inputs are in working units (leg_ik_common.h), so Fixed can square them;
+//! Inputs are in working units (math/working_units.h), so Fixed can square them;
 //! Fixed's integer fast path (solve_wide) works in wide units (wide_units.h).
 #ifndef STRIDER_KINEMATICS_TWO_LINK_H
 #define STRIDER_KINEMATICS_TWO_LINK_H
 
 #include "leg_ik_common.h"
-#include "wide_units.h"
+#include "wide_sqrt.h"
 
 namespace strider {
 
@@ -106,8 +106,7 @@ STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t
   // tb = atan2(s, c); ta = atan2(v, h) - atan2(s, k1), two lean atan2s
   // being cheaper on the AVR than scaling both pairs to 16 bits for the
   // angle-difference identity; their errors (< 1.2e-4 rad together) stay far
-  // inside the bounds. The bodies are inlined: a call costs ~100 cycles of
-  // register saves each, for ~0.7 KB of flash per copy.
+  // inside the bounds.
   tb = Fixed::from_raw(kSharedAtan2 ? detail::atan2_lean_call(s, c) : detail::atan2_lean_raw(s, c));
   int32_t a = kSharedAtan2 ? detail::atan2_lean_call(v, h) - detail::atan2_lean_call(s, k1)
                            : detail::atan2_lean_raw(v, h) - detail::atan2_lean_raw(s, k1);

@@ -11,6 +11,7 @@
 
 #include "fixed.h"
 #include "fixed_atan.h"
+#include "fixed_atan_lean.h"
 #include "fixed_sqrt.h"
 #include "fixed_trig.h"
 

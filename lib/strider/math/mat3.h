@@ -13,9 +13,6 @@ struct Mat3 {
   static constexpr Mat3 identity() {
     return Mat3{{{S(1), S(0), S(0)}, {S(0), S(1), S(0)}, {S(0), S(0), S(1)}}};
   }
-  static constexpr Mat3 from_rows(const Vec3<S>& r0, const Vec3<S>& r1, const Vec3<S>& r2) {
-    return Mat3{{{r0.x, r0.y, r0.z}, {r1.x, r1.y, r1.z}, {r2.x, r2.y, r2.z}}};
-  }
 
   constexpr Vec3<S> row(uint8_t i) const { return Vec3<S>(m[i][0], m[i][1], m[i][2]); }
   constexpr Vec3<S> col(uint8_t j) const { return Vec3<S>(m[0][j], m[1][j], m[2][j]); }
