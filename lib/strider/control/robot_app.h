@@ -11,21 +11,20 @@
 //! now_us, a wrapping microsecond count that the caller reads from its clock.
 //! S the scalar (float or Fixed); Output a ServoOutput (hal_interfaces.h)
 //! with `void flush()` ending a frame; Store a ByteStore; kJoints the most
-//! servos it drives (a firmware: its model's joint count); Link: robot_link.h.
+//! servos it drives (a firmware: its model's joint count); Link: link_ports.h.
 #ifndef STRIDER_CONTROL_ROBOT_APP_H
 #define STRIDER_CONTROL_ROBOT_APP_H
 
 #include <stdint.h>
 
 #include "constant_given.h"
+#include "control_tick.h"
 #include "controller.h"
 #include "gait_tuner.h"
-#include "control_tick.h"
 #include "link_ports.h"
 #include "model_constants.h"
 #include "robot_app_sink.h"
 #include "robot_sensing.h"
-#include "robot_status.h"
 #include "servo_board_watch.h"
 #include "servo_stage.h"
 #include "sonar_filter.h"

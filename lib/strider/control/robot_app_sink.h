@@ -1,21 +1,42 @@
 //! RobotAppSink: RobotApp's MotionSink (the concept: motion_modes.h), what
 //! its controller commands: motion to the walker, servo power and settings
 //! to the servo stage, the live gait parameters to the gait tuner, the level
-//! body and `cal level` to its sensing. A friend of App (RobotApp).
+//! body and `cal level` to its sensing, and RobotApp's fields of `status`.
+//! A friend of App (RobotApp).
 #ifndef STRIDER_CONTROL_ROBOT_APP_SINK_H
 #define STRIDER_CONTROL_ROBOT_APP_SINK_H
 
 #include <stdint.h>
 
 #include "../gait/gait_tuning.h"
+#include "gait_tuner.h"
 #include "motion_reach.h"
-#include "reply.h"
+#include "reply_texts.h"
 #include "robot_mode.h"
-#include "robot_status.h"
+#include "servo_map.h"
 #include "settings.h"
 #include "walker_motion.h"
 
 namespace strider {
+
+//! ` walk_vx= walk_vy= walk_wz=`: the command after avoidance and the
+//! robot's limits, as the body speed it makes (speed_correction.h); the
+//! gait, its state, the IK's, the servos' and the live tuning's origin
+//! unless the model's own.
+template <typename S, typename Stage>
+void write_motion_status(ReplyWriter& w, const WalkerMotion<S>& motion, const Stage& stage, TuneOrigin origin) {
+  const GaitEngine<S>& e = motion.walker().engine();
+  w.format(FlashText{text::kWalkFmt}, motion.body_speed(to_tenths(e.vx())), motion.body_speed(to_tenths(e.vy())),
+           motion.body_speed(to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)), true));
+  const FlashText servos = stage.all_on() ? FlashText{text::kOn}
+                           : stage.starting() ? FlashText{text::kStarting} : FlashText{text::kOff};
+  w.field_text(FlashText{text::kGaitKey}, motion.gait().name)
+      .field_text(FlashText{text::kState}, text::to_flash(e.state()))
+      .field_text(FlashText{text::kIk}, text::to_flash(motion.walker().worst_status()))
+      .field_text(FlashText{text::kServos}, servos);
+  if (stage.last_status() != ServoStatus::kOk) w.field_text(FlashText{text::kServos}, FlashText{text::kLimited});
+  if (origin != TuneOrigin::kDefault) w.field_text(FlashText{text::kTune}, to_flash(origin));
+}
 
 template <typename App>
 class RobotAppSink {

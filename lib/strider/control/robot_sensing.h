@@ -14,10 +14,9 @@
 #include "control_tick.h"
 #include "fall_detector.h"
 #include "level_body.h"
-#include "robot_link.h"
+#include "link_ports.h"
 #include "reply_texts.h"
 #include "robot_mode.h"
-#include "robot_status.h"
 #include "settings.h"
 #include "walker_motion.h"
 

@@ -14,7 +14,7 @@
 #include <stdint.h>
 
 #include "reply_texts.h"
-#include "robot_link.h"
+#include "link_ports.h"
 #include "servo_boards.h"
 
 namespace strider {
