@@ -102,7 +102,6 @@ class Controller : private controller_detail::ParserSlot<kOwnParser>, public Mot
   }
 
   const Settings& settings() const { return settings_; }
-  SettingsStatus load_status() const { return record_.load_status; }
   //! The record the settings in force came from, or the last one saved.
   const SettingsRecord& settings_record() const { return record_; }
 

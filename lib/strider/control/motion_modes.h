@@ -48,14 +48,12 @@ class MotionModes {
     if (fault && !servo_fault_ && mode_ == RobotMode::kWalking) stop();
     servo_fault_ = fault;
   }
-  bool servo_fault() const { return servo_fault_; }
   //! The battery is critically low (RobotApp): like a servo fault, a walk
   //! stops and motion commands are refused, with err 32, until it recovers.
   void set_battery_critical(bool critical) {
     if (critical && !battery_critical_ && mode_ == RobotMode::kWalking) stop();
     battery_critical_ = critical;
   }
-  bool battery_critical() const { return battery_critical_; }
   //! The robot tipped over (RobotApp, from the IMU): the servos go limp
   //! (relaxed, so that no leg fights the ground) and motion commands are
   //! refused, with err 33, until it is upright again; then a motion command
@@ -76,7 +74,6 @@ class MotionModes {
 
   RobotMode mode() const { return mode_; }
   const Twist& command() const { return cmd_; }      //!< operator's velocity
-  const Twist& output() const { return out_; }       //!< after avoidance
   uint8_t speed_pct() const { return speed_pct_; }
 
  protected:

@@ -126,7 +126,6 @@ class RobotApp {
   //! has `battery_mv` while a pack is seen (robot_sensing.h).
   template <typename Link>
   void battery(uint16_t adc_code, Link& link) { sensing_.battery_reading(adc_code, controller_, motion_, link); }
-  const BatteryMonitor& battery_monitor() const { return sensing_.battery; }
   //! The divider and thresholds (the firmware: from its board file).
   void set_battery_config(const BatteryConfig& c) { sensing_.battery = BatteryMonitor(c); }
   //! Whether an MPU-6050 answered at start-up (robot_sensing.h).
@@ -183,7 +182,6 @@ class RobotApp {
   //! The walker, for host tools that change it between ticks (the simulator's gait overrides).
   WalkerMotion<S>& motion() { return motion_; }
   const ServoStage<S, kJoints, kStoredChannels>& servos() const { return stage_; }
-  SettingsStatus load_status() const { return controller_.load_status(); }
   uint16_t overruns() const { return tick_load_.overruns; }
   uint32_t tick_max_us() const { return tick_load_.max_us; }
 

@@ -38,7 +38,6 @@ class RobotSensing {
     attitude_.set_gains(LevelBody<S>::learning_gains(attitude_.gains(), true));
     level_.start_learning();
   }
-  bool imu_present() const { return imu_present_; }
 
   //! The battery divider's ADC reading (the firmware: once a tick). A new
   //! level is a notice, `info battery low mv=6950`; a critical pack stops a
