@@ -710,9 +710,9 @@ TEST(FlashNames, EqualToString) {
   for (uint8_t i = 0; i < 7; ++i)
     EXPECT_STREQ(strider::to_flash(strider::SettingsStatus(i)).p, strider::to_string(strider::SettingsStatus(i)));
   for (uint8_t i = 0; i < 6; ++i)
-    EXPECT_STREQ(strider::app_text::to_flash(strider::GaitState(i)).p, strider::to_string(strider::GaitState(i)));
+    EXPECT_STREQ(strider::text::to_flash(strider::GaitState(i)).p, strider::to_string(strider::GaitState(i)));
   for (uint8_t i = 0; i < 4; ++i)
-    EXPECT_STREQ(strider::app_text::to_flash(strider::IkStatus(i)).p, strider::to_string(strider::IkStatus(i)));
+    EXPECT_STREQ(strider::text::to_flash(strider::IkStatus(i)).p, strider::to_string(strider::IkStatus(i)));
   for (uint8_t i = 0; i < strider::kParseErrorCount; ++i)
     EXPECT_STREQ(strider::flash_name(strider::kParseErrorNames, strider::kParseErrorCount, i).p,
                  strider::error_reason(strider::ParseError(i)));

@@ -11,22 +11,17 @@
 #include "../math/flash_table.h"
 
 #include "command.h"
+#include "command_tokens.h"
 #include "decimal.h"
 #include "settings.h"
 
 namespace strider {
 
-constexpr uint8_t kMaxLineTokens = 5;  //!< command word + up to 4 arguments (one more to detect extras)
 constexpr int32_t kMaxLinearDecimm_s = 5000;  //!< |walk|, |strafe| <= 500.0 mm/s
 constexpr int32_t kMaxTurnDecideg_s = 3600;   //!< |turn| <= 360.0 deg/s
 constexpr int32_t kMaxPoseDecideg = 300;      //!< |roll|, |pitch|, |yaw| <= 30.0 deg
 
 namespace detail {
-
-struct Token {
-  const char* text;
-  uint8_t len;
-};
 
 //! The command words, in flash on the AVR (flash_table.h): about 150 bytes of RAM saved.
 namespace words {
@@ -60,58 +55,6 @@ constexpr char kVel[] STRIDER_PROGMEM = "vel";
 constexpr char kVelocity[] STRIDER_PROGMEM = "velocity";
 constexpr char kWalk[] STRIDER_PROGMEM = "walk";
 }  // namespace words
-
-//! True when the token is `word`, a NUL-terminated word in flash (words::).
-inline bool token_is(const Token& t, const char* word) {
-  uint8_t i = 0;
-  for (; i < t.len; ++i) {
-    if (char(flash_u8(word + i)) != t.text[i]) return false;
-  }
-  return flash_u8(word + i) == 0;
-}
-
-//! Splits line into tokens; returns the count, or kMaxLineTokens + 1 when there are more.
-inline uint8_t split_tokens(const char* line, uint8_t len, Token* tokens) {
-  uint8_t n = 0, i = 0;
-  while (i < len) {
-    while (i < len && (line[i] == ' ' || line[i] == '\t')) ++i;
-    if (i >= len) break;
-    const uint8_t start = i;
-    while (i < len && line[i] != ' ' && line[i] != '\t') ++i;
-    if (n == kMaxLineTokens) return kMaxLineTokens + 1;
-    tokens[n].text = line + start;
-    tokens[n].len = uint8_t(i - start);
-    ++n;
-  }
-  return n;
-}
-
-//! Number token -> scaled integer in [lo, hi], or the error.
-inline ParseError number_arg(const Token& t, uint8_t decimals, int32_t lo, int32_t hi, int32_t* out) {
-  int32_t v = 0;
-  const DecimalStatus s = parse_decimal(t.text, t.len, decimals, &v);
-  if (s == DecimalStatus::kSyntax) return ParseError::kBadArgument;
-  if (s == DecimalStatus::kOverflow || v < lo || v > hi) return ParseError::kOutOfRange;
-  *out = v;
-  return ParseError::kNone;
-}
-
-//! Parses tokens[first..first+count) as numbers into cmd->arg[slot..], all with the
-//! same decimals and range, after checking the token count is exactly count.
-inline ParseError number_args(const Token* tokens, uint8_t ntokens, uint8_t first, uint8_t count,
-                              uint8_t slot, uint8_t decimals, int32_t lo, int32_t hi, Command* cmd) {
-  if (ntokens < first + count) return ParseError::kMissingArgument;
-  if (ntokens > first + count) return ParseError::kExtraArgument;
-  for (uint8_t k = 0; k < count; ++k) {
-    const ParseError e = number_arg(tokens[first + k], decimals, lo, hi, &cmd->arg[slot + k]);
-    if (e != ParseError::kNone) return e;
-  }
-  return ParseError::kNone;
-}
-
-inline ParseError no_args(uint8_t ntokens, uint8_t first) {
-  return ntokens > first ? ParseError::kExtraArgument : ParseError::kNone;
-}
 
 inline ParseError parse_cal(const Token* t, uint8_t n, Command* cmd) {
   cmd->usage = Usage::kCal;
@@ -192,21 +135,6 @@ inline ParseError parse_gait(const Token* t, uint8_t n, Command* cmd) {
   return ParseError::kNone;
 }
 
-//! The commands of one word and numbers (or none): `count` numbers into
-//! arg[slot..], all with `decimals` decimals and in [lo, hi]. A table in
-//! flash that one loop reads, instead of a call with its own constants per
-//! command.
-//! Entry of `count` NUL-separated words in flash that token t is, or count.
-inline uint8_t word_index(const Token& t, const char* names, uint8_t count) {
-  const char* p = names;
-  for (uint8_t i = 0; i < count; ++i) {
-    if (token_is(t, p)) return i;
-    while (flash_u8(p) != 0) ++p;
-    ++p;
-  }
-  return count;
-}
-
 //! `set PARAM VALUE`: arg[0] the TuneParam, arg[1] the value in hundredths
 //! (a swing shape: its SwingShape). The range is the walker's: the
 //! controller checks it (err 25 with the range).
@@ -227,6 +155,10 @@ inline ParseError parse_set(const Token* t, uint8_t n, Command* cmd) {
   return number_arg(t[2], 2, 0, 65535, &cmd->arg[1]);
 }
 
+//! The commands of one word and numbers (or none): `count` numbers into
+//! arg[slot..], all with `decimals` decimals and in [lo, hi]. A table in
+//! flash that one loop reads, instead of a call with its own constants per
+//! command.
 struct WordCommand {
   const char* word;  // words::, in flash
   CommandKind kind;

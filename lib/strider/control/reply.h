@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "../math/fixed.h"
 #include "../math/flash_table.h"
 #include "command.h"
 
@@ -177,6 +178,13 @@ constexpr uint8_t kParseErrorCount = 12;
 //! `err <code> <reason>` for a parser error.
 inline void write_parse_error(ReplyWriter& w, ParseError e) {
   write_error(w, uint8_t(e), flash_name(kParseErrorNames, kParseErrorCount, uint8_t(e)));
+}
+
+//! A value -> tenths, rounded half away from zero (|v| < 200,000).
+inline int32_t to_tenths(float v) { return v >= 0.0f ? int32_t(v * 10.0f + 0.5f) : -int32_t(-v * 10.0f + 0.5f); }
+inline int32_t to_tenths(Fixed v) {
+  const int32_t t = v.raw() * 10;  // |v| < 3276.7: no overflow
+  return t >= 0 ? (t + 32768) >> 16 : -((-t + 32768) >> 16);
 }
 
 }  // namespace strider

@@ -1,9 +1,12 @@
-//! The controller's reply texts, one array each at namespace scope so that
-//! on the AVR they stay in flash (PROGMEM) instead of taking about 600 bytes
-//! of the 8 KB RAM; reply.h reads them through FlashText.
+//! The controller's and RobotApp's reply and notice texts, one array each at
+//! namespace scope so that on the AVR they stay in flash (PROGMEM) instead of
+//! taking about 600 bytes of the 8 KB RAM; reply.h reads them through FlashText.
 #ifndef STRIDER_CONTROL_REPLY_TEXTS_H
 #define STRIDER_CONTROL_REPLY_TEXTS_H
 
+#include "../gait/gait_state.h"
+#include "../kinematics/ik_status.h"
+#include "battery_monitor.h"
 #include "reply.h"
 
 namespace strider {
@@ -78,6 +81,52 @@ constexpr char kSonar[] STRIDER_PROGMEM = "sonar";
 constexpr char kDistMm[] STRIDER_PROGMEM = "dist_mm";
 constexpr char kDeadmanMs[] STRIDER_PROGMEM = "deadman_ms";
 constexpr char kEeprom[] STRIDER_PROGMEM = "eeprom";
+
+// RobotApp's notices and status fields.
+constexpr char kInfoStrider[] STRIDER_PROGMEM = "info strider ";
+constexpr char kReady[] STRIDER_PROGMEM = " ready";
+constexpr char kJoints[] STRIDER_PROGMEM = "joints";
+constexpr char kBoards[] STRIDER_PROGMEM = "boards";
+constexpr char kInfoEeprom[] STRIDER_PROGMEM = "info eeprom ";
+constexpr char kDefaults[] STRIDER_PROGMEM = ", defaults";
+constexpr char kSlot[] STRIDER_PROGMEM = "slot";
+constexpr char kSeq[] STRIDER_PROGMEM = "seq";
+constexpr char kOther[] STRIDER_PROGMEM = "other";
+constexpr char kVersion[] STRIDER_PROGMEM = "version";
+constexpr char kErrModel[] STRIDER_PROGMEM = "err 30 model does not fit the firmware: build it for this model";
+constexpr char kState[] STRIDER_PROGMEM = "state";
+constexpr char kIk[] STRIDER_PROGMEM = "ik";
+constexpr char kServos[] STRIDER_PROGMEM = "servos";
+constexpr char kStarting[] STRIDER_PROGMEM = "starting";
+constexpr char kLimited[] STRIDER_PROGMEM = "limited";
+constexpr char kStackPeak[] STRIDER_PROGMEM = "stack_peak";
+constexpr char kPca9685[] STRIDER_PROGMEM = "pca9685";
+constexpr char kI2cErrors[] STRIDER_PROGMEM = "i2c_errors";
+constexpr char kInfoFaultPca[] STRIDER_PROGMEM = "info fault pca9685 ";
+constexpr char kInfoFaultI2c[] STRIDER_PROGMEM = "info fault i2c timeout";
+constexpr char kInfoPca[] STRIDER_PROGMEM = "info pca9685 ";
+constexpr char kRestored[] STRIDER_PROGMEM = " restored";
+constexpr char kNothing[] STRIDER_PROGMEM = "";
+constexpr char kInfoHeld[] STRIDER_PROGMEM = "info servos held";
+constexpr char kInfoBattery[] STRIDER_PROGMEM = "info battery ";
+constexpr char kBatteryMv[] STRIDER_PROGMEM = "battery_mv";
+constexpr char kImu[] STRIDER_PROGMEM = "imu";
+constexpr char kNone[] STRIDER_PROGMEM = "none";
+constexpr char kImuFallen[] STRIDER_PROGMEM = "fallen";
+constexpr char kLevel[] STRIDER_PROGMEM = "level";
+constexpr char kImuFmt[] STRIDER_PROGMEM = " roll=" "\2" " pitch=" "\2";
+constexpr char kInfoFall[] STRIDER_PROGMEM = "info fall";
+constexpr char kInfoUpright[] STRIDER_PROGMEM = "info fall cleared";
+constexpr char kMv[] STRIDER_PROGMEM = "mv";
+constexpr char kWalkFmt[] STRIDER_PROGMEM = " walk_vx=" "\2" " walk_vy=" "\2" " walk_wz=" "\2";
+constexpr char kOverrunsFmt[] STRIDER_PROGMEM = " overruns=" "\1" " tick_max_us=" "\1";
+constexpr char kBatteryLevelNames[] STRIDER_PROGMEM = "absent\0ok\0low\0critical";
+inline FlashText to_flash(BatteryLevel l) { return flash_name(kBatteryLevelNames, 4, uint8_t(l)); }
+// The IK's states' names (to_string() in ik_status.h), in flash; a test
+// keeps them equal. The gait states' names: kGaitStateNames (gait_state.h).
+constexpr char kIkStatusNames[] STRIDER_PROGMEM = "ok\0clamped\0joint_limit\0unreachable";
+inline FlashText to_flash(GaitState s) { return flash_name(kGaitStateNames, kGaitStateCount, uint8_t(s)); }
+inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uint8_t(s)); }
 
 }  // namespace text
 }  // namespace strider

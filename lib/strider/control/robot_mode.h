@@ -49,6 +49,9 @@ constexpr char kRobotModeNames[] STRIDER_PROGMEM = "standing\0walking\0relaxed\0
 //! to_string() with the text in flash (for replies on the AVR).
 inline FlashText to_flash(RobotMode m) { return flash_name(kRobotModeNames, 4, uint8_t(m)); }
 
+//! `err <e> <reason>`.
+inline void write_error(ReplyWriter& w, ControlError e, FlashText reason) { write_error(w, uint8_t(e), reason); }
+
 //! Speeds the RC buttons map to at 100 %: seed 000's 155 mm/s and 360 deg in 6 s.
 struct RcLimits {
   int32_t linear = 1550;  //!< [0.1 mm/s]

@@ -21,7 +21,6 @@
 
 #include <stdint.h>
 
-#include "../math/flash_table.h"
 #include "../math/scalar.h"
 #include "pca9685_timing.h"
 #include "servo_tick_math.h"
@@ -37,22 +36,6 @@ constexpr uint8_t kMaxServoTickJoints = 18;
 enum class ServoTickStatus : uint8_t {
   kOk = 0,
   kUnsupported = 1  //!< a travel of 4 rad or more, or a scale out of range: use map_joint()
-};
-
-//! The slope and offset of ticks over d, per scalar: Fixed keeps a 16-bit
-//! slope with its scale (one 16 x 16-bit product per joint), float its own.
-template <typename S>
-struct ServoTickScale;
-template <>
-struct ServoTickScale<Fixed> {
-  uint32_t base_q16;  //!< ticks of the lowest limit [Q16.16 ticks]
-  uint16_t k;         //!< ticks_per_rad 2^shift, in [2^15, 2^16)
-  uint8_t shift;      //!< scale of k
-};
-template <>
-struct ServoTickScale<float> {
-  float base;           //!< ticks of the lowest limit + 0.5 (rounding) [ticks]
-  float ticks_per_rad;  //!< [ticks/rad]
 };
 
 //! What a non-finite joint sends [ticks]: float only (a Fixed joint is
@@ -156,7 +139,7 @@ class ServoTickMap {
     own.base_rad = ch.centre_rad - zero + trim - lo;
     ServoTickRange<S> j;
     j.travel_rad = hi - lo;
-    if (!set_scale(j.scale, ch, lo, hi, timing)) return ServoTickStatus::kUnsupported;
+    if (!servo_ticks_detail::set_scale(j.scale, ch, lo, hi, timing)) return ServoTickStatus::kUnsupported;
     // The bounds and the centre exactly as map_joint() sends them: the
     // limits' ticks rounded toward the inside (limit_ticks()).
     limit_ticks(ch, timing, &j.lo_ticks, &j.hi_ticks);
@@ -210,7 +193,7 @@ class ServoTickMap {
       d = j.travel_rad;
       cmd.status = ServoStatus::kLimited;
     }
-    const uint16_t t = ticks(j.scale, d);
+    const uint16_t t = servo_ticks_detail::ticks(j.scale, d);
     cmd.ticks = t < j.lo_ticks ? j.lo_ticks : t > j.hi_ticks ? j.hi_ticks : t;
     return cmd;
   }
@@ -228,79 +211,6 @@ class ServoTickMap {
   static void set_centre(ServoTickRange<Fixed>&, uint16_t) {}
   static uint16_t centre_ticks(const ServoTickRange<float>& j) { return j.centre_ticks; }
   static uint16_t centre_ticks(const ServoTickRange<Fixed>& j) { return j.lo_ticks; }  // never: Fixed is finite
-  // The slope and offset of the ticks over the servo angle from its lowest
-  // limit lo, for the pulse of servo_pulse_us() before its rounding to whole
-  // us: ticks = us * 262144 / period_x64. False: the joint cannot use this
-  // path (an angle limit beyond the pulse range, a travel of 4 rad or more,
-  // a slope or a pulse out of range).
-  static bool set_scale(ServoTickScale<float>& sc, const ServoChannel<float>& ch, float lo, float hi,
-                        const Pca9685Timing& timing) {
-    const double ticks_per_us = 262144.0 / double(timing.period_x64());
-    const double lo_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.min_pulse_us : ch.max_pulse_us);
-    const double hi_us = double(ch.min_pulse_us < ch.max_pulse_us ? ch.max_pulse_us : ch.min_pulse_us);
-    const double us_per_rad = double(ch.us_per_rad);
-    const double at_lo = double(ch.min_pulse_us) + double(lo) * us_per_rad;
-    const double at_hi = double(ch.min_pulse_us) + double(hi) * us_per_rad;
-    if (at_lo < lo_us || at_hi > hi_us || !(us_per_rad >= 0.0)) return false;
-    const double tpr = us_per_rad * ticks_per_us;
-    const double base = at_lo * ticks_per_us;
-    const double travel = double(hi - lo);
-    sc.ticks_per_rad = float(tpr);
-    sc.base = float(base + 0.5);
-    return travel < 4.0 && base + tpr * travel < 4096.0;
-  }
-  // Fixed: integers only (no float library on the AVR). The slope
-  // us_per_rad * 262144 / period and the offset at_lo * 262144 / period are
-  // exact quotients, rounded once; the pulse at a limit, min_pulse + limit
-  // us_per_rad, is Fixed's product (within 2^-17 us of the exact one).
-  static bool set_scale(ServoTickScale<Fixed>& sc, const ServoChannel<Fixed>& ch, Fixed lo, Fixed hi,
-                        const Pca9685Timing& timing) {
-    const uint32_t period = timing.period_x64();  // 34,952 .. 3.4e6
-    const uint16_t lo_us = ch.min_pulse_us < ch.max_pulse_us ? ch.min_pulse_us : ch.max_pulse_us;
-    const uint16_t hi_us = ch.min_pulse_us < ch.max_pulse_us ? ch.max_pulse_us : ch.min_pulse_us;
-    const int32_t upr = ch.us_per_rad.raw();
-    uint32_t at_lo, at_hi;  // [Q16.16 us]
-    if (upr < 0 || !pulse_q16(ch, lo, &at_lo) || !pulse_q16(ch, hi, &at_hi)) return false;
-    if (at_lo < (uint32_t(lo_us) << 16) || at_hi > (uint32_t(hi_us) << 16)) return false;
-    if ((hi - lo).raw() >= (int32_t(4) << Fixed::kFracBits)) return false;  // travel < 4 rad
-    // ticks_per_rad = upr 4 / period < 8192, and ticks(hi) = at_hi 4 / period
-    // [Q16.16] < 4096 (at_lo <= at_hi: upr >= 0, lo <= hi).
-    if (upr / period >= 2048u || at_hi / period >= 1024u) return false;
-    // x = ticks_per_rad 2^18, truncated (< 2^31); inexact: a remainder.
-    bool inexact = false;
-    const uint32_t x = servo_ticks_detail::div_shifted(uint32_t(upr), period, 20, &inexact);
-    if (x < (uint32_t(1) << 17) || (x == (uint32_t(1) << 17) && !inexact)) return false;  // ticks_per_rad > 0.5
-    // k = ticks_per_rad 2^shift in [2^15, 2^16): the largest shift <= 17
-    // with ticks_per_rad 2^(shift + 1) < 65535.5, i.e. x < 131071 2^(16 - shift).
-    uint8_t shift = 2;
-    while (shift < 17 && x < (uint32_t(131071) << (16 - shift))) ++shift;
-    sc.shift = shift;
-    sc.k = uint16_t((x + (uint32_t(1) << (17 - shift))) >> (18 - shift));  // rounded
-    // base_q16 = at_lo 2^18 / period, rounded (< 2^28).
-    sc.base_q16 = (servo_ticks_detail::div_shifted(at_lo, period, 19, nullptr) + 1u) >> 1;
-    return true;
-  }
-  //! min_pulse + angle us_per_rad [Q16.16 us]; false below 0 us or from 65536 us.
-  static bool pulse_q16(const ServoChannel<Fixed>& ch, Fixed angle, uint32_t* q16) {
-    const int32_t p = (angle * ch.us_per_rad).raw();
-    if (p == Fixed::kMaxRaw || p == Fixed::kMinRaw) return false;  // saturated
-    const uint32_t m = uint32_t(ch.min_pulse_us) << 16;
-    if (p < 0) {
-      if (uint32_t(-p) > m) return false;
-      *q16 = m - uint32_t(-p);
-    } else {
-      if (uint32_t(p) > ~m) return false;
-      *q16 = m + uint32_t(p);
-    }
-    return true;
-  }
-  static uint16_t ticks(const ServoTickScale<Fixed>& sc, Fixed d) {
-    return servo_ticks_detail::ticks_of(d, sc.k, sc.shift, sc.base_q16);
-  }
-  static uint16_t ticks(const ServoTickScale<float>& sc, float d) {
-    return servo_ticks_detail::ticks_of(d, sc.ticks_per_rad, sc.base);
-  }
-
   template <bool kOn>
   struct PerJoint {};
   // Float, and shared ranges: each joint through map().
