@@ -12,7 +12,7 @@
 //!
 //! Template parameters: S the scalar (float or Fixed); Output a ServoOutput
 //! (hal_interfaces.h) with `void flush()` ending a frame; Store a ByteStore;
-//! kJoints the most servos it drives (a firmware: its model's joint count).
+//! P the build profile (below).
 //! Link (per call): `void send_line(uint8_t port, const char* line)`, line
 //! without its ending; port kAllPorts means every port (notices).
 #ifndef STRIDER_CONTROL_ROBOT_APP_H
@@ -20,7 +20,6 @@
 
 #include <stdint.h>
 
-#include "constant_given.h"
 #include "battery_monitor.h"
 #include "controller.h"
 #include "fall_detector.h"
@@ -54,7 +53,10 @@ constexpr char kSlot[] STRIDER_PROGMEM = "slot";
 constexpr char kSeq[] STRIDER_PROGMEM = "seq";
 constexpr char kOther[] STRIDER_PROGMEM = "other";
 constexpr char kVersion[] STRIDER_PROGMEM = "version";
+// The start-up configuration's errors (RobotApp::begin()).
 constexpr char kErrModel[] STRIDER_PROGMEM = "err 30 model does not fit the firmware: build it for this model";
+constexpr char kErrServos[] STRIDER_PROGMEM = "err 37 servos do not fit the firmware: build it for this model";
+constexpr char kErrGait[] STRIDER_PROGMEM = "err 38 no gait defaults for the model: add its row to gait_params.h";
 constexpr char kGait[] STRIDER_PROGMEM = "gait";
 constexpr char kState[] STRIDER_PROGMEM = "state";
 constexpr char kIk[] STRIDER_PROGMEM = "ik";
@@ -110,22 +112,11 @@ inline int32_t to_tenths(Fixed v) {
 // reads a copy on the stack in begin(), the servo stage when the PWM or the
 // trims change).
 
-//! kStoredConfig: the model's gait configuration in flash (stored_gait_config(),
-//! a firmware's constant of its model at the gait defaults, float's without
-//! its ramps; nullptr: built from the model at start-up, fill_gait_config()).
-//! kStoredLegs (with kStoredConfig only): the walker's legs in flash
-//! (walker_legs(), a firmware's constant of its model; nullptr: converted
-//! from the model at start-up, AnyLeg::from_model()). kStoredChannels: the
-//! servo stage's channels in flash (joint_channels(), a firmware's constant
-//! of its model; nullptr: made from the model, make_joint_channel()).
-//! kAvoidClearMm: avoid_clear_mm() of the model as a constant (0: computed
-//! from the model at start-up). kStoredGait (with kStoredConfig only): the
-//! model's default gait in flash (default_gait_name(), a firmware's
-//! constant; nullptr: looked up in kGaitParams by the model's name).
-template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints,
-          const GaitConfig<S>* kStoredConfig = nullptr, const WalkerLegs<S>* kStoredLegs = nullptr,
-          const JointChannels<S, kJoints>* kStoredChannels = nullptr, uint16_t kAvoidClearMm = 0,
-          const GaitName* kStoredGait = nullptr>
+//! P: the build profile (robots/build_profile.h): the walker's and the
+//! servo stage's shape, and which of the model's constants it holds in
+//! flash (a firmware's, control/firmware_profile.h); the others are built
+//! from the model at start-up.
+template <typename S, typename Output, typename Store, typename P = HostProfile<S>>
 class RobotApp {
   class Sink;
 
@@ -165,14 +156,15 @@ class RobotApp {
     // The walker's configuration needs the deepest stack of the whole
     // firmware: nothing else (no line buffer) is on the stack meanwhile,
     // and its copy of the model is gone before announce() runs.
-    ok_ = configure_from_model();
+    const char* error = configure_from_model();  // in flash; nullptr: configured
+    ok_ = error == nullptr;
     if (ok_) {
       motion_.walker().refresh();  // the legs' IK, with the model's copy off the stack
       motion_.find_reach();        // what `help` and err 24 name
       tuner_.configure(motion_);
       tuner_.use_gait(motion_, store_);  // the default gait's saved parameters
     }
-    announce(link);
+    announce(link, error);
     if (!ok_) return false;
     stage_.set_settings(controller_.settings());
     stage_.apply_pending(out_);
@@ -221,7 +213,7 @@ class RobotApp {
   //! False (nothing changed) when the walker refuses them. Works on a copy of
   //! the walker first: meant for host tools (the AVR stack has no room for it).
   bool set_gait_params(const GaitParams& params) {
-    WalkerMotion<S> trial = motion_;
+    WalkerMotion<S, P> trial = motion_;
     RobotModel model;
     copy_model(&model);
     if (!trial.configure(model, params)) return false;
@@ -361,12 +353,12 @@ class RobotApp {
 
   SonarFilter& sonar() { return sonar_; }
   const Controller<Sink, Store, false>& controller() const { return controller_; }
-  const WalkerMotion<S>& motion() const { return motion_; }
+  const WalkerMotion<S, P>& motion() const { return motion_; }
   //! What each live gait parameter may be for the gait walked now (gait_tuner.h).
   TuneBounds tune_bounds() const { return tuner_.bounds(motion_); }
   //! The walker, for host tools that change it between ticks (the simulator's gait overrides).
-  WalkerMotion<S>& motion() { return motion_; }
-  const ServoStage<S, kJoints, kStoredChannels>& servos() const { return stage_; }
+  WalkerMotion<S, P>& motion() { return motion_; }
+  const ServoStage<S, P>& servos() const { return stage_; }
   SettingsStatus load_status() const { return controller_.load_status(); }
   uint16_t overruns() const { return overruns_; }
   uint32_t tick_max_us() const { return tick_max_us_; }
@@ -421,31 +413,33 @@ class RobotApp {
   }
 
   //! Walker (legs' IK not yet solved) and servo stage from (a copy of) the
-  //! model; keeps its name and board count for announce().
-  STRIDER_NOINLINE bool configure_from_model() {
+  //! model; keeps its name and board count for announce(). The error line
+  //! (app_text), nullptr when configured.
+  STRIDER_NOINLINE const char* configure_from_model() {
     RobotModel model;
     copy_model(&model);
     name_ = model.name;
     boards_ = pca_board_count(model);
-    controller_.set_avoid_clear_mm(kAvoidClearMm != 0 ? kAvoidClearMm : avoid_clear_mm(model));  // the copy: model_ may be in flash
-    return configure_walker(model, Stored<constant_given<const GaitConfig<S>*, kStoredConfig>()>()) &&
-           configure_stage(model);
+    controller_.set_avoid_clear_mm(P::kAvoidClearMm != 0 ? P::kAvoidClearMm : avoid_clear_mm(model));  // the copy: model_ may be in flash
+    const char* error = configure_walker(model, Stored<P::kStoredConfig>());
+    return error != nullptr ? error : configure_stage(model) ? nullptr : app_text::kErrServos;
   }
   // The walker from the model (only the one called is built).
   template <bool kOn>
   struct Stored {};
-  bool configure_walker(const RobotModel& model, Stored<false>) {
+  const char* configure_walker(const RobotModel& model, Stored<false>) {
     GaitParams params;
-    return gait_params_of(model, &params) && motion_.configure(model, params, false);
+    if (!gait_params_of(model, &params)) return app_text::kErrGait;
+    return motion_.configure(model, params, false) ? nullptr : app_text::kErrModel;
   }
   // A stored configuration needs only the default gait's name.
-  bool configure_walker(const RobotModel& model, Stored<true>) {
+  const char* configure_walker(const RobotModel& model, Stored<true>) {
     GaitName gait;
-    return default_gait(model, &gait, Stored<constant_given<const GaitName*, kStoredGait>()>()) &&
-           configure_walker(model, gait.text, Stored<constant_given<const WalkerLegs<S>*, kStoredLegs>()>());
+    if (!default_gait(model, &gait, Stored<P::kStoredGait>())) return app_text::kErrGait;
+    return configure_walker(model, gait.text, Stored<P::kStoredLegs>()) ? nullptr : app_text::kErrModel;
   }
   static bool default_gait(const RobotModel&, GaitName* gait, Stored<true>) {
-    flash_copy(gait, kStoredGait, sizeof *gait);
+    flash_copy(gait, &P::kDefaultGait, sizeof *gait);
     return true;
   }
   static bool default_gait(const RobotModel& model, GaitName* gait, Stored<false>) {
@@ -455,10 +449,10 @@ class RobotApp {
     return true;
   }
   bool configure_walker(const RobotModel& model, const char* gait, Stored<false>) {
-    return motion_.configure_stored(model, gait, kStoredConfig, false);
+    return motion_.configure_stored(model, gait, &P::kGaitConfig, false);
   }
   bool configure_walker(const RobotModel& model, const char* gait, Stored<true>) {
-    return motion_.configure_stored(model, gait, kStoredConfig, kStoredLegs, false);
+    return motion_.configure_stored(model, gait, &P::kGaitConfig, &P::kWalkerLegsInFlash, false);
   }
   // Not inlined: the stage's temporaries are not on the stack with the
   // walker's configuration. The stage reads the model again (model_, not
@@ -466,14 +460,15 @@ class RobotApp {
   STRIDER_NOINLINE bool configure_stage(const RobotModel& model) { return stage_.configure(model, &model_, where()); }
   ModelMemory where() const { return model_in_flash_ ? ModelMemory::kFlash : ModelMemory::kRam; }
 
-  //! The boot notices: model and boards, how the settings loaded.
+  //! The boot notices: model and boards, how the settings loaded; or the
+  //! start-up configuration's error line (in flash).
   template <typename Link>
-  STRIDER_NOINLINE void announce(Link& link) {
+  STRIDER_NOINLINE void announce(Link& link, const char* error) {
     ReplyLine line;
     ReplyWriter& w = line.w;
     char* const buf = line.buf;
-    if (!ok_) {
-      w.text(FlashText{app_text::kErrModel});
+    if (error != nullptr) {
+      w.text(FlashText{error});
       link.send_line(kAllPorts, buf);
       return;
     }
@@ -686,8 +681,8 @@ class RobotApp {
   uint8_t boards_;           // PCA9685 boards the model uses
   Output& out_;
   Store& store_;
-  WalkerMotion<S> motion_;
-  GaitTuner<S> tuner_;
+  WalkerMotion<S, P> motion_;
+  GaitTuner<S, P> tuner_;
   BatteryMonitor battery_;
   AttitudeFilter<S> attitude_;
   FallDetector<S> fall_;
@@ -696,7 +691,7 @@ class RobotApp {
   static constexpr uint8_t kLevelCalChecked = 2;  // level_cal_'s tag: the port (bit 0), a checked reply (bit 1)
   bool imu_probed_ = false;
   bool imu_present_ = false;
-  ServoStage<S, kJoints, kStoredChannels> stage_;
+  ServoStage<S, P> stage_;
   Sink sink_;
   Controller<Sink, Store, false> controller_;  // input from parsers_
   CommandParser parsers_[kLinkPorts];
