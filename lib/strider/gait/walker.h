@@ -263,7 +263,7 @@ class Walker {
 
   bool build_legs(const RobotModel& model) {
     dof_ = 0;
-    if (!legs_.build(model)) return false;
+    if (!walker_detail::build_legs(model, legs_)) return false;
     for (uint8_t i = 0; i < model.leg_count; ++i) turn_[i] = mount_turn_of(legs_.mount(i));
     proj_ = ReachProjection<S>::make(model);
     dof_ = model.dof();

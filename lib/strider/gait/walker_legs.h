@@ -61,17 +61,12 @@ struct MakeIndices<0, I...> {
 };
 
 //! The walker's legs: an AnyLeg per leg, or (fewer solvers than legs) one
-//! per geometry and each leg's mount and side; build() refuses a model that
+//! per geometry and each leg's mount and side. constant(): the legs but for
+//! the mounts' cos and sin (mount_trig()); build_legs() refuses a model that
 //! needs more.
 template <typename S, uint8_t kLegs, uint8_t kSolvers, bool kShared = (kSolvers < kLegs)>
 struct LegSolvers {
   static_assert(kSolvers >= 1 && kSolvers <= kLegs, "kSolvers: 1 to kLegs");
-  bool build(const RobotModel& model) {
-    for (uint8_t i = 0; i < model.leg_count; ++i)
-      if (!AnyLeg<S>::from_model(model, i, legs[i])) return false;
-    return true;
-  }
-  //! build()'s legs as a constant, but for the mounts' cos and sin (mount_trig()).
   static constexpr LegSolvers constant(const RobotModel& model) {
     return constant(model, typename MakeIndices<kLegs>::type());
   }
@@ -92,27 +87,6 @@ struct LegSolvers {
 };
 template <typename S, uint8_t kLegs, uint8_t kSolvers>
 struct LegSolvers<S, kLegs, kSolvers, true> {
-  bool build(const RobotModel& model) {
-    uint8_t n = 0;
-    for (uint8_t i = 0; i < model.leg_count; ++i) {
-      const uint8_t first = leg_solver_of(model, i);
-      if (first < i) {
-        of[i] = of[first];
-      } else {
-        if (n == kSolvers) return false;
-        of[i] = n++;
-      }
-      // Built in its geometry's solver, no AnyLeg on the stack (the start-up
-      // configuration's is the firmware's deepest): a later leg of the
-      // geometry gives the same solver at its own mount, which is kept here.
-      AnyLeg<S>& leg = solvers[of[i]];
-      if (!AnyLeg<S>::from_model(model, i, leg)) return false;
-      mounts[i] = leg.mount();
-      sides[i] = leg.side();
-    }
-    return true;
-  }
-  //! build()'s legs as a constant, but for the mounts' cos and sin (mount_trig()).
   static constexpr LegSolvers constant(const RobotModel& model) {
     return constant(model, typename MakeIndices<kSolvers>::type(), typename MakeIndices<kLegs>::type());
   }
@@ -140,6 +114,15 @@ struct LegSolvers<S, kLegs, kSolvers, true> {
   BodySide sides[kLegs] = {};
   uint8_t of[kLegs] = {};  // leg -> its solver
 };
+
+//! `legs` of `model` at run time: false when the model does not fit.
+template <typename Legs>
+bool build_legs(const RobotModel& model, Legs& legs) {
+  if (!Legs::fits(model)) return false;
+  legs = Legs::constant(model);
+  legs.mount_trig();
+  return true;
+}
 
 }  // namespace walker_detail
 
