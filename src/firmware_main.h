@@ -3,23 +3,14 @@
 // I2C, the HC-05 on Serial1 and USB on Serial, the HC-SR04 on D2/D3, the
 // EEPROM, the watchdog, and a 50 Hz tick.
 //
-// Included once per build, by the file of src/models/ that PlatformIO
-// (build_src_filter) or CMake (per target) picks, which first defines
-// STRIDER_FIRMWARE_MODEL (the model) and, for a quadruped, STRIDER_WALKER_LEGS 4
-// (robots/robot_model.h) and, when its legs share a geometry,
-// STRIDER_WALKER_SOLVERS (gait/walker.h): the model is a compile-time constant
-// here, the walking state has as many legs as the model and the walker as many leg
-// solvers as the model has leg geometries. Every firmware computes in fixed
-// point (below).
+// Included once per build, last, by the file of src/models/ that PlatformIO
+// (build_src_filter) or CMake (per target) picks, which first includes
+// firmware_build.h and names its profile: `using Firmware =
+// strider::FirmwareProfile<strider::robot_index(strider::kSprawl8)>;` (control/firmware_profile.h):
+// the model is a compile-time constant here, and the profile sizes the
+// walker, the servo stage and the RobotApp to it.
 #ifndef STRIDER_FIRMWARE_MAIN_H
 #define STRIDER_FIRMWARE_MAIN_H
-
-#if !defined(STRIDER_FIRMWARE_MODEL)
-#error "include firmware_main.h from a file of src/models/ (STRIDER_FIRMWARE_MODEL)"
-#endif
-#define STRIDER_VELOCITY_SEARCH 0  // the built-in models have stored velocity limits
-#define STRIDER_GAITS_IN_FLASH 1   // the gait tables stay in flash (gait_library.h)
-#define STRIDER_WALKER_FEET 0      // the walker keeps the joints, not the feet (gait/walker.h)
 
 // Library headers before Arduino.h, which defines min, max, abs and
 // constrain as macros that would rewrite the library's own names.
@@ -39,58 +30,12 @@
 
 namespace {
 
-constexpr const strider::RobotModel& kModel = STRIDER_FIRMWARE_MODEL;  // for constant expressions only
+using Scalar = Firmware::Scalar;
 // The model in flash: the RobotApp copies it to the stack for its start-up
-// configuration, and no RAM holds it (kModel itself is never read at run time).
-constexpr strider::RobotModel kModelInFlash PROGMEM = strider::without_leg_names(STRIDER_FIRMWARE_MODEL);
-constexpr uint8_t kBoards = strider::pca_board_count(kModel);
-static_assert(strider::kWalkerLegs == kModel.leg_count, "STRIDER_WALKER_LEGS: the model's leg count");
-static_assert(strider::kWalkerSolvers == strider::leg_solver_count(kModel), "STRIDER_WALKER_SOLVERS: the model's leg_solver_count()");
-static_assert(strider::servo_tick_slots_fit(kModel),
-              "STRIDER_SERVO_TICK_SLOTS: the legs' joint count, for legs of one geometry");
-
-// The scalar: fixed point for every model. Measured on the virtual Mega
-// (tools/dev bench, docs/benchmarks.md), it gives every model the shorter
-// tick: sprawl8's longest tick is 8.1 ms in fixed point against 12.0 ms in
-// float, spider12's 7.8 against 11.5 ms, and the fixed-point firmwares are
-// 70-78 KB of the 128 KB flash budget.
-using Scalar = strider::Fixed;
-
-// The walker's gait configuration at the model's defaults, built at compile
-// time and kept in flash with the model's strides alone (not the whole
-// table) and its ramps: no float conversions, limits look-up or velocity
-// plans at start-up.
-constexpr uint8_t model_index() {
-  uint8_t r = 0;
-  while (r < strider::kRobotCount && strider::kAllRobots[r] != &kModel) ++r;
-  return r;
-}
-constexpr uint8_t kModelIndex = model_index();
-static_assert(kModelIndex < strider::kRobotCount, "the firmware's model is a built-in one (stored velocity limits)");
-constexpr strider::StoredStrides kStrides PROGMEM = strider::stored_strides(kModelIndex);
-constexpr strider::GaitConfig<Scalar> kGaitConfig PROGMEM =
-    strider::stored_gait_config<Scalar>(kModelIndex, &kStrides.code[0][0]);
-
-// The walker's legs, converted from the float model at compile time: the
-// start-up computes only their mounts' cos and sin.
-constexpr strider::WalkerLegs<Scalar> kWalkerLegs PROGMEM = strider::walker_legs<Scalar>(kModel);
-static_assert(kWalkerLegs.ok, "the model's legs fit the walker (STRIDER_WALKER_LEGS, STRIDER_WALKER_SOLVERS)");
-
-// The servo stage's channels, likewise (a range per slot, kServoTickSlots).
-constexpr strider::JointChannels<Scalar, kModel.joint_count()> kJointChannels PROGMEM =
-    strider::joint_channels<Scalar, kModel.joint_count()>(kModel);
-static_assert(kJointChannels.count == kModel.joint_count(), "the model's channels fit the servo stage");
-
-// The default gait's name, likewise: no table of every model's gait
-// parameters in flash, no search by the model's name at start-up.
-constexpr strider::GaitName kDefaultGait PROGMEM = strider::default_gait_name(kModelIndex);
-
-// Avoidance's clearing distance, likewise.
-constexpr uint16_t kAvoidClearMm = strider::avoid_clear_mm(kModel);
-static_assert(kAvoidClearMm != 0, "avoid_clear_mm: a distance");
-
-using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, kModel.joint_count(), &kGaitConfig, &kWalkerLegs,
-                              &kJointChannels, kAvoidClearMm, &kDefaultGait>;
+// configuration, and no RAM holds it.
+constexpr strider::RobotModel kModelInFlash PROGMEM = strider::without_leg_names(Firmware::kModel);
+constexpr uint8_t kBoards = strider::pca_board_count(kModelInFlash);  // for constant expressions only
+using App = strider::RobotApp<Scalar, Pca9685Output, EepromStore, Firmware>;
 
 uint16_t g_servo_shadow[kBoards * strider::kPcaChannelsPerBoard];  // the boards this model uses
 Pca9685Output g_servos(g_servo_shadow, uint8_t(sizeof g_servo_shadow / sizeof g_servo_shadow[0]));
@@ -244,7 +189,7 @@ void serialEventRun() {}
 void setup() {
   // The watchdog before anything can hang: a bus held low (before Wire's
   // time-out is set), a library that blocks. Start-up takes about 20 ms
-  // (the velocity limits come from a table, STRIDER_VELOCITY_SEARCH 0); a
+  // (the velocity limits come from a table, firmware_build.h); a
   // reply that waits for a full ring feeds it (serial_link.h).
   wdt_enable(WDTO_500MS);
   static App app(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM

@@ -1,7 +1,6 @@
 // Entry point of the spider12 firmware (PlatformIO env:spider12, CMake strider_firmware_spider12):
-// the whole firmware, compiled for this model and four legs of walking state.
-#define STRIDER_FIRMWARE_MODEL strider::kSpider12
-#define STRIDER_WALKER_LEGS 4  // walking state for four legs, not six
-#define STRIDER_WALKER_SOLVERS 1  // one leg solver for its legs of one geometry
-#define STRIDER_SERVO_TICK_SLOTS 3  // the servo tick map's ranges shared by the legs' joints
+// the whole firmware, built for this model (its profile).
+#define STRIDER_WALKER_LEGS 4  // the gait engine's state for four legs, until it takes Firmware::kLegs
+#include "../firmware_build.h"
+using Firmware = strider::FirmwareProfile<strider::robot_index(strider::kSpider12)>;
 #include "../firmware_main.h"

@@ -34,12 +34,9 @@ struct Lines {
   }
 };
 
-template <typename S, const strider::GaitConfig<S>* kStored = nullptr, const strider::WalkerLegs<S>* kLegs = nullptr,
-          const strider::JointChannels<S, strider::kMaxServoJoints>* kChannels = nullptr, uint16_t kAvoidClearMm = 0,
-          const strider::GaitName* kGait = nullptr>
+template <typename S, typename P = strider::HostProfile<S>>
 struct Rig {
-  using App = strider::RobotApp<S, strider_test::RecordingServo, strider_test::FakeStore, strider::kMaxServoJoints,
-                                kStored, kLegs, kChannels, kAvoidClearMm, kGait>;
+  using App = strider::RobotApp<S, strider_test::RecordingServo, strider_test::FakeStore, P>;
   const strider::RobotModel& model;
   strider_test::RecordingServo out;
   strider_test::FakeStore store;
@@ -727,10 +724,14 @@ namespace {
 // constant (stored_gait_config) runs exactly like one that builds it from
 // the model: the same boot, the same servo pulses standing up and walking.
 constexpr strider::GaitConfig<strider::Fixed> kStoredHexapod = strider::stored_gait_config<strider::Fixed>(3);
+struct StoredHexapod : strider::HostProfile<strider::Fixed> {
+  static constexpr bool kStoredConfig = true;
+  static constexpr const strider::GaitConfig<strider::Fixed>& kGaitConfig = kStoredHexapod;
+};
 TEST(RobotAppStoredConfig, RunsLikeTheConfigurationFromTheModel) {
   ASSERT_EQ(strider::kAllRobots[3], &strider::kHexapod18);
   Rig<strider::Fixed> built(strider::kHexapod18);
-  Rig<strider::Fixed, &kStoredHexapod> stored(strider::kHexapod18);
+  Rig<strider::Fixed, StoredHexapod> stored(strider::kHexapod18);
   EXPECT_EQ(built.lines.sent, stored.lines.sent);
   bool walked = false;
   const auto same_run = [&](uint32_t ms, const char* every_100_ms) {
@@ -774,12 +775,20 @@ static_assert(kGaitOf<1>.text[0] == 'w' && kGaitOf<1>.text[3] == 'k' && kGaitOf<
 static_assert(kLegsOf<3>.ok && kLegsOf<3>.leg_count == 6 && kChannelsOf<3>.count == 18, "walker_legs, joint_channels: constants");
 
 template <uint8_t r>
+struct ConstantsOf : strider::HostProfile<Fixed> {
+  static constexpr bool kStoredConfig = true, kStoredLegs = true, kStoredChannels = true, kStoredGait = true;
+  static constexpr uint16_t kAvoidClearMm = strider::avoid_clear_mm(*strider::kAllRobots[r]);
+  static constexpr const strider::GaitConfig<Fixed>& kGaitConfig = kConfigOf<r>;
+  static constexpr const strider::WalkerLegs<Fixed>& kWalkerLegsInFlash = kLegsOf<r>;
+  static constexpr const strider::JointChannels<Fixed, kJ>& kChannels = kChannelsOf<r>;
+  static constexpr const strider::GaitName& kDefaultGait = kGaitOf<r>;
+};
+template <uint8_t r>
 void expect_constants_run_like_the_model() {
   const strider::RobotModel& m = *strider::kAllRobots[r];
   SCOPED_TRACE(m.name);
   Rig<Fixed> converted(m);
-  Rig<Fixed, &kConfigOf<r>, &kLegsOf<r>, &kChannelsOf<r>, strider::avoid_clear_mm(*strider::kAllRobots[r]), &kGaitOf<r>>
-      constant(m);
+  Rig<Fixed, ConstantsOf<r>> constant(m);
   EXPECT_EQ(converted.lines.sent, constant.lines.sent);
   const auto& a = converted.app->motion().walker();
   const auto& b = constant.app->motion().walker();

@@ -1,13 +1,8 @@
 // The firmware's layouts on the host: legs of one geometry sharing one IK
-// solver (STRIDER_WALKER_SOLVERS 1), leg results without feet
-// (STRIDER_WALKER_FEET 0) and the servo tick map's ranges shared by the
-// joints of a slot (STRIDER_SERVO_TICK_SLOTS 3), against the per-leg solvers
-// (AnyLeg::from_model) and a tick map with a range per joint. Its own
-// executable: these macros change the classes' layouts.
-#define STRIDER_WALKER_SOLVERS 1
-#define STRIDER_WALKER_FEET 0
-#define STRIDER_SERVO_TICK_SLOTS 3
-
+// solver (kSolvers 1), leg results without feet (kFeet false) and the
+// servo tick map's ranges shared by the joints of a slot (kTickSlots 3),
+// against the per-leg solvers (AnyLeg::from_model) and a tick map with a
+// range per joint.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,7 +20,16 @@ using strider::Fixed;
 using strider::IkStatus;
 using strider::RobotModel;
 using strider::Vec3;
-using strider::Walker;
+template <typename S>
+struct Shared : strider::HostProfile<S> {
+  static constexpr uint8_t kSolvers = 1;
+  static constexpr bool kFeet = false;
+  static constexpr uint8_t kTickSlots = 3;
+};
+template <typename S>
+using Walker = strider::Walker<S, Shared<S>>;
+template <typename S>
+using WalkerLegs = strider::WalkerLegs<S, 6, 1>;
 
 template <typename S>
 class WalkerShared : public ::testing::Test {};
@@ -96,16 +100,16 @@ TYPED_TEST(WalkerShared, LegsAreTheirOwnAnyLegs) {
 // The legs as compile-time constants (walker_legs: the firmware's) in this
 // layout are the legs converted from the model at run time, bit for bit:
 // mounts, sides, limits, IK and FK; and the walker walks alike with them.
-constexpr strider::WalkerLegs<Fixed> kHexapodLegs = strider::walker_legs<Fixed>(strider::kHexapod18);
-constexpr strider::WalkerLegs<Fixed> kSpiderLegs = strider::walker_legs<Fixed>(strider::kSpider12);
-constexpr strider::WalkerLegs<Fixed> kMammalLegs = strider::walker_legs<Fixed>(strider::kMammal8);
-constexpr strider::WalkerLegs<float> kHexapodLegsFloat = strider::walker_legs<float>(strider::kHexapod18);
+constexpr WalkerLegs<Fixed> kHexapodLegs = strider::walker_legs<Fixed, 6, 1>(strider::kHexapod18);
+constexpr WalkerLegs<Fixed> kSpiderLegs = strider::walker_legs<Fixed, 6, 1>(strider::kSpider12);
+constexpr WalkerLegs<Fixed> kMammalLegs = strider::walker_legs<Fixed, 6, 1>(strider::kMammal8);
+constexpr WalkerLegs<float> kHexapodLegsFloat = strider::walker_legs<float, 6, 1>(strider::kHexapod18);
 static_assert(kHexapodLegs.ok && kSpiderLegs.ok && kMammalLegs.ok && kHexapodLegsFloat.ok, "walker_legs: one solver");
-static_assert(!strider::walker_legs<Fixed>(strider::kDog12).ok && !strider::walker_legs<Fixed>(strider::kSprawl8).ok,
+static_assert(!strider::walker_legs<Fixed, 6, 1>(strider::kDog12).ok && !strider::walker_legs<Fixed, 6, 1>(strider::kSprawl8).ok,
               "walker_legs: more geometries than solvers");
 
 template <typename S>
-void expect_constant_legs_alike(const RobotModel& m, const strider::WalkerLegs<S>& legs) {
+void expect_constant_legs_alike(const RobotModel& m, const WalkerLegs<S>& legs) {
   SCOPED_TRACE(m.name);
   strider::GaitParams p;
   ASSERT_TRUE(strider::gait_params_of(m, &p));
@@ -168,12 +172,16 @@ TEST(WalkerSharedConstants, LegsAreTheModelsConvertedAtRunTime) {
 
 // The stage's channels as constants in this layout (a range per slot) are
 // the channels made from the model at run time, and map alike.
-constexpr strider::JointChannels<Fixed, 18> kHexapodChannels = strider::joint_channels<Fixed, 18>(strider::kHexapod18);
-static_assert(kHexapodChannels.count == 18 && strider::JointChannels<Fixed, 18>::kRanges == 3, "joint_channels: slots");
-static_assert(strider::joint_channels<Fixed, 18>(strider::kDog12).count == 0, "joint_channels: legs of two geometries");
+constexpr strider::JointChannels<Fixed, 18, 3> kHexapodChannels = strider::joint_channels<Fixed, 18, 3>(strider::kHexapod18);
+static_assert(kHexapodChannels.count == 18 && strider::JointChannels<Fixed, 18, 3>::kRanges == 3, "joint_channels: slots");
+static_assert(strider::joint_channels<Fixed, 18, 3>(strider::kDog12).count == 0, "joint_channels: legs of two geometries");
+struct HexapodChannels : Shared<Fixed> {
+  static constexpr bool kStoredChannels = true;
+  static constexpr const strider::JointChannels<Fixed, 18, 3>& kChannels = kHexapodChannels;
+};
 TEST(ServoTickSlots, ConstantChannelsAreTheModelsConvertedAtRunTime) {
-  strider::ServoStage<Fixed, 18> converted;
-  strider::ServoStage<Fixed, 18, &kHexapodChannels> constant;
+  strider::ServoStage<Fixed, Shared<Fixed>> converted;
+  strider::ServoStage<Fixed, HexapodChannels> constant;
   ASSERT_TRUE(converted.configure(strider::kHexapod18));
   ASSERT_TRUE(constant.configure(strider::kHexapod18));
   ASSERT_EQ(converted.joint_count(), constant.joint_count());
@@ -201,7 +209,7 @@ TYPED_TEST(WalkerShared, WalkingJointsAreEachLegsIk) {
     w.tick(strider::scalar<S>(0.02));
     const strider::Transform<S> body = strider::body_transform(w.engine().body_pose());
     for (uint8_t i = 0; i < 6; ++i) {
-      const strider::LegResult<S>& r = w.leg(i);
+      const strider::LegResult<S, false>& r = w.leg(i);
       if (r.status == IkStatus::kUnreachable) continue;
       typename AnyLeg<S>::Joints q;
       Vec3<S> at;
@@ -245,7 +253,7 @@ TEST(ServoTickSlots, MapLikeARangePerJointFloat) { expect_slots_map_alike<float>
 TEST(ServoTickSlots, MapLikeARangePerJointFixed) { expect_slots_map_alike<Fixed>(); }
 
 TEST(ServoTickSlots, StageRefusesLegsOfOtherGeometries) {
-  strider::ServoStage<Fixed, 18> stage;
+  strider::ServoStage<Fixed, Shared<Fixed>> stage;
   EXPECT_TRUE(stage.configure(strider::kHexapod18));
   EXPECT_TRUE(stage.configure(strider::kSpider12));
   EXPECT_FALSE(stage.configure(strider::kMammal8));  // 2 joints a leg, not 3

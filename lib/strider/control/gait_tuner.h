@@ -33,12 +33,12 @@ template <typename S>
 S from_hundredths(int32_t n) { return S(n) / S(100); }
 }  // namespace gait_tuner_detail
 
-template <typename S>
+template <typename S, typename P = HostProfile<S>>
 class GaitTuner {
  public:
   //! Takes the model's defaults from a walker just configured at them
   //! (before any tuning).
-  void configure(WalkerMotion<S>& motion) {
+  void configure(WalkerMotion<S, P>& motion) {
     const GaitConfig<S>& c = motion.walker().engine().config();
     own_ = Own{c.step_height_mm, c.limits.preferred_stride_mm, c.limits.min_hz, c.shape};
     live_ = gait_defaults(motion, duty_pct_of(motion.gait()));
@@ -49,7 +49,7 @@ class GaitTuner {
   //! or the defaults; a saved set that the walker no longer allows (a
   //! record of another build) is left unused.
   template <typename Store>
-  void use_gait(WalkerMotion<S>& motion, const Store& store) {
+  void use_gait(WalkerMotion<S, P>& motion, const Store& store) {
     live_ = gait_defaults(motion, own_duty_pct(motion));
     origin_ = TuneOrigin::kDefault;
     GaitTuning saved;
@@ -70,7 +70,7 @@ class GaitTuner {
 
   //! Sets parameter p to v (its unit / 100; kSwing: a SwingShape); false
   //! (nothing changed) when bounds() does not allow it.
-  bool set(WalkerMotion<S>& motion, TuneParam p, int32_t v) {
+  bool set(WalkerMotion<S, P>& motion, TuneParam p, int32_t v) {
     if (!in_tune_range(range(motion, p), p, v)) return false;
     switch (p) {
       case TuneParam::kStepHeight: live_.step_height_cmm = uint16_t(v); break;
@@ -86,7 +86,7 @@ class GaitTuner {
 
   //! Writes the gait's parameters and the body height into the store.
   template <typename Store>
-  SettingsStatus save(const WalkerMotion<S>& motion, Store& store) {
+  SettingsStatus save(const WalkerMotion<S, P>& motion, Store& store) {
     live_.height_dmm = int16_t(body_height_dmm(motion));
     const SettingsStatus st = save_gait_tuning(store, gait_index(motion.walker().leg_count(), motion.gait().name), live_);
     if (st == SettingsStatus::kOk) origin_ = TuneOrigin::kSaved;
@@ -98,7 +98,7 @@ class GaitTuner {
   //! preferred stride up to the longest a leg makes, a cycle the servos can
   //! step at with the duty set, a duty that keeps the gait's support, a
   //! swing under the model's own (kSwing: lo is the shapes' mask).
-  TuneRange range(const WalkerMotion<S>& motion, TuneParam p) const {
+  TuneRange range(const WalkerMotion<S, P>& motion, TuneParam p) const {
     using namespace gait_tuner_detail;
     const VelocityLimits<S>& lim = motion.walker().engine().config().limits;
     const GaitTuning mine = own_tuning();
@@ -131,13 +131,13 @@ class GaitTuner {
     }
     return TuneRange{swings_within(own_.shape), 0};
   }
-  TuneBounds bounds(const WalkerMotion<S>& motion) const {
+  TuneBounds bounds(const WalkerMotion<S, P>& motion) const {
     return TuneBounds{range(motion, TuneParam::kStepHeight), range(motion, TuneParam::kStepLength),
                       range(motion, TuneParam::kCycle), range(motion, TuneParam::kDuty), uint8_t(swings_within(own_.shape))};
   }
 
   //! `step_height=20.00 step_length=40.00 cycle=0.80 duty=0.75 swing=ellipse height=85.0`
-  void write(const WalkerMotion<S>& motion, ReplyWriter& w) const {
+  void write(const WalkerMotion<S, P>& motion, ReplyWriter& w) const {
     const int32_t v[4] = {live_.step_height_cmm, live_.step_length_cmm, live_.cycle_cs, live_.duty_pct};
     for (uint8_t p = 0; p < 4; ++p)
       w.ch(' ').text(flash_name(kTuneParamNames, kTuneParamCount, p)).ch('=').hundredths(v[p]);
@@ -177,7 +177,7 @@ class GaitTuner {
   //! duty_pct, with the cycle the robot walks: no shorter than the servos
   //! step at with that duty (a gait with a long share down, e.g. a wave,
   //! steps slower than the model's cycle).
-  GaitTuning gait_defaults(const WalkerMotion<S>& motion, uint8_t duty_pct) const {
+  GaitTuning gait_defaults(const WalkerMotion<S, P>& motion, uint8_t duty_pct) const {
     GaitTuning t = own_tuning();
     t.duty_pct = duty_pct;
     const int32_t shortest = shortest_cycle_cs(motion.walker().engine().config().limits, duty_pct);
@@ -185,14 +185,14 @@ class GaitTuner {
     return t;
   }
 
-  static uint8_t own_duty_pct(const WalkerMotion<S>& motion) {
+  static uint8_t own_duty_pct(const WalkerMotion<S, P>& motion) {
     GaitTable own;
     return load_gait(motion.walker().leg_count(), motion.gait().name, &own) ? duty_pct_of(own) : duty_pct_of(motion.gait());
   }
 
   //! The body's height above the ground now [0.1 mm] (the standing height
   //! and the `height` offset).
-  static int32_t body_height_dmm(const WalkerMotion<S>& motion) {
+  static int32_t body_height_dmm(const WalkerMotion<S, P>& motion) {
     const S mm = motion.stand_height_mm() + motion.offsets().translation_mm.z;
     return (gait_tuner_detail::hundredths(mm) + 5) / 10;
   }
@@ -200,7 +200,7 @@ class GaitTuner {
   //! live_ into the walker, what differs from what it walks: swing, stride
   //! and cycle (planned again), duty (a gait change). A value equal to the
   //! model's own is its own value, bit for bit.
-  void apply(WalkerMotion<S>& motion) {
+  void apply(WalkerMotion<S, P>& motion) {
     using namespace gait_tuner_detail;
     GaitEngine<S>& e = motion.walker().engine();
     const GaitConfig<S>& c = e.config();
@@ -224,8 +224,8 @@ class GaitTuner {
   TuneOrigin origin_ = TuneOrigin::kDefault;
 };
 
-template <typename S>
-constexpr char GaitTuner<S>::kHeightName[];
+template <typename S, typename P>
+constexpr char GaitTuner<S, P>::kHeightName[];
 
 }  // namespace strider
 

@@ -62,16 +62,16 @@ inline void describe_record(ReplyWriter& w, const SettingsRecord& r) {
     w.field_text(FlashText{text::kOther}, to_flash(r.other));
 }
 
-//! The boot notices: model and boards (or err 30: the model does not fit),
-//! how the settings loaded.
+//! The boot notices: model and boards (or `error`, the start-up
+//! configuration's error line in flash: err 30, 37, 38), how the settings loaded.
 template <typename Link>
-STRIDER_NOINLINE void send_boot_notices(bool ok, const char* name, uint8_t joints, uint8_t boards,
+STRIDER_NOINLINE void send_boot_notices(const char* error, const char* name, uint8_t joints, uint8_t boards,
                                         const SettingsRecord& record, Link& link) {
   ReplyLine line;
   ReplyWriter& w = line.w;
   char* const buf = line.buf;
-  if (!ok) {
-    w.text(FlashText{text::kErrModel});
+  if (error != nullptr) {
+    w.text(FlashText{error});
     link.send_line(kAllPorts, buf);
     return;
   }

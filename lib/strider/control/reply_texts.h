@@ -93,7 +93,10 @@ constexpr char kSlot[] STRIDER_PROGMEM = "slot";
 constexpr char kSeq[] STRIDER_PROGMEM = "seq";
 constexpr char kOther[] STRIDER_PROGMEM = "other";
 constexpr char kVersion[] STRIDER_PROGMEM = "version";
+// The start-up configuration's errors (RobotApp::begin()).
 constexpr char kErrModel[] STRIDER_PROGMEM = "err 30 model does not fit the firmware: build it for this model";
+constexpr char kErrServos[] STRIDER_PROGMEM = "err 37 servos do not fit the firmware: build it for this model";
+constexpr char kErrGait[] STRIDER_PROGMEM = "err 38 no gait defaults for the model: add its row to gait_params.h";
 constexpr char kState[] STRIDER_PROGMEM = "state";
 constexpr char kIk[] STRIDER_PROGMEM = "ik";
 constexpr char kServos[] STRIDER_PROGMEM = "servos";

@@ -10,14 +10,13 @@
 //! every kTickPeriodUs and reports how long the tick took. Time is a parameter:
 //! now_us, a wrapping microsecond count that the caller reads from its clock.
 //! S the scalar (float or Fixed); Output a ServoOutput (hal_interfaces.h)
-//! with `void flush()` ending a frame; Store a ByteStore; kJoints the most
-//! servos it drives (a firmware: its model's joint count); Link: link_ports.h.
+//! with `void flush()` ending a frame; Store a ByteStore; P the build
+//! profile (below); Link: link_ports.h.
 #ifndef STRIDER_CONTROL_ROBOT_APP_H
 #define STRIDER_CONTROL_ROBOT_APP_H
 
 #include <stdint.h>
 
-#include "constant_given.h"
 #include "control_tick.h"
 #include "controller.h"
 #include "gait_tuner.h"
@@ -36,22 +35,11 @@ namespace strider {
 // reads a copy on the stack in begin(), the servo stage when the PWM or the
 // trims change).
 
-//! kStoredConfig: the model's gait configuration in flash (stored_gait_config(),
-//! a firmware's constant of its model at the gait defaults, float's without
-//! its ramps; nullptr: built from the model at start-up, fill_gait_config()).
-//! kStoredLegs (with kStoredConfig only): the walker's legs in flash
-//! (walker_legs(), a firmware's constant of its model; nullptr: converted
-//! from the model at start-up, AnyLeg::from_model()). kStoredChannels: the
-//! servo stage's channels in flash (joint_channels(), a firmware's constant
-//! of its model; nullptr: made from the model, make_joint_channel()).
-//! kAvoidClearMm: avoid_clear_mm() of the model as a constant (0: computed
-//! from the model at start-up). kStoredGait (with kStoredConfig only): the
-//! model's default gait in flash (default_gait_name(), a firmware's
-//! constant; nullptr: looked up in kGaitParams by the model's name).
-template <typename S, typename Output, typename Store, uint8_t kJoints = kMaxServoJoints,
-          const GaitConfig<S>* kStoredConfig = nullptr, const WalkerLegs<S>* kStoredLegs = nullptr,
-          const JointChannels<S, kJoints>* kStoredChannels = nullptr, uint16_t kAvoidClearMm = 0,
-          const GaitName* kStoredGait = nullptr>
+//! P: the build profile (robots/build_profile.h): the walker's and the
+//! servo stage's shape, and which of the model's constants it holds in
+//! flash (a firmware's, control/firmware_profile.h); the others are built
+//! from the model at start-up.
+template <typename S, typename Output, typename Store, typename P = HostProfile<S>>
 class RobotApp {
   class Sink;
 
@@ -82,14 +70,15 @@ class RobotApp {
     // The walker's configuration needs the deepest stack of the whole
     // firmware: nothing else (no line buffer) is on the stack meanwhile,
     // and its copy of the model is gone before announce() runs.
-    ok_ = configure_from_model();
+    const char* error = configure_from_model();  // in flash; nullptr: configured
+    ok_ = error == nullptr;
     if (ok_) {
       motion_.walker().refresh();  // the legs' IK, with the model's copy off the stack
       motion_.find_reach();        // what `help` and err 24 name
       tuner_.configure(motion_);
       tuner_.use_gait(motion_, store_);  // the default gait's saved parameters
     }
-    announce(link);
+    announce(link, error);
     if (!ok_) return false;
     stage_.set_settings(controller_.settings());
     stage_.apply_pending(out_);
@@ -112,7 +101,7 @@ class RobotApp {
   //! False (nothing changed) when the walker refuses them. Works on a copy of
   //! the walker first: meant for host tools (the AVR stack has no room for it).
   bool set_gait_params(const GaitParams& params) {
-    WalkerMotion<S> trial = motion_;
+    WalkerMotion<S, P> trial = motion_;
     RobotModel model;
     copy_model(&model);
     if (!trial.configure(model, params)) return false;
@@ -176,12 +165,12 @@ class RobotApp {
 
   SonarFilter& sonar() { return sonar_; }
   const Controller<Sink, Store, false>& controller() const { return controller_; }
-  const WalkerMotion<S>& motion() const { return motion_; }
+  const WalkerMotion<S, P>& motion() const { return motion_; }
   //! What each live gait parameter may be for the gait walked now (gait_tuner.h).
   TuneBounds tune_bounds() const { return tuner_.bounds(motion_); }
   //! The walker, for host tools that change it between ticks (the simulator's gait overrides).
-  WalkerMotion<S>& motion() { return motion_; }
-  const ServoStage<S, kJoints, kStoredChannels>& servos() const { return stage_; }
+  WalkerMotion<S, P>& motion() { return motion_; }
+  const ServoStage<S, P>& servos() const { return stage_; }
   uint16_t overruns() const { return tick_load_.overruns; }
   uint32_t tick_max_us() const { return tick_load_.max_us; }
 
@@ -194,31 +183,33 @@ class RobotApp {
   }
 
   //! Walker (legs' IK not yet solved) and servo stage from (a copy of) the
-  //! model; keeps its name and board count for announce().
-  STRIDER_NOINLINE bool configure_from_model() {
+  //! model; keeps its name and board count for announce(). The error line
+  //! (reply_texts.h), nullptr when configured.
+  STRIDER_NOINLINE const char* configure_from_model() {
     RobotModel model;
     copy_model(&model);
     name_ = model.name;
     boards_ = pca_board_count(model);
-    controller_.set_avoid_clear_mm(kAvoidClearMm != 0 ? kAvoidClearMm : avoid_clear_mm(model));  // the copy: model_ may be in flash
-    return configure_walker(model, Stored<constant_given<const GaitConfig<S>*, kStoredConfig>()>()) &&
-           configure_stage(model);
+    controller_.set_avoid_clear_mm(P::kAvoidClearMm != 0 ? P::kAvoidClearMm : avoid_clear_mm(model));  // the copy: model_ may be in flash
+    const char* error = configure_walker(model, Stored<P::kStoredConfig>());
+    return error != nullptr ? error : configure_stage(model) ? nullptr : text::kErrServos;
   }
   // The walker from the model (only the one called is built).
   template <bool kOn>
   struct Stored {};
-  bool configure_walker(const RobotModel& model, Stored<false>) {
+  const char* configure_walker(const RobotModel& model, Stored<false>) {
     GaitParams params;
-    return gait_params_of(model, &params) && motion_.configure(model, params, false);
+    if (!gait_params_of(model, &params)) return text::kErrGait;
+    return motion_.configure(model, params, false) ? nullptr : text::kErrModel;
   }
   // A stored configuration needs only the default gait's name.
-  bool configure_walker(const RobotModel& model, Stored<true>) {
+  const char* configure_walker(const RobotModel& model, Stored<true>) {
     GaitName gait;
-    return default_gait(model, &gait, Stored<constant_given<const GaitName*, kStoredGait>()>()) &&
-           configure_walker(model, gait.text, Stored<constant_given<const WalkerLegs<S>*, kStoredLegs>()>());
+    if (!default_gait(model, &gait, Stored<P::kStoredGait>())) return text::kErrGait;
+    return configure_walker(model, gait.text, Stored<P::kStoredLegs>()) ? nullptr : text::kErrModel;
   }
   static bool default_gait(const RobotModel&, GaitName* gait, Stored<true>) {
-    flash_copy(gait, kStoredGait, sizeof *gait);
+    flash_copy(gait, &P::kDefaultGait, sizeof *gait);
     return true;
   }
   static bool default_gait(const RobotModel& model, GaitName* gait, Stored<false>) {
@@ -228,10 +219,10 @@ class RobotApp {
     return true;
   }
   bool configure_walker(const RobotModel& model, const char* gait, Stored<false>) {
-    return motion_.configure_stored(model, gait, kStoredConfig, false);
+    return motion_.configure_stored(model, gait, &P::kGaitConfig, false);
   }
   bool configure_walker(const RobotModel& model, const char* gait, Stored<true>) {
-    return motion_.configure_stored(model, gait, kStoredConfig, kStoredLegs, false);
+    return motion_.configure_stored(model, gait, &P::kGaitConfig, &P::kWalkerLegsInFlash, false);
   }
   // Not inlined: the stage's temporaries are not on the stack with the
   // walker's configuration. The stage reads the model again (model_, not
@@ -240,8 +231,8 @@ class RobotApp {
   ModelMemory where() const { return model_in_flash_ ? ModelMemory::kFlash : ModelMemory::kRam; }
 
   template <typename Link>
-  void announce(Link& link) {
-    send_boot_notices(ok_, name_, stage_.joint_count(), boards_, controller_.settings_record(), link);
+  void announce(Link& link, const char* error) {
+    send_boot_notices(error, name_, stage_.joint_count(), boards_, controller_.settings_record(), link);
   }
 
   //! Warm start (begin()): the joints whose outputs hold a pulse keep it and
@@ -272,10 +263,10 @@ class RobotApp {
   uint8_t boards_;           // PCA9685 boards the model uses
   Output& out_;
   Store& store_;
-  WalkerMotion<S> motion_;
-  GaitTuner<S> tuner_;
-  RobotSensing<S> sensing_;
-  ServoStage<S, kJoints, kStoredChannels> stage_;
+  WalkerMotion<S, P> motion_;
+  GaitTuner<S, P> tuner_;
+  RobotSensing<S, P> sensing_;
+  ServoStage<S, P> stage_;
   Sink sink_;
   Controller<Sink, Store, false> controller_;  // input from ports_
   LinkPorts<Controller<Sink, Store, false>, LevelCalibration<S>> ports_;

@@ -23,8 +23,8 @@ namespace strider {
 //! robot's limits, as the body speed it makes (speed_correction.h); the
 //! gait, its state, the IK's, the servos' and the live tuning's origin
 //! unless the model's own.
-template <typename S, typename Stage>
-void write_motion_status(ReplyWriter& w, const WalkerMotion<S>& motion, const Stage& stage, TuneOrigin origin) {
+template <typename S, typename P, typename Stage>
+void write_motion_status(ReplyWriter& w, const WalkerMotion<S, P>& motion, const Stage& stage, TuneOrigin origin) {
   const GaitEngine<S>& e = motion.walker().engine();
   w.format(FlashText{text::kWalkFmt}, motion.body_speed(to_tenths(e.vx())), motion.body_speed(to_tenths(e.vy())),
            motion.body_speed(to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)), true));

@@ -24,7 +24,7 @@ namespace strider {
 
 static_assert(kLevelTickS * 1e6 == double(kTickPeriodUs), "level_body.h's tick is RobotApp's");
 
-template <typename S>
+template <typename S, typename P = HostProfile<S>>
 class RobotSensing {
  public:
   //! Whether an MPU-6050 answered at start-up (the firmware probes the bus):
@@ -44,7 +44,7 @@ class RobotSensing {
   //! walk and sits the robot down, and walking is refused (err 32) until it
   //! recovers (battery_monitor.h: its hold and hysteresis).
   template <typename Ctl, typename Link>
-  STRIDER_NOINLINE void battery_reading(uint16_t adc_code, Ctl& ctl, WalkerMotion<S>& motion, Link& link) {
+  STRIDER_NOINLINE void battery_reading(uint16_t adc_code, Ctl& ctl, WalkerMotion<S, P>& motion, Link& link) {
     if (!battery.add(adc_code)) return;
     ReplyLine line;
     line.w.text(FlashText{text::kInfoBattery}).text(text::to_flash(battery.level()));
@@ -62,7 +62,7 @@ class RobotSensing {
   //! While `cal level` measures, the sample goes to it first (Ports:
   //! link_ports.h, the deferred reply's).
   template <typename Ctl, typename Ports, typename Link>
-  void imu_sample(const ImuSample<S>* sample, Ctl& ctl, WalkerMotion<S>& motion, bool servos_on, Ports& ports,
+  void imu_sample(const ImuSample<S>* sample, Ctl& ctl, WalkerMotion<S, P>& motion, bool servos_on, Ports& ports,
                   Link& link) {
     if (level_cal_.running() && imu_present_) level_cal_sample(sample, motion, servos_on, ctl, ports, link);
     if (!update(sample, ctl.settings(), motion, servos_on)) return;
@@ -73,7 +73,7 @@ class RobotSensing {
 
   //! `level on|off`; false without an IMU. Off puts the body's roll and
   //! pitch back to 0 (parallel to the feet), yaw and height kept.
-  bool set_level(bool on, WalkerMotion<S>& motion) {
+  bool set_level(bool on, WalkerMotion<S, P>& motion) {
     if (!imu_present_) return false;
     level_.set_enabled(on);
     if (!on) motion.set_body_tilt(S(0), S(0));
@@ -82,7 +82,7 @@ class RobotSensing {
 
   //! `cal level`: measuring starts when the robot stands still with its
   //! servos on, the body parallel to its feet (level off, no pose).
-  LevelCalStart start_level_cal(const WalkerMotion<S>& motion, bool servos_on) {
+  LevelCalStart start_level_cal(const WalkerMotion<S, P>& motion, bool servos_on) {
     if (!imu_present_) return LevelCalStart::kNoImu;
     if (level_cal_.running() || !attitude_.has_attitude() || fall_.fallen() || !servos_on || level_.enabled() ||
         level_.learning() || motion.walker().engine().state() != GaitState::kStanding ||
@@ -116,7 +116,7 @@ class RobotSensing {
   //! accelerometer (the next sample), the gyro's bias kept: the offset's step
   //! would otherwise take the filter's 2 s time constant and overshoot.
   template <typename Ctl, typename Ports, typename Link>
-  STRIDER_NOINLINE void level_cal_sample(const ImuSample<S>* sample, const WalkerMotion<S>& motion, bool servos_on,
+  STRIDER_NOINLINE void level_cal_sample(const ImuSample<S>* sample, const WalkerMotion<S, P>& motion, bool servos_on,
                                          Ctl& ctl, Ports& ports, Link& link) {
     int8_t x = 0, y = 0;
     const LevelCalStatus st = sample == nullptr ? (level_cal_.stop(), LevelCalStatus::kNoReading)
@@ -133,7 +133,7 @@ class RobotSensing {
   }
 
   //! True when fallen() changed.
-  bool update(const ImuSample<S>* sample, const Settings& settings, WalkerMotion<S>& motion, bool servos_on) {
+  bool update(const ImuSample<S>* sample, const Settings& settings, WalkerMotion<S, P>& motion, bool servos_on) {
     if (sample == nullptr || !imu_present_) return false;
     ImuSample<S> s = *sample;
     constexpr S kMs2PerMg = scalar<S>(kStandardGravity / 1000.0);
@@ -146,7 +146,7 @@ class RobotSensing {
   }
   //! With an attitude: the learning gains end once the robot first stands;
   //! the level acts while it stands or walks, servos on.
-  void level_body(WalkerMotion<S>& motion, bool servos_on) {
+  void level_body(WalkerMotion<S, P>& motion, bool servos_on) {
     const GaitState st = motion.walker().engine().state();
     if (level_.learning() && st == GaitState::kStanding) {
       level_.stop_learning();

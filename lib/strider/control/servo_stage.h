@@ -21,18 +21,21 @@
 
 #include "../gait/walker.h"
 #include "channel_map.h"
-#include "constant_given.h"
+#include "joint_channels.h"
 #include "servo_boards.h"
 #include "servo_frame.h"
 #include "servo_tick_map.h"
+#include "servo_warm_start.h"
 
 namespace strider {
 
 constexpr uint16_t kSoftStartStepMs = 250;   //!< one leg's servos switched on per step [ms]
-constexpr uint16_t kFramePeriodMs = 20;      //!< nominal frame period for the slew limit [ms] (50 Hz)
 
-//! N: most joints (servos) it drives; a firmware for one model sizes it to
-//! the model's joint count.
+//! Its build profile P (robots/build_profile.h) gives the most joints
+//! (servos) it drives (a firmware: its model's joint count), the tick map's
+//! slots and whether the channels are a constant in flash (P::kChannels,
+//! joint_channels() of the model given to configure()) or made from the
+//! model when needed (make_joint_channel()).
 //!
 //! RAM: the stage keeps no servo channels (servo_map.h) of its own, only
 //! the tick map's constants, which a frame needs. The channels are rebuilt
@@ -40,68 +43,12 @@ constexpr uint16_t kFramePeriodMs = 20;      //!< nominal frame period for the s
 //! the trims or the PWM change, by channel(), and in every frame only when
 //! the tick map cannot hold them (map_joint(), slow; for the built-in servo
 //! parts only near 400 Hz, where a joint's longest pulse reaches the period).
-//! The tick map's slots (servo_tick_map.h): 0, every joint its own range;
-//! a firmware whose legs have one geometry sets STRIDER_SERVO_TICK_SLOTS to
-//! its legs' joint count, and the joints of a slot share their range.
-#ifndef STRIDER_SERVO_TICK_SLOTS
-#define STRIDER_SERVO_TICK_SLOTS 0
-#endif
-constexpr uint8_t kServoTickSlots = uint8_t(STRIDER_SERVO_TICK_SLOTS);
-//! Whether model m's joints fit this build's tick-map slots: every joint its
-//! own range, or one slot per joint of a leg when all legs have one geometry.
-STRIDER_ALWAYS_INLINE constexpr bool servo_tick_slots_fit(const RobotModel& m) {
-  return kServoTickSlots == 0 || (kServoTickSlots == m.dof() && leg_solver_count(m) == 1);
-}
-
-//! A stage's channels as a constant of its model (joint_channels(): a
-//! firmware keeps its model's in flash): joint k's channel is range[k %
-//! kRanges] with output[k] and direction[k] (legs of one geometry share
-//! their ranges, kServoTickSlots).
-template <typename S, uint8_t N>
-struct JointChannels {
-  static constexpr uint8_t kRanges = kServoTickSlots != 0 ? kServoTickSlots : N;
-  ServoChannel<S> range[kRanges];
-  uint8_t output[N];
-  int8_t direction[N];
-  uint8_t count;  // channel_map_count(), 0: the model does not fit the stage
-  uint16_t step_us[kMaxLegDof];  // joint j's slew step per frame [us] (servo_step_us())
-};
-//! Joint j's slew step per frame [us]: a pulse change at the servo's top
-//! speed over one frame (500-2500 us over 180 deg), rounded.
-constexpr uint16_t servo_step_us(float speed_deg_s) {
-  return uint16_t(speed_deg_s * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f) + 0.5f);
-}
-namespace servo_stage_detail {
-template <typename S, uint8_t N, uint8_t... R, uint8_t... K>
-constexpr JointChannels<S, N> joint_channels(const RobotModel& m, walker_detail::Indices<R...>, walker_detail::Indices<K...>) {
-  return JointChannels<S, N>{
-      {(R < m.joint_count() ? joint_channel_constant<S>(m, uint8_t(R / m.dof()), uint8_t(R % m.dof()))
-                            : ServoChannel<S>{})...},
-      {(K < m.joint_count() ? joint_channel(m, uint8_t(K / m.dof()), uint8_t(K % m.dof())) : uint8_t(0))...},
-      {(K < m.joint_count() ? joint_direction(m, uint8_t(K / m.dof()), uint8_t(K % m.dof())) : int8_t(1))...},
-      uint8_t(m.joint_count() <= N &&
-                      servo_tick_slots_fit(m)
-                  ? channel_map_count_constant(m)
-                  : 0),
-      {servo_step_us(servo_parts_detail::travel_of(m.servo[0]).speed_deg_s),
-       servo_step_us(servo_parts_detail::travel_of(m.servo[1]).speed_deg_s),
-       servo_step_us(servo_parts_detail::travel_of(m.servo[2]).speed_deg_s)}};
-}
-static_assert(kMaxLegDof == 3, "joint_channels: a step per joint of a leg");
-}  // namespace servo_stage_detail
-//! Model m's channels for a stage of N joints (ServoStage's kChannels).
-template <typename S, uint8_t N>
-constexpr JointChannels<S, N> joint_channels(const RobotModel& m) {
-  return servo_stage_detail::joint_channels<S, N>(m, typename walker_detail::MakeIndices<JointChannels<S, N>::kRanges>::type(),
-                                                  typename walker_detail::MakeIndices<N>::type());
-}
-
-//! kChannels: the model's channels in flash (joint_channels() of the model
-//! given to configure(): a firmware's constant), nullptr: made from the
-//! model when needed (make_joint_channel()).
-template <typename S, uint8_t N = kMaxServoJoints, const JointChannels<S, N>* kChannels = nullptr>
+template <typename S, typename P = HostProfile<S>>
 class ServoStage {
-  static constexpr bool kHasChannels = constant_given<const JointChannels<S, N>*, kChannels>();
+  static constexpr uint8_t N = P::kJoints;
+  static constexpr uint8_t kSlots = P::kTickSlots;
+  static constexpr bool kHasChannels = P::kStoredChannels;
+  using Source = JointChannelSource<S, P>;
 
  public:
   ServoStage()
@@ -117,9 +64,7 @@ class ServoStage {
     // Joint k = leg dof + j: slot j when the tick map has dof slots, for
     // legs of one geometry (the same limits: one range per slot); fit_legs()
     // configures leg 0 first.
-    const bool slots_fit = servo_tick_slots_fit(model);
-    count_ = kHasChannels ? flash_u8(&kChannels->count)
-             : model.joint_count() <= N && slots_fit ? channel_map_count(model) : uint8_t(0);
+    count_ = Source::count(model);
     model_ = source != nullptr ? source : &model;
     where_ = where;
     dof_ = model.dof();
@@ -156,36 +101,12 @@ class ServoStage {
     next_leg_ms_ = now_ms;
   }
 
-  //! What the outputs of the boards in board_mask drive now, when that is not
-  //! what the stage wrote (after an MCU reset the boards kept running through,
-  //! or a board that answers again): words[ch] is channel ch's OFF word, ON
-  //! 0, kPcaFullOff set for no pulse. A joint whose output holds a pulse
-  //! within the joint's limits goes on from it: no relax, and its leg moves
-  //! from there (slew-limited) once the soft start reaches it. Any other is
-  //! switched off, to get its first pulse at its leg's turn. Returns the
-  //! joints that hold a pulse. Call after apply_pending() (the limits' ticks).
+  //! Takes over what the outputs of the boards in board_mask drive now
+  //! (adopt_held_outputs(), servo_warm_start.h): the joints that hold a pulse.
+  //! Call after apply_pending() (the limits' ticks).
   template <typename Output>
   uint8_t adopt_outputs(Output& out, const uint16_t* words, uint8_t channels, uint8_t board_mask) {
-    uint8_t held = 0;
-    for (uint8_t k = 0; k < count_; ++k) {
-      const uint8_t ch = tick_map_.channel(k);
-      if (!(board_mask & board_bit(board_of_channel(ch)))) continue;
-      const uint16_t w = ch < channels ? words[ch] : kPcaFullOff;
-      // The limits' ticks are known when the tick map holds every joint
-      // (every built-in model); otherwise nothing is taken as held.
-      bool inside = false;
-      if (fast_ && w < kPcaFullOff) {
-        const ServoTickJoint<S> j = tick_map_.joint(k);
-        inside = w >= j.lo_ticks && w <= j.hi_ticks;
-      }
-      if (inside) {
-        ticks_[k] = w;
-        ++held;
-      } else {
-        ticks_[k] = kOff;
-        out.relax(ch);
-      }
-    }
+    const uint8_t held = adopt_held_outputs(tick_map_, fast_, count_, ticks_, kOff, out, words, channels, board_mask);
     // Every board (a warm start): this replaces the relax of configure().
     // Some boards: a relax asked for meanwhile still applies to all.
     if (board_mask == 0xFF) relax_pending_ = false;
@@ -209,19 +130,18 @@ class ServoStage {
   ServoChannel<S> channel(uint8_t k) const {
     RobotModel m;
     read_model(*model_, where_, &m);
-    return channel_of(m, uint8_t(k / dof_), uint8_t(k % dof_), k);
+    return Source::channel(m, uint8_t(k / dof_), uint8_t(k % dof_), k);
   }
   bool on(uint8_t k) const { return ticks_[k] != kOff; }
   uint16_t ticks(uint8_t k) const { return on(k) ? ticks_[k] : uint16_t(0); }   //!< last written [PCA9685 ticks], 0 off
   const Pca9685Timing& timing() const { return timing_; }
   //! The per-frame map's constants (host tools and tests).
-  const ServoTickMap<S, N, kServoTickSlots>& tick_map() const { return tick_map_; }
+  const ServoTickMap<S, N, kSlots>& tick_map() const { return tick_map_; }
   ServoStatus last_status() const { return status_; }
 
   //! Applies pending settings now (prescale to the boards, the fast map's
-  //! constants), e.g. at start-up, so that no
-  //! control tick pays for it. frame() does it too when settings change,
-  //! the map's constants one leg per frame.
+  //! constants), e.g. at start-up, so that no control tick pays for it.
+  //! frame() does it too when settings change, the map's constants one leg per frame.
   template <typename Output>
   void apply_pending(Output& out) {
     if (pwm_pending_) apply_pwm(out);
@@ -230,7 +150,7 @@ class ServoStage {
 
   //! One frame at now_ms: soft start, map, slew, write; ends with out.flush().
   template <typename Output>
-  ServoStatus frame(const Walker<S>& walker, uint32_t now_ms, Output& out) {
+  ServoStatus frame(const Walker<S, P>& walker, uint32_t now_ms, Output& out) {
     if (pwm_pending_) apply_pwm(out);
     if (relax_pending_) {
       for (uint8_t k = 0; k < count_; ++k) {
@@ -262,15 +182,15 @@ class ServoStage {
   //! map cannot hold them) through map_joint() with channels rebuilt from
   //! the model; slewed, written when changed. The worst status.
   template <typename Output>
-  ServoStatus write_legs(const Walker<S>& walker, Output& out, const RobotModel* model) {
+  ServoStatus write_legs(const Walker<S, P>& walker, Output& out, const RobotModel* model) {
     ServoStatus worst_status = ServoStatus::kOk;
     for (uint8_t leg = 0; leg < enabled_legs_; ++leg) {
-      const LegResult<S>& r = walker.leg(leg);
+      const auto& r = walker.leg(leg);
       for (uint8_t j = 0; j < dof_; ++j) {
         const uint8_t k = uint8_t(leg * dof_ + j);
         const ServoCommand cmd = model == nullptr
                                      ? tick_map_.map(k, j, r.q[j])
-                                     : map_joint(channel_of(*model, leg, j, k), r.q[j],
+                                     : map_joint(Source::channel(*model, leg, j, k), r.q[j],
                                                  trim_from_decideg<S>(settings_->trim_decideg[k]), timing_);
         worst_status = worst(worst_status, cmd.status);
         uint16_t next = cmd.ticks;
@@ -287,39 +207,20 @@ class ServoStage {
     return worst_status;
   }
   template <typename Output>
-  STRIDER_NOINLINE ServoStatus write_legs_slowly(const Walker<S>& walker, Output& out) {
+  STRIDER_NOINLINE ServoStatus write_legs_slowly(const Walker<S, P>& walker, Output& out) {
     return write_legs_slowly(walker, out, Given<kHasChannels>());
   }
   template <bool kOn>
   struct Given {};
   template <typename Output>
-  ServoStatus write_legs_slowly(const Walker<S>& walker, Output& out, Given<false>) {
+  ServoStatus write_legs_slowly(const Walker<S, P>& walker, Output& out, Given<false>) {
     RobotModel m;
     read_model(*model_, where_, &m);
     return write_legs(walker, out, &m);
   }
   template <typename Output>
-  ServoStatus write_legs_slowly(const Walker<S>& walker, Output& out, Given<true>) {
-    return write_legs(walker, out, model_);  // only a flag: the channels come from kChannels
-  }
-
-  //! Joint j's slew step per frame [us]: from kChannels, or from its servo part.
-  uint16_t step_us(uint8_t j, Given<false>) const { return servo_step_us(servo_travel(part_[j]).speed_deg_s); }  // from flash
-  uint16_t step_us(uint8_t j, Given<true>) const { return flash_u16(&kChannels->step_us[0], j); }
-
-  //! Joint k = leg dof + j's channel: from kChannels, or made from m.
-  ServoChannel<S> channel_of(const RobotModel& m, uint8_t leg, uint8_t j, uint8_t k) const {
-    return channel_of(m, leg, j, k, Given<kHasChannels>());
-  }
-  ServoChannel<S> channel_of(const RobotModel& m, uint8_t leg, uint8_t j, uint8_t, Given<false>) const {
-    return make_joint_channel<S>(m, leg, j);
-  }
-  ServoChannel<S> channel_of(const RobotModel&, uint8_t, uint8_t, uint8_t k, Given<true>) const {
-    ServoChannel<S> ch;
-    flash_copy(&ch, &kChannels->range[k % JointChannels<S, N>::kRanges], sizeof ch);
-    ch.channel = flash_u8(&kChannels->output[k]);
-    ch.direction = int8_t(flash_u8(&kChannels->direction[k]));
-    return ch;
+  ServoStatus write_legs_slowly(const Walker<S, P>& walker, Output& out, Given<true>) {
+    return write_legs(walker, out, model_);  // only a flag: the channels come from P::kChannels
   }
 
   //! The tick map's constants for the timing and trims of up to n more
@@ -340,7 +241,7 @@ class ServoStage {
       for (uint8_t j = 0; j < dof_; ++j) {
         const uint8_t k = uint8_t(fitted_legs_ * dof_ + j);
         const S trim = trim_from_decideg<S>(settings_->trim_decideg[k]);
-        if (tick_map_.configure_joint(k, channel_of(m, fitted_legs_, j, k), trim, timing_) != ServoTickStatus::kOk)
+        if (tick_map_.configure_joint(k, Source::channel(m, fitted_legs_, j, k), trim, timing_) != ServoTickStatus::kOk)
           unfit_ = true;
       }
     if (fitted_legs_ == legs_) fast_ = !unfit_;
@@ -366,12 +267,12 @@ class ServoStage {
     }
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
-      const uint16_t t = timing_.pulse_ticks(step_us(j, Given<kHasChannels>()));
+      const uint16_t t = timing_.pulse_ticks(Source::step_us(part_[j], j));
       step_[j] = t == 0 ? uint16_t(1) : t;
     }
   }
 
-  ServoTickMap<S, N, kServoTickSlots> tick_map_;  // joint k's slot is k % dof_ (configure())
+  ServoTickMap<S, N, kSlots> tick_map_;  // joint k's slot is k % dof_ (configure())
   // Members without a default here are zero, by the constructors.
   bool fast_;
   bool unfit_;           // fit_legs() met a joint the map cannot hold

@@ -24,7 +24,7 @@
 
 namespace strider {
 
-template <typename S>
+template <typename S, typename P = HostProfile<S>>
 class WalkerMotion {
  public:
   WalkerMotion() = default;
@@ -65,7 +65,7 @@ class WalkerMotion {
   //! The same with the walker's legs from flash too (walker_legs() of the
   //! model: a firmware's constant).
   bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S>* flash_config,
-                        const WalkerLegs<S>* flash_legs, bool solve_now = true) {
+                        const WalkerLegs<S, P::kLegs, P::kSolvers>* flash_legs, bool solve_now = true) {
     GaitTable gait;
     if (!load_gait(model, default_gait, &gait) ||
         !walker_.configure_stored(flash_legs, gait, flash_config, true, solve_now))
@@ -74,8 +74,8 @@ class WalkerMotion {
     return true;
   }
 
-  Walker<S>& walker() { return walker_; }
-  const Walker<S>& walker() const { return walker_; }
+  Walker<S, P>& walker() { return walker_; }
+  const Walker<S, P>& walker() const { return walker_; }
   const GaitTable& gait() const { return walker_.engine().gait(); }
 
   //! Protocol velocity -> engine command (the controller applied the speed %).
@@ -265,7 +265,7 @@ class WalkerMotion {
     return true;
   }
 
-  Walker<S> walker_;
+  Walker<S, P> walker_;
   BodyOffsets<S> offsets_ = BodyOffsets<S>::zero();
   S stand_height_mm_ = S(0);
   Twist last_{0, 0, 0};

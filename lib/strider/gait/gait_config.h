@@ -7,7 +7,7 @@
 #include "gait_params.h"
 #include "stance.h"
 #include "stored_velocity_limits.h"
-#include "velocity_limits.h"
+#include "velocity_search.h"
 
 namespace strider {
 
@@ -187,9 +187,9 @@ constexpr bool stored_ramps_given<Fixed>() { return true; }
 //! (stored_ramps_given()): a firmware, whose
 //! model is a constant of the build, keeps it in flash instead of converting
 //! the float model and looking the limits up at start-up. flash_codes: where
-//! the strides are (STRIDER_VELOCITY_SEARCH 0; nullptr: the whole table's).
+//! the strides are (STRIDER_VELOCITY_SEARCH 0; without: the whole table's).
 template <typename S>
-constexpr GaitConfig<S> stored_gait_config(uint8_t r, const uint16_t* flash_codes = nullptr) {
+constexpr GaitConfig<S> stored_gait_config(uint8_t r, const uint16_t* flash_codes) {
   namespace enc = velocity_limit_encoding;
   using T = detail::VelocityLimitTables<>;
   const RobotModel& model = *kAllRobots[r];
@@ -212,7 +212,7 @@ constexpr GaitConfig<S> stored_gait_config(uint8_t r, const uint16_t* flash_code
   for (uint8_t i = 0; i < kMaxLegs; ++i)
     for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) c.limits.stride_code[i][k] = T::kStride[r][i][k];
 #else
-  c.limits.flash_codes = flash_codes != nullptr ? flash_codes : &T::kStride[r][0][0];
+  c.limits.flash_codes = flash_codes;
 #endif
   S servo[3] = {};
   for (uint8_t j = 0; j < 3; ++j)
@@ -229,6 +229,11 @@ constexpr GaitConfig<S> stored_gait_config(uint8_t r, const uint16_t* flash_code
   gait_config_detail::set_speeds(c);
   gait_config_detail::set_stored_ramps(c, r);
   return c;
+}
+
+template <typename S>
+constexpr GaitConfig<S> stored_gait_config(uint8_t r) {
+  return stored_gait_config<S>(r, &detail::VelocityLimitTables<>::kStride[r][0][0]);
 }
 
 //! The same as a value (fill_gait_config() builds it in place: no copy of

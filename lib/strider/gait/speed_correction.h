@@ -74,11 +74,12 @@ constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGM
     // mm/s at any command above); turn 6/12 -> 5.6/11.7 deg/s (0.96; its
     // limit 12.5-12.6 deg/s). The pad's 100 %: 27 mm/s, 12 deg/s.
     {"spider12", "walk", 9480, 9600, 6, 270, 120},
-    // mammal8 walk: walk 2/4/10/15.5/20 -> 1.5/3.0/9.5/15.9/21.4 mm/s: about
-    // the gait's speed less 0.5 mm/s (no ratio); its limit 21.3-21.5 mm/s
-    // at any command above: the pad's 100 % walks 20 mm/s. Turning in place
-    // it hardly moves (0.0-0.1 deg/s): not listed.
-    {"mammal8", "walk", 10000, 10000, 5, 200, 0},
+    // mammal8 walk, not corrected: walk 2/4/10/15.5/20 -> 1.5/3.0/9.5/15.9/
+    // 21.4 mm/s (slow steps scatter run to run; its table 5 distances at 15
+    // mm/s are within 2 % of the gait's own, SimTargets); its limit
+    // 21.3-21.5 mm/s at any command above: the pad's 100 % walks 20 mm/s.
+    // Turning in place it hardly moves (0.0-0.1 deg/s): not listed.
+    {"mammal8", "walk", 10000, 10000, 0, 200, 0},
     // dog12 trot, not corrected: walk 77.5/155 -> 72.9/114.6 mm/s (its top
     // ~115): the pad's 100 % walks 110 mm/s. Its turn rate falls with the
     // command (6/12/30 -> 4.8/6.5/1.4 deg/s): not listed.

@@ -1,63 +1,30 @@
 //! Walker: a whole robot walking: gait engine -> body pose -> reachable-set
 //! projection (2-DOF legs) -> leg IK, per tick, with each leg's joints and
 //! status.
-//!
-//! Per leg the walker reports:
-//! - the foot target in the body frame after the body pose [mm];
-//! - what it had to clamp: a 2-DOF leg's target is first moved onto the
-//!   leg's reachable set (reach_projection.h) and clamp_mm says by how much;
-//! - the joints [rad] from IK of that target, and the IK's own status (never
-//!   hidden: kUnreachable keeps the previous joints and says so);
-//! - status = the worse of the IK status and kClamped when the projection
-//!   moved a foot on the ground by more than kClampToleranceMm (the foot
-//!   slides: a sprawling leg moving along its own direction, a planar leg
-//!   asked to move sideways) or moved a foot in the air up or down. A 2-DOF
-//!   foot in the air only keeps its height and direction: its reach follows
-//!   from its joints (a sprawling leg's foot swings outward as the knee lifts
-//!   it, seed 000 section 2.4), which is not reported as a clamp.
-//! A firmware keeps only the joints, status and contact (STRIDER_WALKER_FEET
-//! 0), and one IK solver per leg geometry (STRIDER_WALKER_SOLVERS).
+//! Per leg it reports a LegResult (leg_result.h).
+//! Its build profile P (robots/build_profile.h) says how many legs it holds,
+//! whether the results keep the feet (a firmware keeps only the joints,
+//! status and contact) and how many IK solvers (one per leg geometry).
 #ifndef STRIDER_GAIT_WALKER_H
 #define STRIDER_GAIT_WALKER_H
 
 #include "../kinematics/any_leg.h"
+#include "../robots/build_profile.h"
 #include "gait_engine.h"
+#include "leg_result.h"
+#include "mount_turn.h"
 #include "reach_projection.h"
 #include "walker_legs.h"
 
 namespace strider {
 
-//! A 2-DOF foot moved by more than this counts as clamped [mm].
-constexpr double kClampToleranceMm = 0.5;
-
-//! What a LegResult keeps for host tools (kWalkerFeet).
-template <typename S, bool kFeet = kWalkerFeet>
-struct LegFeet {
-  Vec3<S> target_mm;                //!< engine target, body frame [mm]
-  Vec3<S> foot_mm;                  //!< foot the joints reach, body frame [mm]
-  IkStatus ik_status;               //!< IK of the projected target
-  S clamp_mm;                       //!< how far the projection moved the target [mm]
-};
-template <typename S>
-struct LegFeet<S, false> {};
-//! Where Walker::tick() keeps a leg's target and foot when its result does not (!kWalkerFeet).
-template <typename S, bool kFeet = kWalkerFeet>
-struct LegScratch {};
-template <typename S>
-struct LegScratch<S, false> {
-  Vec3<S> target_mm;
-  Vec3<S> foot_mm;
-};
-
-template <typename S>
-struct LegResult : LegFeet<S> {
-  typename AnyLeg<S>::Joints q;     //!< joints, seed convention [rad]
-  IkStatus status;                  //!< worst of the IK status and the clamp
-  bool contact;                     //!< foot on the ground
-};
-
-template <typename S>
+template <typename S, typename P = HostProfile<S>>
 class Walker {
+  static constexpr uint8_t kLegs = P::kLegs;
+  static constexpr bool kFeet = P::kFeet;
+  using Result = LegResult<S, kFeet>;
+  using Scratch = LegScratch<S, kFeet>;
+
  public:
   Walker() : dof_(0), turn_(), proj_() {}
 
@@ -68,7 +35,7 @@ class Walker {
   //! solves them once its copy of the model is off the stack).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
                  bool sitting = false, bool solve_now = true) {
-    if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || !velocity_limits_known(model, params, shape) || !build_legs(model))
+    if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !velocity_limits_known(model, params, shape) || !build_legs(model))
       return false;
     configure_engine(model, params, shape, gait, sitting);
     reset_legs(solve_now);
@@ -82,7 +49,7 @@ class Walker {
   //! at compile time).
   bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>* flash_config,
                         bool sitting = false, bool solve_now = true) {
-    if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || !build_legs(model)) return false;
+    if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !build_legs(model)) return false;
     engine_.configure_stored(flash_config, gait, sitting);
     reset_legs(solve_now);
     return true;
@@ -90,7 +57,7 @@ class Walker {
 
   //! The same with the legs from flash too (walker_legs() of the model,
   //! which the caller makes sure of): no conversion of the float model at all.
-  bool configure_stored(const WalkerLegs<S>* flash_legs, const GaitTable& gait, const GaitConfig<S>* flash_config,
+  bool configure_stored(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, const GaitTable& gait, const GaitConfig<S>* flash_config,
                         bool sitting = false, bool solve_now = true) {
     if (!build_legs(flash_legs, gait.leg_count)) return false;
     engine_.configure_stored(flash_config, gait, sitting);
@@ -104,7 +71,7 @@ class Walker {
   //! not recognised by its address, which a copy that is gone may share).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>& config,
                  bool sitting = false) {
-    if (model.leg_count > kWalkerLegs || gait.leg_count != model.leg_count || config.leg_count != model.leg_count)
+    if (model.leg_count > kLegs || gait.leg_count != model.leg_count || config.leg_count != model.leg_count)
       return false;
     if (!build_legs(model)) return false;
     engine_.configure(config, gait, sitting);
@@ -125,7 +92,7 @@ class Walker {
   GaitEngine<S>& engine() { return engine_; }
   const GaitEngine<S>& engine() const { return engine_; }
   //! Leg i as one AnyLeg: its solver at its mount (a copy: legs of one
-  //! geometry may share their solver, kWalkerSolvers).
+  //! geometry may share their solver, P::kSolvers).
   AnyLeg<S> leg_model(uint8_t i) const { return legs_.leg(i); }
   //! Where leg i sits on the body.
   const LegMount<S>& leg_mount(uint8_t i) const { return legs_.mount(i); }
@@ -146,7 +113,7 @@ class Walker {
   //! Every leg's IK for the engine's targets as they are (no tick).
   void refresh() { solve(); }
 
-  const LegResult<S>& leg(uint8_t i) const { return out_[i]; }
+  const Result& leg(uint8_t i) const { return out_[i]; }
   //! A body-frame point [mm] in leg i's frame, as the walker computes it
   //! (LegMount::body_to_leg with fewer products for the usual mounts).
   Vec3<S> to_leg(uint8_t i, const Vec3<S>& body_mm) const { return to_leg_unchecked(i, body_mm); }
@@ -174,7 +141,6 @@ class Walker {
     solve_legs(&body, pose.translation_mm);
   }
 
-
   //! Every leg for the body posed by `body` (nullptr: not turned, only
   //! moved by `shift` [mm]). Vectors are copied field by field, as avr-gcc
   //! copies a whole Vec3 with a byte loop.
@@ -183,16 +149,16 @@ class Walker {
     // the feet are already in the body frame.
     const bool still = leg_ik::is_zero(shift.x) && leg_ik::is_zero(shift.y) && leg_ik::is_zero(shift.z);
     const bool projects = proj_.projects();
-    LegScratch<S> scratch;  // nothing when the results keep the feet
+    Scratch scratch;  // nothing when the results keep the feet
     // Results and feet by pointer (no index products per leg); the legs the
     // fast IK does not take go to solve_leg(), whose locals stay out of
     // this loop's stack frame.
-    LegResult<S>* r = out_;
+    Result* r = out_;
     const Vec3<S>* p = engine_.feet();
     const bool* contact = engine_.contacts();
     const uint8_t n = leg_count();
     for (uint8_t i = 0; i < n; ++i, ++r, ++p) {
-      // The body-frame target and the foot reached: r's (kWalkerFeet) or the scratch.
+      // The body-frame target and the foot reached: r's (kFeet) or the scratch (leg_result.h).
       Vec3<S>& t = target_of(*r, scratch);
       if (body != nullptr) {
         t = foot_in_body(*body, *p);
@@ -211,7 +177,7 @@ class Walker {
         set_clamp(*r, S(0));
         set_ik_status(*r, IkStatus::kOk);
         r->status = IkStatus::kOk;
-        if (kWalkerFeet) copy(t, foot_of(*r, scratch));
+        if (kFeet) copy(t, foot_of(*r, scratch));
         continue;
       }
       solve_leg(i, *r, scratch, projects);
@@ -220,7 +186,7 @@ class Walker {
 
   //! solve_legs()'s leg i for its body-frame target (in r or the scratch)
   //! when the fast IK does not take it.
-  STRIDER_NOINLINE void solve_leg(uint8_t i, LegResult<S>& r, LegScratch<S>& scratch, bool projects) {
+  STRIDER_NOINLINE void solve_leg(uint8_t i, Result& r, Scratch& scratch, bool projects) {
     const Vec3<S> leg_target = to_leg_unchecked(i, target_of(r, scratch));
     if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
       // The point reached (leg frame) goes into foot, which the IK
@@ -232,7 +198,7 @@ class Walker {
       r.status = ik;
       // A target reached as given is the body-frame target itself: no
       // transform back (4 products).
-      if (!kWalkerFeet || ik == IkStatus::kUnreachable) return;
+      if (!kFeet || ik == IkStatus::kUnreachable) return;
       if (same(foot_of(r, scratch), leg_target)) {
         copy(target_of(r, scratch), foot_of(r, scratch));
       } else {
@@ -246,33 +212,20 @@ class Walker {
     set_clamp(r, moved);
     const IkStatus ik = legs_.solver(i).ik(t, r.q, reached, ik_options_);
     set_ik_status(r, ik);
-    if (kWalkerFeet && ik != IkStatus::kUnreachable)
+    if (kFeet && ik != IkStatus::kUnreachable)
       foot_of(r, scratch) = moved == S(0) && same(reached, leg_target) ? target_of(r, scratch) : to_body(i, reached);
     constexpr S tolerance = scalar<S>(kClampToleranceMm);
     const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
     r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
   }
 
-  // Where solve_legs() keeps a leg's body-frame target and reached foot:
-  // in its result (kWalkerFeet) or in the scratch.
-  static Vec3<S>& target_of(LegFeet<S, true>& r, LegScratch<S, true>&) { return r.target_mm; }
-  static Vec3<S>& target_of(LegFeet<S, false>&, LegScratch<S, false>& s) { return s.target_mm; }
-  static Vec3<S>& foot_of(LegFeet<S, true>& r, LegScratch<S, true>&) { return r.foot_mm; }
-  static Vec3<S>& foot_of(LegFeet<S, false>&, LegScratch<S, false>& s) { return s.foot_mm; }
-  static void set_ik_status(LegFeet<S, true>& r, IkStatus ik) { r.ik_status = ik; }
-  static void set_ik_status(LegFeet<S, false>&, IkStatus) {}
-  static void set_clamp(LegFeet<S, true>& r, S clamp_mm) { r.clamp_mm = clamp_mm; }
-  static void set_clamp(LegFeet<S, false>&, S) {}
-
-  //! The engine's configuration from the model, built in place. The
-  //! velocity-limit search needs an AnyLeg per leg: shared solvers with the
-  //! search compiled in build them on the stack (without it the stored
-  //! limits need none).
+  //! The engine's configuration from the model, built in place. The search
+  //! needs an AnyLeg per leg: shared solvers build them on the stack.
   void configure_engine(const RobotModel& model, const GaitParams& params, SwingShape shape, const GaitTable& gait,
                         bool sitting) {
 #if STRIDER_VELOCITY_SEARCH
     if (legs_.per_leg() == nullptr) {
-      AnyLeg<S> legs[kWalkerLegs];
+      AnyLeg<S> legs[kLegs];
       for (uint8_t i = 0; i < model.leg_count; ++i) legs[i] = leg_model(i);
       engine_.configure(model, legs, params, shape, gait, sitting);
       return;
@@ -291,49 +244,16 @@ class Walker {
     for (uint8_t i = 0; i < leg_count(); ++i) {
       out_[i].q = typename AnyLeg<S>::Joints();
       for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
-      LegScratch<S> unused;
+      Scratch unused;
       foot_of(out_[i], unused) = engine_.foot(i);
     }
     if (solve_now) solve();
   }
 
-  // LegMount's transforms with fewer products for the usual mounts: turned
-  // by 0 degrees (the quadrupeds) or +-90 (a hexapod's middle legs) none,
-  // products by 0 and 1 being exact (float's cos 90 deg, 4e-8, taken as 0);
-  // by +-45 or +-135 degrees (cos = +-sin) two instead of four, within a
-  // rounding step of LegMount's (test/gait; float's cos 45 deg stands for
-  // both when its sine differs in the last bit).
-  enum MountTurn : uint8_t { kTurned = 0, kStraight = 1, kLeft = 2, kRight = 3, kDiagonal = 4, kAntiDiagonal = 5 };
-  static uint8_t turn_of(const LegMount<S>& m) {
-    constexpr S tiny = scalar<S>(1e-6);
-    if (m.sin_yaw == S(0) && m.cos_yaw == S(1)) return kStraight;
-    if (abs(m.cos_yaw) <= tiny && m.sin_yaw == S(1)) return kLeft;
-    if (abs(m.cos_yaw) <= tiny && m.sin_yaw == S(-1)) return kRight;
-    // float's cos and sin of 45 or 135 degrees may differ in the last bit.
-    if (abs(m.cos_yaw - m.sin_yaw) <= tiny) return kDiagonal;
-    if (abs(m.cos_yaw + m.sin_yaw) <= tiny) return kAntiDiagonal;
-    return kTurned;
-  }
-  // Inline: the tick's one call site would pay ~100 cycles per leg for the
-  // call, its register saves and the returned vector.
   STRIDER_ALWAYS_INLINE Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
-    const LegMount<S>& m = legs_.mount(i);
-    if (turn_[i] == kTurned) return m.body_to_leg(p);
-    // Scalars, not a Vec3 difference (an out-of-line call on the AVR), and
-    // Fixed's sums in place (add_inline).
-    const S dx = sub_inline(p.x, m.origin_mm.x), dy = sub_inline(p.y, m.origin_mm.y), dz = sub_inline(p.z, m.origin_mm.z);
-    switch (turn_[i]) {
-      case kStraight: return Vec3<S>(dx, dy, dz);
-      case kLeft: return Vec3<S>(dy, neg_inline(dx), dz);
-      case kRight: return Vec3<S>(neg_inline(dy), dx, dz);
-      case kDiagonal: return Vec3<S>(m.cos_yaw * add_inline(dx, dy), m.cos_yaw * sub_inline(dy, dx), dz);
-      default: return Vec3<S>(m.cos_yaw * sub_inline(dx, dy), m.cos_yaw * add_inline(dx, dy), dz);
-    }
+    return to_leg_turned(turn_[i], legs_.mount(i), p);
   }
-  Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const {
-    const LegMount<S>& m = legs_.mount(i);
-    return turn_[i] == kStraight ? p + m.origin_mm : m.leg_to_body(p);
-  }
+  Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const { return to_body_turned(turn_[i], legs_.mount(i), p); }
 
   // Same bits (an IK that reached its target copies it): for float no
   // comparison calls; a +0 against -0 only takes the transform back.
@@ -343,8 +263,8 @@ class Walker {
 
   bool build_legs(const RobotModel& model) {
     dof_ = 0;
-    if (!legs_.build(model)) return false;
-    for (uint8_t i = 0; i < model.leg_count; ++i) turn_[i] = turn_of(legs_.mount(i));
+    if (!walker_detail::build_legs(model, legs_)) return false;
+    for (uint8_t i = 0; i < model.leg_count; ++i) turn_[i] = mount_turn_of(legs_.mount(i));
     proj_ = ReachProjection<S>::make(model);
     dof_ = model.dof();
     return true;
@@ -352,27 +272,26 @@ class Walker {
 
   //! The legs from flash (no copy of the whole constant on the stack);
   //! false when they do not fit or have another leg count than the gait's.
-  bool build_legs(const WalkerLegs<S>* flash_legs, uint8_t gait_legs) {
+  bool build_legs(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, uint8_t gait_legs) {
     dof_ = 0;
     const uint8_t legs = flash_u8(&flash_legs->leg_count);
-    if (flash_u8(&flash_legs->ok) == 0 || legs > kWalkerLegs || legs != gait_legs) return false;
+    if (flash_u8(&flash_legs->ok) == 0 || legs > kLegs || legs != gait_legs) return false;
     flash_copy(&legs_, &flash_legs->legs, sizeof legs_);
     legs_.mount_trig();
-    for (uint8_t i = 0; i < legs; ++i) turn_[i] = turn_of(legs_.mount(i));
+    for (uint8_t i = 0; i < legs; ++i) turn_[i] = mount_turn_of(legs_.mount(i));
     flash_copy(&proj_, &flash_legs->proj, sizeof proj_);
     dof_ = flash_u8(&flash_legs->dof);
     return true;
   }
 
-
   // dof_, turn_ and proj_ are zero, by the constructors.
   uint8_t dof_;  // joints per leg; 0 before the legs are built
-  walker_detail::LegSolvers<S> legs_;
-  uint8_t turn_[kWalkerLegs];  // MountTurn of each leg's mount
+  walker_detail::LegSolvers<S, kLegs, P::kSolvers> legs_;
+  MountTurn turn_[kLegs];  // of each leg's mount (mount_turn.h)
   ReachProjection<S> proj_;
   IkOptions<S> ik_options_{};  // the defaults, built once rather than per leg and tick
   GaitEngine<S> engine_;
-  LegResult<S> out_[kWalkerLegs];
+  Result out_[kLegs];
 };
 
 }  // namespace strider

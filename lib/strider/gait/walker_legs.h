@@ -1,5 +1,5 @@
 //! The walker's leg storage: an AnyLeg per leg, or one IK solver per leg
-//! geometry with each leg's mount and side (STRIDER_WALKER_SOLVERS), and the
+//! geometry with each leg's mount and side (the profile's kSolvers), and the
 //! same built from a model at compile time for a firmware's flash
 //! (walker_legs()).
 #ifndef STRIDER_GAIT_WALKER_LEGS_H
@@ -9,27 +9,6 @@
 #include "reach_projection.h"
 
 namespace strider {
-
-//! Leg solvers a walker holds. As many as legs (the default): an AnyLeg per
-//! leg. Fewer: legs of one geometry (the same joint limits and, for abduction
-//! legs, the same side: AnyLeg::from_model gives them the same IK but for the
-//! mount) share one solver, and each leg keeps its mount; configure()
-//! refuses a model that needs more. A firmware's model file sets it to its
-//! model's leg_solver_count() (a hexapod18 firmware: 1 instead of six).
-#ifndef STRIDER_WALKER_SOLVERS
-#define STRIDER_WALKER_SOLVERS STRIDER_WALKER_LEGS
-#endif
-constexpr uint8_t kWalkerSolvers = uint8_t(STRIDER_WALKER_SOLVERS);
-static_assert(kWalkerSolvers >= 1 && kWalkerSolvers <= kWalkerLegs, "STRIDER_WALKER_SOLVERS: 1 to STRIDER_WALKER_LEGS");
-
-//! Whether the walker keeps each leg's engine target, reached foot, IK status
-//! and clamp in its LegResult (target_mm, foot_mm, ik_status, clamp_mm): host
-//! tools and tests read them; a firmware (STRIDER_WALKER_FEET 0, set by
-//! firmware_main.h) drives the servos from the joints and reports the status.
-#ifndef STRIDER_WALKER_FEET
-#define STRIDER_WALKER_FEET 1
-#endif
-constexpr bool kWalkerFeet = STRIDER_WALKER_FEET != 0;
 
 //! Legs i and j of `model` solve alike (one solver for both): the same
 //! joint limits and, for abduction legs, the same side.
@@ -81,59 +60,35 @@ struct MakeIndices<0, I...> {
   using type = Indices<I...>;
 };
 
-//! The walker's legs: an AnyLeg per leg, or (kShared) one per geometry
-//! and each leg's mount and side.
-template <typename S, bool kShared = (kWalkerSolvers < kWalkerLegs)>
+//! The walker's legs: an AnyLeg per leg, or (fewer solvers than legs) one
+//! per geometry and each leg's mount and side. constant(): the legs but for
+//! the mounts' cos and sin (mount_trig()); build_legs() refuses a model that
+//! needs more.
+template <typename S, uint8_t kLegs, uint8_t kSolvers, bool kShared = (kSolvers < kLegs)>
 struct LegSolvers {
-  bool build(const RobotModel& model) {
-    for (uint8_t i = 0; i < model.leg_count; ++i)
-      if (!AnyLeg<S>::from_model(model, i, legs[i])) return false;
-    return true;
-  }
-  //! build()'s legs as a constant, but for the mounts' cos and sin (mount_trig()).
+  static_assert(kSolvers >= 1 && kSolvers <= kLegs, "kSolvers: 1 to kLegs");
   static constexpr LegSolvers constant(const RobotModel& model) {
-    return constant(model, typename MakeIndices<kWalkerLegs>::type());
+    return constant(model, typename MakeIndices<kLegs>::type());
   }
   template <uint8_t... I>
   static constexpr LegSolvers constant(const RobotModel& model, Indices<I...>) {
     return LegSolvers{{AnyLeg<S>::constant(model, I)...}};
   }
-  static constexpr bool fits(const RobotModel& model) { return model.leg_count <= kWalkerLegs; }
+  static constexpr bool fits(const RobotModel& model) { return model.leg_count <= kLegs; }
   void mount_trig() {
-    for (uint8_t i = 0; i < kWalkerLegs; ++i) legs[i].mount_trig();
+    for (uint8_t i = 0; i < kLegs; ++i) legs[i].mount_trig();
   }
   const AnyLeg<S>& solver(uint8_t i) const { return legs[i]; }
   const LegMount<S>& mount(uint8_t i) const { return legs[i].mount(); }
   AnyLeg<S> leg(uint8_t i) const { return legs[i]; }
   const AnyLeg<S>* per_leg() const { return legs; }
 
-  AnyLeg<S> legs[kWalkerLegs];
+  AnyLeg<S> legs[kLegs];
 };
-template <typename S>
-struct LegSolvers<S, true> {
-  bool build(const RobotModel& model) {
-    uint8_t n = 0;
-    for (uint8_t i = 0; i < model.leg_count; ++i) {
-      const uint8_t first = leg_solver_of(model, i);
-      if (first < i) {
-        of[i] = of[first];
-      } else {
-        if (n == kWalkerSolvers) return false;
-        of[i] = n++;
-      }
-      // Built in its geometry's solver, no AnyLeg on the stack (the start-up
-      // configuration's is the firmware's deepest): a later leg of the
-      // geometry gives the same solver at its own mount, which is kept here.
-      AnyLeg<S>& leg = solvers[of[i]];
-      if (!AnyLeg<S>::from_model(model, i, leg)) return false;
-      mounts[i] = leg.mount();
-      sides[i] = leg.side();
-    }
-    return true;
-  }
-  //! build()'s legs as a constant, but for the mounts' cos and sin (mount_trig()).
+template <typename S, uint8_t kLegs, uint8_t kSolvers>
+struct LegSolvers<S, kLegs, kSolvers, true> {
   static constexpr LegSolvers constant(const RobotModel& model) {
-    return constant(model, typename MakeIndices<kWalkerSolvers>::type(), typename MakeIndices<kWalkerLegs>::type());
+    return constant(model, typename MakeIndices<kSolvers>::type(), typename MakeIndices<kLegs>::type());
   }
   template <uint8_t... N, uint8_t... I>
   static constexpr LegSolvers constant(const RobotModel& model, Indices<N...>, Indices<I...>) {
@@ -143,41 +98,50 @@ struct LegSolvers<S, true> {
                       {(I < model.leg_count ? leg_solver_index(model, I) : uint8_t(0))...}};
   }
   static constexpr bool fits(const RobotModel& model) {
-    return model.leg_count <= kWalkerLegs && leg_solver_count(model) <= kWalkerSolvers;
+    return model.leg_count <= kLegs && leg_solver_count(model) <= kSolvers;
   }
   void mount_trig() {
-    for (uint8_t n = 0; n < kWalkerSolvers; ++n) solvers[n].mount_trig();
-    for (uint8_t i = 0; i < kWalkerLegs; ++i) mounts[i] = LegMount<S>::make(mounts[i].origin_mm, mounts[i].yaw_rad);
+    for (uint8_t n = 0; n < kSolvers; ++n) solvers[n].mount_trig();
+    for (uint8_t i = 0; i < kLegs; ++i) mounts[i] = LegMount<S>::make(mounts[i].origin_mm, mounts[i].yaw_rad);
   }
   const AnyLeg<S>& solver(uint8_t i) const { return solvers[of[i]]; }
   const LegMount<S>& mount(uint8_t i) const { return mounts[i]; }
   AnyLeg<S> leg(uint8_t i) const { return solvers[of[i]].placed(mounts[i], sides[i]); }
   const AnyLeg<S>* per_leg() const { return nullptr; }  // none kept
 
-  AnyLeg<S> solvers[kWalkerSolvers];  // the mount each holds is its first leg's, never read
-  LegMount<S> mounts[kWalkerLegs];
-  BodySide sides[kWalkerLegs] = {};
-  uint8_t of[kWalkerLegs] = {};  // leg -> its solver
+  AnyLeg<S> solvers[kSolvers];  // the mount each holds is its first leg's, never read
+  LegMount<S> mounts[kLegs];
+  BodySide sides[kLegs] = {};
+  uint8_t of[kLegs] = {};  // leg -> its solver
 };
+
+//! `legs` of `model` at run time: false when the model does not fit.
+template <typename Legs>
+bool build_legs(const RobotModel& model, Legs& legs) {
+  if (!Legs::fits(model)) return false;
+  legs = Legs::constant(model);
+  legs.mount_trig();
+  return true;
+}
 
 }  // namespace walker_detail
 
 //! A walker's legs built from a model at compile time (walker_legs()): a
 //! firmware keeps its model's in flash and converts nothing at start-up
 //! (Walker::configure_stored()).
-template <typename S>
+template <typename S, uint8_t kLegs = kWalkerLegs, uint8_t kSolvers = kLegs>
 struct WalkerLegs {
-  walker_detail::LegSolvers<S> legs;  // the mounts without their cos and sin
+  walker_detail::LegSolvers<S, kLegs, kSolvers> legs;  // the mounts without their cos and sin
   ReachProjection<S> proj;
   uint8_t leg_count;
   uint8_t dof;
-  bool ok;  // the model fits this build's walker (kWalkerLegs, kWalkerSolvers)
+  bool ok;  // the model fits (kLegs, kSolvers)
 };
-template <typename S>
-constexpr WalkerLegs<S> walker_legs(const RobotModel& model) {
-  return WalkerLegs<S>{walker_detail::LegSolvers<S>::constant(model), ReachProjection<S>::make(model), model.leg_count,
-                       model.dof(),
-                       walker_detail::LegSolvers<S>::fits(model)};
+template <typename S, uint8_t kLegs = kWalkerLegs, uint8_t kSolvers = kLegs>
+constexpr WalkerLegs<S, kLegs, kSolvers> walker_legs(const RobotModel& model) {
+  using Legs = walker_detail::LegSolvers<S, kLegs, kSolvers>;
+  return WalkerLegs<S, kLegs, kSolvers>{Legs::constant(model), ReachProjection<S>::make(model), model.leg_count,
+                                        model.dof(), Legs::fits(model)};
 }
 
 }  // namespace strider

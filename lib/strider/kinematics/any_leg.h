@@ -33,37 +33,15 @@ class AnyLeg {
   //! Returns false and leaves `out` alone when index >= model.leg_count.
   static bool from_model(const RobotModel& model, uint8_t index, AnyLeg& out) {
     if (index >= model.leg_count || index >= kMaxLegs) return false;
-    const LegModel& lm = model.legs[index];
-    AnyLeg leg;
-    leg.kind_ = model.kind;
-    leg.side_ = lm.side;
-    leg.mount_ = LegMount<S>::make(Vec3<S>::from(lm.mount_mm), deg_to_rad<S>(lm.mount_yaw_deg));
-    const S l1 = scalar<S>(model.links.l1_mm), l2 = scalar<S>(model.links.l2_mm);
-    const S l3 = scalar<S>(model.links.l3_mm), d1 = scalar<S>(model.links.d1_mm);
-    switch (model.kind) {
-      case LegKind::kSprawl:
-        leg.legs_.sprawl = SprawlLeg<S>::make(l1, l2, limits_of<2>(lm));
-        break;
-      case LegKind::kPlanar:
-        leg.legs_.planar = PlanarLeg<S>::make(l1, l2, limits_of<2>(lm));
-        break;
-      case LegKind::kCoxaFemurTibia:
-        leg.legs_.cft = CoxaFemurTibiaLeg<S>::make(d1, l1, l2, l3, limits_of<3>(lm));
-        break;
-      case LegKind::kAbduction:
-        leg.legs_.abduction = AbductionLeg<S>::make(
-            l1, l2, l3, limits_of<3>(lm), lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight);
-        break;
-    }
-    out = leg;
+    out = constant(model, index);
+    out.mount_trig();
     return true;
   }
 
-  //! from_model()'s leg as a constant (a firmware's model is one): the same
-  //! conversions, evaluated at compile time, but for the mount's cos and
-  //! sin, which are left 0 (cos() and sin() are not constant expressions):
-  //! mounted() gives them at run time, and the result is from_model()'s leg
-  //! bit for bit. An index past the legs gives the default leg.
+  //! from_model()'s leg as a constant (a firmware's model is one), but for
+  //! the mount's cos and sin, which are left 0 (cos() and sin() are not
+  //! constant expressions): mount_trig() gives them at run time. An index
+  //! past the legs gives the default leg.
   static constexpr AnyLeg constant(const RobotModel& model, uint8_t index) {
     return index >= model.leg_count || index >= kMaxLegs ? AnyLeg(LegKind::kSprawl, BodySide::kLeft, LegMount<S>{Vec3<S>(), S(0), S(0), S(0)}, Legs())
                : AnyLeg(model.kind, model.legs[index].side,
@@ -268,7 +246,7 @@ class AnyLeg {
   static constexpr Vec3<S> vec_of(const Vec3<float>& v) {
     return Vec3<S>(scalar<S>(double(v.x)), scalar<S>(double(v.y)), scalar<S>(double(v.z)));
   }
-  // from_model()'s leg types, as constants.
+  // The leg types of `model`.
   static constexpr Legs constant_legs(const RobotModel& model, const LegModel& lm) {
     return model.kind == LegKind::kSprawl
                ? Legs(SprawlLeg<S>::make(scalar<S>(model.links.l1_mm), scalar<S>(model.links.l2_mm), limits_of<2>(lm)),

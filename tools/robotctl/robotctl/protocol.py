@@ -48,6 +48,8 @@ ERROR_CODES = {
     34: "no imu",
     35: "not standing still",
     36: "not level",
+    37: "servos do not fit the firmware",
+    38: "no gait defaults for the model",
 }
 
 Value = Union[int, float, str]

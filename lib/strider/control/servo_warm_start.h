@@ -1,0 +1,48 @@
+//! A servo stage's warm start: taking over the pulses that the boards'
+//! outputs already drive (after an MCU reset the boards kept running
+//! through, or a board that answers again) instead of switching them off.
+#ifndef STRIDER_CONTROL_SERVO_WARM_START_H
+#define STRIDER_CONTROL_SERVO_WARM_START_H
+
+#include <stdint.h>
+
+#include "servo_boards.h"
+#include "servo_tick_map.h"
+
+namespace strider {
+
+//! For each of the `count` joints of `map` on a board in board_mask:
+//! words[ch] is channel ch's OFF word, ON 0, kPcaFullOff set for no pulse. A
+//! joint whose output holds a pulse within the joint's limits goes on from
+//! it (ticks[k]): no relax, and its leg moves from there (slew-limited) once
+//! the soft start reaches it. Any other is switched off (ticks[k] = off), to
+//! get its first pulse at its leg's turn. The limits' ticks are known only
+//! when the map holds every joint (`fast`: every built-in model); otherwise
+//! nothing is taken as held. Returns the joints that hold a pulse.
+template <typename Map, typename Output>
+uint8_t adopt_held_outputs(const Map& map, bool fast, uint8_t count, uint16_t* ticks, uint16_t off, Output& out,
+                           const uint16_t* words, uint8_t channels, uint8_t board_mask) {
+  uint8_t held = 0;
+  for (uint8_t k = 0; k < count; ++k) {
+    const uint8_t ch = map.channel(k);
+    if (!(board_mask & board_bit(board_of_channel(ch)))) continue;
+    const uint16_t w = ch < channels ? words[ch] : kPcaFullOff;
+    bool inside = false;
+    if (fast && w < kPcaFullOff) {
+      const auto j = map.joint(k);
+      inside = w >= j.lo_ticks && w <= j.hi_ticks;
+    }
+    if (inside) {
+      ticks[k] = w;
+      ++held;
+    } else {
+      ticks[k] = off;
+      out.relax(ch);
+    }
+  }
+  return held;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_CONTROL_SERVO_WARM_START_H

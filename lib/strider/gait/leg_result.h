@@ -1,0 +1,73 @@
+//! What the walker reports per leg each tick (LegResult): the joints, the
+//! status and the contact, and for host tools (a profile's kFeet) the
+//! target, the foot reached, the IK's own status and the clamp:
+//! - the foot target in the body frame after the body pose [mm];
+//! - what it had to clamp: a 2-DOF leg's target is first moved onto the
+//!   leg's reachable set (reach_projection.h) and clamp_mm says by how much;
+//! - the joints [rad] from IK of that target, and the IK's own status (never
+//!   hidden: kUnreachable keeps the previous joints and says so);
+//! - status = the worse of the IK status and kClamped when the projection
+//!   moved a foot on the ground by more than kClampToleranceMm (the foot
+//!   slides: a sprawling leg moving along its own direction, a planar leg
+//!   asked to move sideways) or moved a foot in the air up or down. A 2-DOF
+//!   foot in the air only keeps its height and direction: its reach follows
+//!   from its joints (a sprawling leg's foot swings outward as the knee lifts
+//!   it, seed 000 section 2.4), which is not reported as a clamp.
+#ifndef STRIDER_GAIT_LEG_RESULT_H
+#define STRIDER_GAIT_LEG_RESULT_H
+
+#include "../kinematics/any_leg.h"
+
+namespace strider {
+
+//! A 2-DOF foot moved by more than this counts as clamped [mm].
+constexpr double kClampToleranceMm = 0.5;
+
+//! What a LegResult keeps for host tools (kFeet).
+template <typename S, bool kFeet>
+struct LegFeet {
+  Vec3<S> target_mm;                //!< engine target, body frame [mm]
+  Vec3<S> foot_mm;                  //!< foot the joints reach, body frame [mm]
+  IkStatus ik_status;               //!< IK of the projected target
+  S clamp_mm;                       //!< how far the projection moved the target [mm]
+};
+template <typename S>
+struct LegFeet<S, false> {};
+//! Where Walker::tick() keeps a leg's target and foot when its result does not (!kFeet).
+template <typename S, bool kFeet>
+struct LegScratch {};
+template <typename S>
+struct LegScratch<S, false> {
+  Vec3<S> target_mm;
+  Vec3<S> foot_mm;
+};
+
+template <typename S, bool kFeet = true>
+struct LegResult : LegFeet<S, kFeet> {
+  typename AnyLeg<S>::Joints q;     //!< joints, seed convention [rad]
+  IkStatus status;                  //!< worst of the IK status and the clamp
+  bool contact;                     //!< foot on the ground
+};
+
+//! Where the walker keeps a leg's body-frame target and reached foot: in
+//! its result (kFeet) or in the scratch; what only a result with feet keeps.
+template <typename S>
+Vec3<S>& target_of(LegFeet<S, true>& r, LegScratch<S, true>&) { return r.target_mm; }
+template <typename S>
+Vec3<S>& target_of(LegFeet<S, false>&, LegScratch<S, false>& s) { return s.target_mm; }
+template <typename S>
+Vec3<S>& foot_of(LegFeet<S, true>& r, LegScratch<S, true>&) { return r.foot_mm; }
+template <typename S>
+Vec3<S>& foot_of(LegFeet<S, false>&, LegScratch<S, false>& s) { return s.foot_mm; }
+template <typename S>
+void set_ik_status(LegFeet<S, true>& r, IkStatus ik) { r.ik_status = ik; }
+template <typename S>
+void set_ik_status(LegFeet<S, false>&, IkStatus) {}
+template <typename S>
+void set_clamp(LegFeet<S, true>& r, S clamp_mm) { r.clamp_mm = clamp_mm; }
+template <typename S>
+void set_clamp(LegFeet<S, false>&, S) {}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_LEG_RESULT_H

@@ -1,0 +1,43 @@
+//! A build's profile: the compile-time choices that size and shape its
+//! walker, servo stage and RobotApp, given to them as one template argument.
+//! HostProfile is every host build's default; a firmware's is its model's
+//! (control/firmware_profile.h), which also holds the model's constants in flash.
+#ifndef STRIDER_ROBOTS_BUILD_PROFILE_H
+#define STRIDER_ROBOTS_BUILD_PROFILE_H
+
+#include <stdint.h>
+
+#include "robot_model.h"
+
+namespace strider {
+
+//! The host's profile, for any model: state for kWalkerLegs legs, an IK
+//! solver per leg, leg results with their feet, a servo tick-map range per
+//! joint, and everything built from the model at start-up.
+template <typename S>
+struct HostProfile {
+  using Scalar = S;
+  static constexpr uint8_t kLegs = kWalkerLegs;
+  //! Leg solvers: as many as legs (an AnyLeg per leg), or fewer for legs of
+  //! one geometry sharing one (walker_legs.h).
+  static constexpr uint8_t kSolvers = kLegs;
+  //! The walker's leg results keep each leg's target, reached foot, IK
+  //! status and clamp (host tools and tests read them).
+  static constexpr bool kFeet = true;
+  //! Servo tick-map ranges shared by the joints of a slot (0: one per
+  //! joint; the joints per leg for legs of one geometry, servo_tick_map.h).
+  static constexpr uint8_t kTickSlots = 0;
+  static constexpr uint8_t kJoints = kMaxLegs * kMaxLegDof;  //!< most servos driven
+  //! Which of the model's constants the profile holds (FirmwareProfile's
+  //! kGaitConfig, kWalkerLegsInFlash, kChannels, kDefaultGait, kAvoidClearMm);
+  //! the others are built from the model at start-up.
+  static constexpr bool kStoredConfig = false;
+  static constexpr bool kStoredLegs = false;
+  static constexpr bool kStoredChannels = false;
+  static constexpr bool kStoredGait = false;
+  static constexpr uint16_t kAvoidClearMm = 0;  //!< 0: avoid_clear_mm() of the model at start-up
+};
+
+}  // namespace strider
+
+#endif  // STRIDER_ROBOTS_BUILD_PROFILE_H
