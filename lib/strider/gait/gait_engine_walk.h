@@ -1,55 +1,69 @@
-//! GaitEngine's walking tick, body shift and margin (kept apart from the
-//! class declaration in gait_engine.h so that each file reads on its own;
-//! include gait_engine.h, not this file).
-#ifndef STRIDER_GAIT_GAIT_ENGINE_STEP_H
-#define STRIDER_GAIT_GAIT_ENGINE_STEP_H
+//! GaitEngine's walking tick: the phase clock, the feet on the ground, their
+//! lift-offs and touch-downs, the feet in the air, the body shift and the
+//! margin (include gait_engine.h, not this file).
+#ifndef STRIDER_GAIT_GAIT_ENGINE_WALK_H
+#define STRIDER_GAIT_GAIT_ENGINE_WALK_H
 
 #include "gait_engine.h"
 
 namespace strider {
 
-template <typename S>
-void GaitEngine<S>::step_walk(S dt) {
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::start_walking() {
+  const VelocityPlan<S>& to = ramp_.plan;
+  const bool relabel = phases_.base.relabel_by_direction && (to.vx_mm_s != S(0) || to.vy_mm_s != S(0));
+  int8_t quarter = 0;
+  if (relabel) {
+    // The quadrant of the direction of travel (seed 000 section 3.3).
+    const S ax = abs(to.vx_mm_s), ay = abs(to.vy_mm_s);
+    quarter = ax >= ay ? (to.vx_mm_s >= S(0) ? 0 : 2) : (to.vy_mm_s > S(0) ? 1 : 3);
+  }
+  // configure(), set_gait() and the last start loaded the table that
+  // relabel and quarter name: the same one again (the usual start) keeps
+  // its phases and fractions (the duty's conversions cost ~5,000 cycles in
+  // Fixed, in the tick that also starts the ramp and the first swings).
+  if (relabel != phases_.relabel || quarter != phases_.quarter) {
+    phases_.relabel = relabel;
+    phases_.quarter = quarter;
+    load_table(phases_.table());
+  } else {
+    invalidate_touchdown();
+  }
+  clock_.reset(phases_.start_phase);
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
+    pending_[i] = false;
+    // Each foot starts as if it had been down since its last touch-down
+    // in the table (negative for a foot the table has in the air: its
+    // first stance runs to its offset), so none looks overdue.
+    stance_elapsed_[i] =
+        int32_t(kPhaseOne - phases_.swing_len) - int32_t(Phase16(phases_.offset[i] - phases_.start_phase));
+  }
+  window_.open = false;
+  window_.group = ShiftWindow<S>::kNoGroup;
+  state_ = GaitState::kWalking;
+}
+
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::step_walk(S dt) {
   // A steady command (the ramp over, the products known) and its landing
-  // stride known: step_command() and update_landing() have nothing to do.
-  if (ramp_ < S(1) || !vel_fresh_) step_command(dt);
-  if (!land_fresh_) update_landing();
-  StepCache& sc = step_cache_;
-  if (!(sc.dt == dt)) sc = StepCache{dt, BodyStep<S>::make(vx_, vy_, wz_, dt)};
+  // stride known: nothing to ramp or place.
+  if (ramp_.t < S(1) || !ramp_.vel_fresh) ramp_.step(dt);
+  if (!ramp_.land_fresh && ramp_.update_landing(phases_.duty, phases_.inv_stance)) invalidate_touchdown();
+  typename SpeedRamp<S>::StepCache& sc = ramp_.step_cache;
+  if (!(sc.dt == dt)) sc = typename SpeedRamp<S>::StepCache{dt, BodyStep<S>::make(ramp_.vx, ramp_.vy, ramp_.wz, dt)};
   // Field by field: avr-gcc copies the whole struct with a byte loop.
   BodyStep<S> step{sc.step.dx_mm, sc.step.dy_mm, sc.step.dyaw, sc.step.cos_yaw, sc.step.sin_yaw};
   // A foot on the ground at the edge of its reach that this step would take
   // farther out holds the body for this tick (it lifts as soon as it can).
   held_ = false;
-  bool edge[kWalkerLegs];  // legs 0 to leg_count - 1, all set here
+  bool edge[kLegs];  // legs 0 to leg_count - 1, all set here
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
   for (uint8_t i = 0; i < cfg_.leg_count && !held_; ++i) {
     if (!edge[i]) continue;
-    held_ = step_takes_out(i, step);
+    held_ = ReachEdge<S, kLegs>::takes_out(foot_[i], cfg_.home[i], step);
   }
   if (held_) step = BodyStep<S>::none();
-  // Odometry: the step in the world frame; heading kept as cos/sin,
-  // renormalised by one Newton step (no trig per tick).
-  // While the body does not turn, the world step repeats: kept, not recomputed.
-  if (!(step.dyaw == S(0) && step.dx_mm == odo_dx_ && step.dy_mm == odo_dy_)) {
-    odo_dx_ = step.dx_mm;
-    odo_dy_ = step.dy_mm;
-    odo_wx_ = odo_c_ * step.dx_mm - odo_s_ * step.dy_mm;
-    odo_wy_ = odo_s_ * step.dx_mm + odo_c_ * step.dy_mm;
-  }
-  // Sums in place (scalar.h's add_inline: the same bits as operator+).
-  odo_x_ = add_inline(odo_x_, odo_wx_);
-  odo_y_ = add_inline(odo_y_, odo_wy_);
-  odo_yaw_ = add_inline(odo_yaw_, step.dyaw);
-  if (step.dyaw != S(0)) {
-    odo_dx_ = odo_dy_ = S(0);  // the heading changes: recompute next tick
-    const S c = odo_c_ * step.cos_yaw - odo_s_ * step.sin_yaw;
-    const S s = odo_s_ * step.cos_yaw + odo_c_ * step.sin_yaw;
-    constexpr S half = scalar<S>(0.5);
-    const S k = (S(3) - (c * c + s * s)) * half;
-    odo_c_ = c * k;
-    odo_s_ = s * k;
-  }
+  odo_.add(step);
 
   const uint8_t n = cfg_.leg_count;
   bool changed = step_ground(step, dt);
@@ -59,12 +73,12 @@ void GaitEngine<S>::step_walk(S dt) {
     for (uint8_t i = 0; i < n; ++i) {
       if (!contact_[i]) continue;
       const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
-      foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * inv_stance_);
+      foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * phases_.inv_stance);
     }
   }
   if (changed) support_dirty_ = true;
   // A gait without body shift and no shift left (a trot, a tripod): nothing to move, no call.
-  if (base_.shift_body || shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) step_shift(dt);
+  if (phases_.base.shift_body || shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) step_shift(dt);
 
   if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
   if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
@@ -75,9 +89,9 @@ void GaitEngine<S>::step_walk(S dt) {
   }
 }
 
-template <typename S>
-bool GaitEngine<S>::step_ground(const BodyStep<S>& step, S dt) {
-  clock_.advance(dt, hz_);
+template <typename S, uint8_t kLegs>
+bool GaitEngine<S, kLegs>::step_ground(const BodyStep<S>& step, S dt) {
+  clock_.advance(dt, ramp_.hz);
   const uint32_t delta = Phase16(clock_.now() - clock_.before());
   const uint8_t n = cfg_.leg_count;
   bool changed = false;
@@ -90,13 +104,13 @@ bool GaitEngine<S>::step_ground(const BodyStep<S>& step, S dt) {
   // the ground move on their own, so the order of the legs does not matter).
   for (uint8_t i = 0; i < n; ++i, ++foot, ++elapsed) {
     if (!contact_[i]) {
-      swing_elapsed_[i] += delta;
-      if (swing_elapsed_[i] < leg_swing_len_[i]) continue;
-      foot->x = target_[i].x;
-      foot->y = target_[i].y;
+      swing_.elapsed[i] += delta;
+      if (swing_.elapsed[i] < swing_.len[i]) continue;
+      foot->x = swing_.target[i].x;
+      foot->y = swing_.target[i].y;
       foot->z = cfg_.home[i].z;
       contact_[i] = true;
-      *elapsed = int32_t(swing_elapsed_[i] - leg_swing_len_[i]);
+      *elapsed = int32_t(swing_.elapsed[i] - swing_.len[i]);
       changed = true;
       continue;
     }
@@ -114,18 +128,18 @@ bool GaitEngine<S>::step_ground(const BodyStep<S>& step, S dt) {
   return changed;
 }
 
-template <typename S>
-bool GaitEngine<S>::step_lift(const bool* edge) {
+template <typename S, uint8_t kLegs>
+bool GaitEngine<S, kLegs>::step_lift(const bool* edge) {
   const uint8_t n = cfg_.leg_count;
   bool changed = false;
-  // Lift-offs when the clock passes a foot's offset.
   for (uint8_t i = 0; i < n; ++i) {
     if (!contact_[i]) continue;
-    const bool crossed = clock_.crossed(offset_[i]);
+    const bool crossed = clock_.crossed(phases_.offset[i]);
     // Lift at the offset; or, after a gait change that made a foot miss its
     // offset, as soon as its stance is a sixteenth of a cycle overdue; or
     // when the foot reaches the edge of its stride (a command change).
-    if (crossed || stance_elapsed_[i] >= int32_t(kPhaseOne - swing_len_ + kPhaseOne / 16) || (edge[i] && at_edge(i)))
+    if (crossed || stance_elapsed_[i] >= int32_t(kPhaseOne - phases_.swing_len + kPhaseOne / 16) ||
+        (edge[i] && at_edge(i)))
       pending_[i] = true;
     if (!pending_[i]) continue;
     if (done(i)) {
@@ -139,27 +153,28 @@ bool GaitEngine<S>::step_lift(const bool* edge) {
   return changed;
 }
 
-template <typename S>
-void GaitEngine<S>::lift_foot(uint8_t i, bool crossed) {
-  lift_[i] = foot_[i];
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::lift_foot(uint8_t i, bool crossed) {
+  swing_.lift[i] = foot_[i];
   contact_[i] = false;
   pending_[i] = false;
-  leg_swing_len_[i] = swing_len_;
-  leg_inv_swing_[i] = inv_swing_;
-  leg_shape_[i] = cfg_.shape;
-  swing_elapsed_[i] = crossed ? uint32_t(Phase16(clock_.now() - offset_[i])) : 0u;
-  Vec3<S>& t = target_[i];
+  swing_.len[i] = phases_.swing_len;
+  swing_.inv_swing[i] = phases_.inv_swing;
+  swing_.shape[i] = cfg_.shape;
+  swing_.elapsed[i] = crossed ? uint32_t(Phase16(clock_.now() - phases_.offset[i])) : 0u;
+  Vec3<S>& t = swing_.target[i];
   touchdown_xy(i, t.x, t.y);
   t.z = cfg_.home[i].z;
-  settled_[i] = true;
+  swing_.settled[i] = true;
   // Only the semicircle's apex depends on the step's length (a square root).
-  apex_[i] = cfg_.shape == SwingShape::kSemicircle
-                 ? swing_apex_mm(cfg_.shape, hypot(t.x - lift_[i].x, t.y - lift_[i].y), cfg_.step_height_mm)
-                 : cfg_.step_height_mm;
+  const Vec3<S>& l = swing_.lift[i];
+  swing_.apex[i] = cfg_.shape == SwingShape::kSemicircle
+                       ? swing_apex_mm(cfg_.shape, hypot(t.x - l.x, t.y - l.y), cfg_.step_height_mm)
+                       : cfg_.step_height_mm;
 }
 
-template <typename S>
-void GaitEngine<S>::step_swing(S dt) {
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::step_swing(S dt) {
   const uint8_t n = cfg_.leg_count;
   // Feet in the air follow the swing shape toward a touch-down point that
   // moves at most max_step per tick (command and gait changes).
@@ -173,61 +188,44 @@ void GaitEngine<S>::step_swing(S dt) {
   bool sp_known = false, lift_known = false;  // lift_known: sp_lift = sp_apex * sp.w
   for (uint8_t i = 0; i < n; ++i) {
     if (contact_[i]) continue;
-    if (!settled_[i]) settle_target(i, max_step);
-    if (!sp_known || swing_elapsed_[i] != sp_elapsed || leg_inv_swing_[i] != sp_inv || leg_shape_[i] != sp_shape) {
-      sp_elapsed = swing_elapsed_[i];
-      sp_inv = leg_inv_swing_[i];
-      sp_shape = leg_shape_[i];
+    if (!swing_.settled[i]) settle_target(i, max_step);
+    if (!sp_known || swing_.elapsed[i] != sp_elapsed || swing_.inv_swing[i] != sp_inv ||
+        swing_.shape[i] != sp_shape) {
+      sp_elapsed = swing_.elapsed[i];
+      sp_inv = swing_.inv_swing[i];
+      sp_shape = swing_.shape[i];
       sp = swing_point(sp_shape, phase_to<S>(sp_elapsed) * sp_inv);
       sp_known = true;
       lift_known = false;
     }
-    if (!lift_known || apex_[i] != sp_apex) {
-      sp_apex = apex_[i];
+    if (!lift_known || swing_.apex[i] != sp_apex) {
+      sp_apex = swing_.apex[i];
       sp_lift = sp_apex * sp.w;
       lift_known = true;
     }
-    // A foot that lifted from the ground line (no stance depth) keeps its
-    // height but for the lift: no product for the zero difference (without
-    // the stance depth built in, every foot lifts from there).
-    const S dz = sub_inline(cfg_.home[i].z, lift_[i].z);
-    foot_[i].x = add_inline(lift_[i].x, sub_inline(target_[i].x, lift_[i].x) * sp.u);
-    foot_[i].y = add_inline(lift_[i].y, sub_inline(target_[i].y, lift_[i].y) * sp.u);
-    foot_[i].z = add_inline(dz == S(0) ? lift_[i].z : add_inline(lift_[i].z, dz * sp.u), sp_lift);
+    swing_.place(i, foot_[i], cfg_.home[i].z, sp.u, sp_lift);
   }
 }
 
-template <typename S>
-bool GaitEngine<S>::step_takes_out(uint8_t i, const BodyStep<S>& step) const {
-  const Vec3<S> next = step.move_ground_point(foot_[i]);
-  const S before = abs(foot_[i].x - cfg_.home[i].x) + abs(foot_[i].y - cfg_.home[i].y);
-  const S after = abs(next.x - cfg_.home[i].x) + abs(next.y - cfg_.home[i].y);
-  return after > before;
-}
-
-template <typename S>
-void GaitEngine<S>::settle_target(uint8_t i, S max_step) {
-  // Every tick of a ramp, for every foot in the air: x and y into place,
-  // sums in place (scalar.h: the same bits as the operators).
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::settle_target(uint8_t i, S max_step) {
+  // Every tick of a ramp, for every foot in the air.
   S wx, wy;
   touchdown_xy(i, wx, wy);
-  Vec3<S>& t = target_[i];
-  const S lo = neg_inline(max_step);
-  t.x = add_inline(t.x, clamp(sub_inline(wx, t.x), lo, max_step));
-  t.y = add_inline(t.y, clamp(sub_inline(wy, t.y), lo, max_step));
-  settled_[i] = t.x == wx && t.y == wy;
+  swing_.settle(i, wx, wy, max_step);
 }
 
-template <typename S>
-void GaitEngine<S>::step_shift(S dt) {
-  if (!base_.shift_body) {  // relabelling keeps it
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::step_shift(S dt) {
+  if (!phases_.base.shift_body) {  // relabelling keeps it
     // Back to no shift (after a gait change); once there, nothing to move.
     if (shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) shift_.step_toward(S(0), S(0), cfg_.shift_speed_mm_s * dt);
     return;
   }
   const S max_step = cfg_.shift_speed_mm_s * dt;
   const uint8_t n = cfg_.leg_count;
-  S ref_x = cfg_.com_x_mm + pose_.translation_mm.x, ref_y = cfg_.com_y_mm + pose_.translation_mm.y;
+  const Vec3<S>& pose_t = posture_.pose.translation_mm;
+  S ref_x = cfg_.com_x_mm + pose_t.x, ref_y = cfg_.com_y_mm + pose_t.y;
   bool any_swing = false;
   for (uint8_t i = 0; i < n; ++i)
     if (!contact_[i]) any_swing = true;
@@ -237,45 +235,47 @@ void GaitEngine<S>::step_shift(S dt) {
   // where it will be at lift-off, blended in below.
   const SupportPolygon<S>* poly = &support_;
   S t = S(0);
+  ShiftWindow<S>& w = window_;
+  constexpr uint8_t kNoGroup = ShiftWindow<S>::kNoGroup;
   if (any_swing) {
-    in_window_ = false;
+    w.open = false;
   } else {
     const Phase16 now = clock_.now();
-    if (!in_window_) {
-      in_window_ = true;
+    if (!w.open) {
+      w.open = true;
       shift_.begin_window();
-      window_start_ = now;
-      window_group_ = kNoGroup;
+      w.start = now;
+      w.group = kNoGroup;
     }
     // The group that lifts next: the nearest offset among feet still to step.
     uint8_t lead = kNoGroup;
     Phase16 ahead = 0;
     for (uint8_t i = 0; i < n; ++i) {
       if (done(i)) continue;
-      const Phase16 d = pending_[i] ? Phase16(0) : Phase16(offset_[i] - now);
+      const Phase16 d = pending_[i] ? Phase16(0) : Phase16(phases_.offset[i] - now);
       if (lead == kNoGroup || d < ahead) {
         lead = i;
         ahead = d;
       }
     }
-    if (lead != window_group_) {
-      window_group_ = lead;
+    if (lead != w.group) {
+      w.group = lead;
       if (lead != kNoGroup) {
-        bool stays[kWalkerLegs];
-        for (uint8_t i = 0; i < n; ++i) stays[i] = contact_[i] && offset_[i] != offset_[lead];
-        next_support_.build(foot_, stays, n, cfg_.foot_radius_mm, cfg_.unit_shift);
-        const Phase16 len = Phase16(Phase16(now + ahead) - window_start_);
-        window_inv_ = len == 0 ? S(0) : S(1) / phase_to<S>(len);
+        bool stays[kLegs];
+        for (uint8_t i = 0; i < n; ++i) stays[i] = contact_[i] && phases_.offset[i] != phases_.offset[lead];
+        w.next_support.build(foot_, stays, n, cfg_.foot_radius_mm, cfg_.unit_shift);
+        const Phase16 len = Phase16(Phase16(now + ahead) - w.start);
+        w.inv = len == 0 ? S(0) : S(1) / phase_to<S>(len);
       }
     }
     poly = nullptr;
     if (lead != kNoGroup) {
-      poly = &next_support_;
+      poly = &w.next_support;
       const S cycles = phase_to<S>(ahead);  // until it lifts
-      ref_x = ref_x + now_s_.x * cycles;
-      ref_y = ref_y + now_s_.y * cycles;
+      ref_x = ref_x + ramp_.now.x * cycles;
+      ref_y = ref_y + ramp_.now.y * cycles;
     }
-    t = window_inv_ == S(0) ? S(1) : phase_to<S>(Phase16(now - window_start_)) * window_inv_;
+    t = w.inv == S(0) ? S(1) : phase_to<S>(Phase16(now - w.start)) * w.inv;
   }
   S cx = S(0), cy = S(0);
   if (poly != nullptr) BodyShift<S>::correction(*poly, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, cx, cy);
@@ -287,8 +287,8 @@ void GaitEngine<S>::step_shift(S dt) {
   shift_.step_toward(clamp(tx, -b, b), clamp(ty, -b, b), max_step);
 }
 
-template <typename S>
-void GaitEngine<S>::update_margin() const {
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::update_margin() const {
   margin_fresh_ = true;
   const BodyPose<S> bp = body_pose();
   S cx = bp.translation_mm.x + cfg_.com_x_mm, cy = bp.translation_mm.y + cfg_.com_y_mm;
@@ -304,4 +304,4 @@ void GaitEngine<S>::update_margin() const {
 
 }  // namespace strider
 
-#endif  // STRIDER_GAIT_GAIT_ENGINE_STEP_H
+#endif  // STRIDER_GAIT_GAIT_ENGINE_WALK_H
