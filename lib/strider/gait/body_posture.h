@@ -1,8 +1,10 @@
-//! BodyPosture: the body's height between sitting and standing, and the
-//! user's pose offsets moving to their goal at a limited rate.
+//! BodyPosture: the body's height between sitting and standing, the user's
+//! pose offsets moving to their goal at a limited rate, and the body pose
+//! they and the body shift make.
 #ifndef STRIDER_GAIT_BODY_POSTURE_H
 #define STRIDER_GAIT_BODY_POSTURE_H
 
+#include "../kinematics/body_pose.h"
 #include "../kinematics/leg_ik_common.h"
 #include "body_offsets.h"
 #include "body_shift.h"
@@ -26,6 +28,19 @@ struct BodyPosture {
   S drop_mm(const GaitConfig<S>& cfg) const {
     // Standing (progress 1): no drop, and no products for it.
     return progress >= S(1) ? S(0) : cfg.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress));
+  }
+
+  //! The body in the stance frame: shift + offsets + sit/stand height.
+  BodyPose<S> body_pose(const BodyShift<S>& shift, const GaitConfig<S>& cfg) const {
+    return BodyPose<S>::make(Vec3<S>(shift.x_mm() + pose.translation_mm.x, shift.y_mm() + pose.translation_mm.y,
+                                     pose.translation_mm.z - drop_mm(cfg)),
+                             pose.roll_rad, pose.pitch_rad, pose.yaw_rad);
+  }
+  //! body_pose()'s translation (sums in place: the same bits).
+  Vec3<S> translation(const BodyShift<S>& shift, const GaitConfig<S>& cfg) const {
+    const S drop = drop_mm(cfg);
+    const Vec3<S>& t = pose.translation_mm;
+    return Vec3<S>(add_inline(shift.x_mm(), t.x), add_inline(shift.y_mm(), t.y), sub_inline(t.z, drop));
   }
 
   //! All of roll, pitch and yaw zero (integer tests of float bits).

@@ -1,29 +1,19 @@
 //! GaitEngine: per tick, the foot targets of a legged robot walking a gait
-//! table at a commanded velocity (time is a parameter: tick(dt)).
-//!
-//! Frames: feet are in the stance frame (kinematics/body_pose.h: the body
-//! frame of the neutral standing pose); body_pose() says where the body is
-//! in it (body shift, height, sit/stand, the user's pose offsets).
-//!
-//! Each tick: the command ramps toward its plan (speed_ramp.h); the body
-//! moves along the arc of v dt and w dt, and feet on the ground move by the
-//! inverse (stance.h): they stay put on the ground and reproduce the command
-//! exactly. A foot lifts when the phase clock passes its offset
-//! (table_phases.h), if enough feet stay down; a foot in the air follows the
-//! swing shape (swing_feet.h) from where it lifted to its touch-down point
-//! (touchdown.h) and lands when its swing time is over. Walking starts from
-//! standing and stops back to it: with the command at zero a foot away from
-//! home takes one more step and a foot at home stays down, until every foot
-//! is home and the body shift is back to zero. Gait changes keep feet in the
-//! air on their old swing, so no foot jumps. Body shift for walk and crawl:
-//! body_shift.h. The walking tick: gait_engine_walk.h.
+//! table at a commanded velocity (time is a parameter: tick(dt)). Feet are
+//! in the stance frame (kinematics/body_pose.h); body_pose() says where the
+//! body is in it. The command ramps to its plan (speed_ramp.h); feet on the
+//! ground move by the inverse of the body's step (stance.h); a foot lifts
+//! when the phase clock passes its offset (table_phases.h) if enough feet
+//! stay down, swings (swing_feet.h) to its touch-down point (touchdown.h)
+//! and lands when its swing time is over. With the command at zero, a foot
+//! away from home takes one more step until every foot is home and the body
+//! shift (body_shift.h) is back to zero. Gait changes keep feet in the air
+//! on their old swing. Set-up and walking tick: gait_engine_walk.h; body
+//! shift and margin: gait_engine_balance.h.
 #ifndef STRIDER_GAIT_GAIT_ENGINE_H
 #define STRIDER_GAIT_GAIT_ENGINE_H
 
-#include "../kinematics/body_pose.h"
 #include "body_posture.h"
-#include "body_shift.h"
-#include "gait_config.h"
 #include "gait_state.h"
 #include "odometry.h"
 #include "reach_edge.h"
@@ -44,43 +34,20 @@ class GaitEngine {
         window_(), posture_() {}
 
   //! Takes the configuration and a gait; the robot stands (or sits).
-  void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false) {
-    if (&config != &cfg_) cfg_ = config;
-    phases_.base = gait;
-    phases_.relabel = false;  // table() is the gait as given until the robot walks
-    phases_.quarter = 0;
-    load_table(gait);
-    for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
-      foot_[i] = cfg_.home[i];
-      contact_[i] = true;
-      pending_[i] = false;
-    }
-    state_ = sitting ? GaitState::kSitting : GaitState::kStanding;
-    posture_.reset(sitting);
-    ramp_.reset(cfg_.limits.min_hz);
-    shift_.reset();
-    odo_.reset();
-    support_dirty_ = true;
-    margin_fresh_ = false;
-    edge_.configure(cfg_);
-  }
+  void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false);
   //! The same with the configuration built in place (fill_gait_config()).
   void configure(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params, SwingShape shape,
                  const GaitTable& gait, bool sitting = false) {
     fill_gait_config(cfg_, model, legs, params, shape);
     configure(cfg_, gait, sitting);
   }
-  //! The same from a configuration in flash (stored_gait_config(): a
-  //! firmware's constant), copied into place and, without its ramps
-  //! (float: stored_ramps_given()), finished there (finish_gait_config()):
-  //! no copy on the stack.
+  //! The same from a configuration in flash (stored_gait_config()), copied
+  //! into place and finished there (finish_gait_config()) if its ramps are not given.
   void configure_stored(const GaitConfig<S>* flash_config, const GaitTable& gait, bool sitting = false) {
     flash_copy(&cfg_, flash_config, sizeof cfg_);
     finish_stored(cfg_);
     configure(cfg_, gait, sitting);
   }
-
-  // ---- commands --------------------------------------------------------------
 
   //! Velocity (vx, vy [mm/s], wz [rad/s], body frame) at speed_pct [0, 100]
   //! percent. Clamped to the robot's limits (limited() tells). A non-zero
@@ -109,14 +76,7 @@ class GaitEngine {
   //! Keep stepping in place when the command is zero (default: stop).
   void set_step_in_place(bool on) { step_in_place_ = on; }
   //! Changes the gait, also while walking (feet in the air finish their swing).
-  void set_gait(const GaitTable& gait) {
-    const S old_duty = phases_.duty;
-    phases_.base = gait;
-    load_table(phases_.relabel ? gait_table::relabeled(gait, phases_.quarter) : gait);
-    ramp_.keep_travel(old_duty, phases_.duty);
-    ramp_.step(S(0));
-    replan();
-  }
+  void set_gait(const GaitTable& gait);
   void stand_up() { if (state_ == GaitState::kSitting) state_ = GaitState::kStandingUp; }
   //! Sits down from standing; while walking, stops first.
   void sit_down() {
@@ -128,8 +88,6 @@ class GaitEngine {
     posture_.goal = o;
     posture_.at_goal = false;  // step_pose() compares
   }
-
-  // ---- per tick --------------------------------------------------------------
 
   void tick(S dt) {
     if (!(dt > S(0))) return;
@@ -153,8 +111,6 @@ class GaitEngine {
     margin_fresh_ = false;
   }
 
-  // ---- outputs ---------------------------------------------------------------
-
   GaitState state() const { return state_; }
   uint8_t leg_count() const { return cfg_.leg_count; }
   const Vec3<S>& foot(uint8_t i) const { return foot_[i]; }  //!< stance frame [mm]
@@ -162,25 +118,15 @@ class GaitEngine {
   bool contact(uint8_t i) const { return contact_[i]; }
   const bool* contacts() const { return contact_; }
   //! The body in the stance frame: shift + offsets + sit/stand height.
-  BodyPose<S> body_pose() const {
-    const BodyOffsets<S>& p = posture_.pose;
-    return BodyPose<S>::make(Vec3<S>(shift_.x_mm() + p.translation_mm.x, shift_.y_mm() + p.translation_mm.y,
-                                     p.translation_mm.z - posture_.drop_mm(cfg_)),
-                             p.roll_rad, p.pitch_rad, p.yaw_rad);
-  }
+  BodyPose<S> body_pose() const { return posture_.body_pose(shift_, cfg_); }
   //! body_pose()'s translation, and whether its roll, pitch and yaw are all
   //! zero: a walker with a level body needs no more of the pose.
-  Vec3<S> body_translation() const {
-    const S drop = posture_.drop_mm(cfg_);
-    const Vec3<S>& t = posture_.pose.translation_mm;
-    return Vec3<S>(add_inline(shift_.x_mm(), t.x), add_inline(shift_.y_mm(), t.y), sub_inline(t.z, drop));
-  }
+  Vec3<S> body_translation() const { return posture_.translation(shift_, cfg_); }
   bool body_level() const { return posture_.level(); }
   S shift_x_mm() const { return shift_.x_mm(); }
   S shift_y_mm() const { return shift_.y_mm(); }
   //! Static stability margin of the CoM [mm] (stability.h), this tick;
-  //! computed when asked (once per tick), so a firmware that does not ask
-  //! does not pay for it.
+  //! computed when asked (once per tick): who does not ask does not pay.
   S margin_mm() const {
     if (!margin_fresh_) update_margin();
     return margin_;
@@ -192,19 +138,17 @@ class GaitEngine {
   S step_hz() const { return ramp_.hz; }
   //! True when the last command was scaled down to the robot's limits.
   bool limited() const { return ramp_.plan.limited; }
-  //! True when the body stood still this tick because a foot on the ground
-  //! was at the edge of its reach and could not lift (after abrupt changes).
+  //! True when a foot on the ground at the edge of its reach could not lift
+  //! and held the body still this tick (after abrupt changes).
   bool held() const { return held_; }
   const VelocityPlan<S>& target_plan() const { return ramp_.plan; }
-  //! Body odometry since configure(): position [mm] and heading [rad], and
-  //! the heading's cos and sin.
+  //! Body odometry since configure(): x, y [mm], heading [rad], its cos and sin.
   S odometry_x() const { return odo_.x; }
   S odometry_y() const { return odo_.y; }
   S odometry_yaw() const { return odo_.yaw; }
   S odometry_cos() const { return odo_.c; }
   S odometry_sin() const { return odo_.s; }
-  //! How far the body travels [mm] and turns [rad] if the command is set to
-  //! zero now (the ramp down).
+  //! How far the body travels [mm] and turns [rad] if the command goes to zero now.
   S stopping_distance_mm() const {
     return hypot(ramp_.now.x, ramp_.now.y) * ramp_.stop_cycles(cfg_, phases_.duty) / S(2);
   }
@@ -214,8 +158,7 @@ class GaitEngine {
   STRIDER_ALWAYS_INLINE bool beyond_edge(uint8_t i, const Vec3<S>& p) const { return edge_.beyond(cfg_, i, p); }
   //! The share of a leg's longest stride beyond which a foot is at its edge.
   static constexpr double edge_share() { return ReachEdge<S, kLegs>::kEdgeShare; }
-  //! The gait as walked: gait() relabelled for the direction of travel
-  //! (rebuilt on each call: the engine keeps the offsets only as phases).
+  //! The gait as walked: gait() relabelled for the direction of travel (rebuilt).
   GaitTable table() const { return phases_.table(); }
   //! The gait as given to configure() or set_gait() (table() may be relabelled).
   const GaitTable& gait() const { return phases_.base; }
@@ -245,13 +188,6 @@ class GaitEngine {
   }
   //! A foot that need not step any more (stopping, already home).
   bool done(uint8_t i) const { return at_rest() && near_home(i); }
-  bool may_lift(uint8_t i) const {
-    if (done(i)) return false;
-    uint8_t down = 0;
-    for (uint8_t k = 0; k < cfg_.leg_count; ++k)
-      if (contact_[k]) ++down;
-    return down > cfg_.min_support;
-  }
   bool at_edge(uint8_t i) const { return beyond_edge(i, foot_[i]); }
   //! Where foot i lands, x and y (z is home's), into place.
   STRIDER_ALWAYS_INLINE void touchdown_xy(uint8_t i, S& x, S& y) {
@@ -262,31 +198,21 @@ class GaitEngine {
     td_.fresh = false;
     swing_.unsettle();
   }
-  //! The support polygon of the feet down now (stability.h), built when
-  //! first needed after a lift-off or touch-down: gaits that do not shift
-  //! the body need it only for margin_mm().
-  void build_support() const {
-    support_.build(foot_, contact_, cfg_.leg_count, cfg_.foot_radius_mm, cfg_.unit_shift);
-    support_dirty_ = false;
-  }
 
-  // The walking tick (gait_engine_walk.h); the parts out of line keep their
-  // locals out of step_walk()'s stack frame (on the AVR, offsets past 63
-  // bytes cost extra) and the loops' registers.
+  // The walking tick (gait_engine_walk.h): its parts out of line keep their
+  // locals out of step_walk()'s frame (on the AVR, offsets past 63 bytes
+  // cost extra) and the loops' registers.
   void start_walking();
   void step_walk(S dt);
-  //! The clock, touch-downs and feet on the ground (moved by `step`); true
-  //! when a foot landed.
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
-  //! Lift-offs (edge: the feet at the edge of their reach before the step);
-  //! true when a foot lifted.
   STRIDER_NOINLINE bool step_lift(const bool* edge);
   STRIDER_NOINLINE void lift_foot(uint8_t i, bool crossed);
   STRIDER_NOINLINE void step_swing(S dt);
-  //! Moves foot i's touch-down point toward touchdown_xy(i) by at most max_step.
   STRIDER_NOINLINE void settle_target(uint8_t i, S max_step);
+  // Balance (gait_engine_balance.h).
   void step_shift(S dt);
   void update_margin() const;
+  void build_support() const;
 
   // Members without a default here are set by the constructor (zero).
   GaitConfig<S> cfg_;
@@ -319,5 +245,6 @@ class GaitEngine {
 }  // namespace strider
 
 #include "gait_engine_walk.h"
+#include "gait_engine_balance.h"
 
 #endif  // STRIDER_GAIT_GAIT_ENGINE_H

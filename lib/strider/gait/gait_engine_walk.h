@@ -1,12 +1,44 @@
-//! GaitEngine's walking tick: the phase clock, the feet on the ground, their
-//! lift-offs and touch-downs, the feet in the air, the body shift and the
-//! margin (include gait_engine.h, not this file).
+//! GaitEngine's set-up, gait changes and walking tick: the phase clock, the
+//! feet on the ground, their lift-offs and touch-downs, and the feet in the
+//! air (include gait_engine.h, not this file).
 #ifndef STRIDER_GAIT_GAIT_ENGINE_WALK_H
 #define STRIDER_GAIT_GAIT_ENGINE_WALK_H
 
 #include "gait_engine.h"
 
 namespace strider {
+
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting) {
+  if (&config != &cfg_) cfg_ = config;
+  phases_.base = gait;
+  phases_.relabel = false;  // table() is the gait as given until the robot walks
+  phases_.quarter = 0;
+  load_table(gait);
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
+    foot_[i] = cfg_.home[i];
+    contact_[i] = true;
+    pending_[i] = false;
+  }
+  state_ = sitting ? GaitState::kSitting : GaitState::kStanding;
+  posture_.reset(sitting);
+  ramp_.reset(cfg_.limits.min_hz);
+  shift_.reset();
+  odo_.reset();
+  support_dirty_ = true;
+  margin_fresh_ = false;
+  edge_.configure(cfg_);
+}
+
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::set_gait(const GaitTable& gait) {
+  const S old_duty = phases_.duty;
+  phases_.base = gait;
+  load_table(phases_.relabel ? gait_table::relabeled(gait, phases_.quarter) : gait);
+  ramp_.keep_travel(old_duty, phases_.duty);
+  ramp_.step(S(0));
+  replan();
+}
 
 template <typename S, uint8_t kLegs>
 void GaitEngine<S, kLegs>::start_walking() {
@@ -146,7 +178,11 @@ bool GaitEngine<S, kLegs>::step_lift(const bool* edge) {
       pending_[i] = false;  // home already: this foot stays down
       continue;
     }
-    if (!may_lift(i)) continue;  // deferred until enough feet are down
+    // Deferred until more than min_support feet are down.
+    uint8_t down = 0;
+    for (uint8_t k = 0; k < n; ++k)
+      if (contact_[k]) ++down;
+    if (down <= cfg_.min_support) continue;
     lift_foot(i, crossed);
     changed = true;
   }
@@ -175,36 +211,9 @@ void GaitEngine<S, kLegs>::lift_foot(uint8_t i, bool crossed) {
 
 template <typename S, uint8_t kLegs>
 void GaitEngine<S, kLegs>::step_swing(S dt) {
-  const uint8_t n = cfg_.leg_count;
-  // Feet in the air follow the swing shape toward a touch-down point that
-  // moves at most max_step per tick (command and gait changes).
+  // Touch-down points move at most max_step per tick (command and gait changes).
   const S max_step = cfg_.target_speed_mm_s * dt;
-  // Feet of one swing group (a tripod's three) share their swing phase:
-  // the swing point of the last foot is reused when the phase is the same.
-  SwingPoint<S> sp{S(0), S(0)};
-  uint32_t sp_elapsed = 0;
-  S sp_inv = S(0), sp_apex = S(0), sp_lift = S(0);
-  SwingShape sp_shape = SwingShape::kRectangle;
-  bool sp_known = false, lift_known = false;  // lift_known: sp_lift = sp_apex * sp.w
-  for (uint8_t i = 0; i < n; ++i) {
-    if (contact_[i]) continue;
-    if (!swing_.settled[i]) settle_target(i, max_step);
-    if (!sp_known || swing_.elapsed[i] != sp_elapsed || swing_.inv_swing[i] != sp_inv ||
-        swing_.shape[i] != sp_shape) {
-      sp_elapsed = swing_.elapsed[i];
-      sp_inv = swing_.inv_swing[i];
-      sp_shape = swing_.shape[i];
-      sp = swing_point(sp_shape, phase_to<S>(sp_elapsed) * sp_inv);
-      sp_known = true;
-      lift_known = false;
-    }
-    if (!lift_known || swing_.apex[i] != sp_apex) {
-      sp_apex = swing_.apex[i];
-      sp_lift = sp_apex * sp.w;
-      lift_known = true;
-    }
-    swing_.place(i, foot_[i], cfg_.home[i].z, sp.u, sp_lift);
-  }
+  swing_.step(foot_, contact_, cfg_.home, cfg_.leg_count, [this, max_step](uint8_t i) { settle_target(i, max_step); });
 }
 
 template <typename S, uint8_t kLegs>
@@ -213,93 +222,6 @@ void GaitEngine<S, kLegs>::settle_target(uint8_t i, S max_step) {
   S wx, wy;
   touchdown_xy(i, wx, wy);
   swing_.settle(i, wx, wy, max_step);
-}
-
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::step_shift(S dt) {
-  if (!phases_.base.shift_body) {  // relabelling keeps it
-    // Back to no shift (after a gait change); once there, nothing to move.
-    if (shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) shift_.step_toward(S(0), S(0), cfg_.shift_speed_mm_s * dt);
-    return;
-  }
-  const S max_step = cfg_.shift_speed_mm_s * dt;
-  const uint8_t n = cfg_.leg_count;
-  const Vec3<S>& pose_t = posture_.pose.translation_mm;
-  S ref_x = cfg_.com_x_mm + pose_t.x, ref_y = cfg_.com_y_mm + pose_t.y;
-  bool any_swing = false;
-  for (uint8_t i = 0; i < n; ++i)
-    if (!contact_[i]) any_swing = true;
-  if (support_dirty_) build_support();
-  // One correction call: the support now while feet swing; in a window, the
-  // support of the next swing (if a foot is still to step) for the CoM
-  // where it will be at lift-off, blended in below.
-  const SupportPolygon<S>* poly = &support_;
-  S t = S(0);
-  ShiftWindow<S>& w = window_;
-  constexpr uint8_t kNoGroup = ShiftWindow<S>::kNoGroup;
-  if (any_swing) {
-    w.open = false;
-  } else {
-    const Phase16 now = clock_.now();
-    if (!w.open) {
-      w.open = true;
-      shift_.begin_window();
-      w.start = now;
-      w.group = kNoGroup;
-    }
-    // The group that lifts next: the nearest offset among feet still to step.
-    uint8_t lead = kNoGroup;
-    Phase16 ahead = 0;
-    for (uint8_t i = 0; i < n; ++i) {
-      if (done(i)) continue;
-      const Phase16 d = pending_[i] ? Phase16(0) : Phase16(phases_.offset[i] - now);
-      if (lead == kNoGroup || d < ahead) {
-        lead = i;
-        ahead = d;
-      }
-    }
-    if (lead != w.group) {
-      w.group = lead;
-      if (lead != kNoGroup) {
-        bool stays[kLegs];
-        for (uint8_t i = 0; i < n; ++i) stays[i] = contact_[i] && phases_.offset[i] != phases_.offset[lead];
-        w.next_support.build(foot_, stays, n, cfg_.foot_radius_mm, cfg_.unit_shift);
-        const Phase16 len = Phase16(Phase16(now + ahead) - w.start);
-        w.inv = len == 0 ? S(0) : S(1) / phase_to<S>(len);
-      }
-    }
-    poly = nullptr;
-    if (lead != kNoGroup) {
-      poly = &w.next_support;
-      const S cycles = phase_to<S>(ahead);  // until it lifts
-      ref_x = ref_x + ramp_.now.x * cycles;
-      ref_y = ref_y + ramp_.now.y * cycles;
-    }
-    t = w.inv == S(0) ? S(1) : phase_to<S>(Phase16(now - w.start)) * w.inv;
-  }
-  S cx = S(0), cy = S(0);
-  if (poly != nullptr) BodyShift<S>::correction(*poly, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, cx, cy);
-  S tx = cx, ty = cy;
-  if (!any_swing) shift_.window_target(t, cx, cy, tx, ty);
-  // Never beyond the reach kept for it (the walk and crawl stay within it,
-  // test/gait; a switch from another gait mid-stride may ask for more).
-  const S b = cfg_.shift_budget_mm;
-  shift_.step_toward(clamp(tx, -b, b), clamp(ty, -b, b), max_step);
-}
-
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::update_margin() const {
-  margin_fresh_ = true;
-  const BodyPose<S> bp = body_pose();
-  S cx = bp.translation_mm.x + cfg_.com_x_mm, cy = bp.translation_mm.y + cfg_.com_y_mm;
-  const bool tilted = bp.roll_rad != S(0) || bp.pitch_rad != S(0) || bp.yaw_rad != S(0);
-  if (tilted && (cfg_.com_x_mm != S(0) || cfg_.com_y_mm != S(0))) {
-    const Vec3<S> com = rotation_rpy(bp.roll_rad, bp.pitch_rad, bp.yaw_rad, bp.order) *
-                        Vec3<S>(cfg_.com_x_mm, cfg_.com_y_mm, S(0));
-    cx = bp.translation_mm.x + com.x;
-    cy = bp.translation_mm.y + com.y;
-  }
-  margin_ = support().margin(foot_, cx, cy);
 }
 
 }  // namespace strider

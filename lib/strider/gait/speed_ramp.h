@@ -1,8 +1,7 @@
-//! SpeedRamp: the command, its plan (velocity_limits.h) and the ramp to it,
-//! in stride per cycle (so that a foot's travel over a stance depends on
-//! the phase only, not on how the step rate changes meanwhile): the
-//! velocity walked this tick, the stride a foot landing now is placed for,
-//! and the body step of the velocity.
+//! SpeedRamp: the command, its plan (velocity_limits.h) and the ramp to it
+//! in stride per cycle (a foot's travel over a stance then depends on the
+//! phase only): the velocity walked, its body step, and the stride a foot
+//! landing now is placed for.
 #ifndef STRIDER_GAIT_SPEED_RAMP_H
 #define STRIDER_GAIT_SPEED_RAMP_H
 
@@ -12,12 +11,10 @@
 
 namespace strider {
 
-//! A command as a stride per cycle and the step rate.
+//! A command as the body's travel [mm] and turn [rad] per cycle, and the step rate [Hz].
 template <typename S>
 struct Stride {
-  S x, y;  //!< body travel per cycle [mm]
-  S yaw;   //!< body turn per cycle [rad]
-  S hz;    //!< step rate [Hz]
+  S x, y, yaw, hz;
 };
 
 template <typename S>
@@ -34,7 +31,6 @@ struct SpeedRamp {
     BodyStep<S> step;
   } step_cache;
 
-  //! Standing still at step rate hz.
   void reset(S rate_hz) {
     vx = vy = wz = S(0);
     hz = rate_hz;
@@ -74,8 +70,7 @@ struct SpeedRamp {
   }
 
   //! A gait change from duty `was` to `duty`: each stance keeps its travel
-  //! (stride per cycle x duty): with a longer duty the body slows at once,
-  //! with a shorter one the step rate drops; nothing moves faster.
+  //! (stride x duty): the body slows, or the step rate drops.
   void keep_travel(S was, S duty) {
     const S r = was / duty;
     now.x = now.x * r;
@@ -124,8 +119,6 @@ struct SpeedRamp {
       land = now;
     } else {
       const S left = S(1) - t;  // ramp still to go
-      // Products, not divisions, on every tick of a ramp: the ramp's length
-      // and 1 / duty are at hand.
       const S finish = left * cycles;  // its length [cycles]
       // lag = (integral over the stance of (1 - ramp)) / stance
       constexpr S half = scalar<S>(0.5);
