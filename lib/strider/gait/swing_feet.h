@@ -5,6 +5,7 @@
 #ifndef STRIDER_GAIT_SWING_FEET_H
 #define STRIDER_GAIT_SWING_FEET_H
 
+#include "../math/vec3.h"
 #include "phase.h"
 #include "swing_trajectory.h"
 
