@@ -8,8 +8,8 @@
 //! and lands when its swing time is over. With the command at zero, a foot
 //! away from home takes one more step until every foot is home and the body
 //! shift (body_shift.h) is back to zero. Gait changes keep feet in the air
-//! on their old swing. Set-up and walking tick: gait_engine_walk.h; body
-//! shift and margin: gait_engine_balance.h.
+//! on their old swing. Set-up and walking tick: gait_engine_walk.h; feet in
+//! the air: gait_engine_swing.h; body shift and margin: gait_engine_balance.h.
 #ifndef STRIDER_GAIT_GAIT_ENGINE_H
 #define STRIDER_GAIT_GAIT_ENGINE_H
 
@@ -29,8 +29,8 @@ class GaitEngine {
  public:
   //! The robot stands with no configuration (configure() before use).
   GaitEngine()
-      : phases_(), sit_requested_(false), step_in_place_(false), ramp_(), foot_(), contact_(), pending_(),
-        stance_elapsed_(), swing_(), td_(), edge_(), margin_(), margin_fresh_(false), odo_(), held_(false),
+      : phases_(), sit_requested_(false), step_in_place_(false), ramp_(), foot_(), contact_(), pending_(), swing_(),
+        stance_elapsed_(), td_(), edge_(), margin_(), margin_fresh_(false), odo_(), held_(false),
         window_(), posture_() {}
 
   //! Takes the configuration and a gait; the robot stands (or sits).
@@ -78,8 +78,7 @@ class GaitEngine {
   //! Changes the gait, also while walking (feet in the air finish their swing).
   void set_gait(const GaitTable& gait);
   void stand_up() { if (state_ == GaitState::kSitting) state_ = GaitState::kStandingUp; }
-  //! Sits down from standing; while walking, stops first.
-  void sit_down() {
+  void sit_down() {  // while walking, stops first
     sit_requested_ = true;
     set_command(S(0), S(0), S(0));
   }
@@ -199,9 +198,9 @@ class GaitEngine {
     swing_.unsettle();
   }
 
-  // The walking tick (gait_engine_walk.h): its parts out of line keep their
-  // locals out of step_walk()'s frame (on the AVR, offsets past 63 bytes
-  // cost extra) and the loops' registers.
+  // The walking tick (gait_engine_walk.h, gait_engine_swing.h): parts out of
+  // line keep their locals out of step_walk()'s frame (on the AVR, offsets
+  // past 63 bytes cost extra) and the loops' registers.
   void start_walking();
   void step_walk(S dt);
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
@@ -226,8 +225,8 @@ class GaitEngine {
   Vec3<S> foot_[kLegs];
   bool contact_[kLegs];
   bool pending_[kLegs];
-  int32_t stance_elapsed_[kLegs];  // phase since touch-down (may start negative)
   SwingFeet<S, kLegs> swing_;
+  int32_t stance_elapsed_[kLegs];  // phase since touch-down (may start negative)
   Touchdown<S> td_;
   ReachEdge<S, kLegs> edge_;
 
@@ -245,6 +244,7 @@ class GaitEngine {
 }  // namespace strider
 
 #include "gait_engine_walk.h"
+#include "gait_engine_swing.h"
 #include "gait_engine_balance.h"
 
 #endif  // STRIDER_GAIT_GAIT_ENGINE_H

@@ -1,6 +1,6 @@
 //! GaitEngine's set-up, gait changes and walking tick: the phase clock, the
-//! feet on the ground, their lift-offs and touch-downs, and the feet in the
-//! air (include gait_engine.h, not this file).
+//! feet on the ground and when they lift and land (include gait_engine.h,
+//! not this file).
 #ifndef STRIDER_GAIT_GAIT_ENGINE_WALK_H
 #define STRIDER_GAIT_GAIT_ENGINE_WALK_H
 
@@ -187,41 +187,6 @@ bool GaitEngine<S, kLegs>::step_lift(const bool* edge) {
     changed = true;
   }
   return changed;
-}
-
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::lift_foot(uint8_t i, bool crossed) {
-  swing_.lift[i] = foot_[i];
-  contact_[i] = false;
-  pending_[i] = false;
-  swing_.len[i] = phases_.swing_len;
-  swing_.inv_swing[i] = phases_.inv_swing;
-  swing_.shape[i] = cfg_.shape;
-  swing_.elapsed[i] = crossed ? uint32_t(Phase16(clock_.now() - phases_.offset[i])) : 0u;
-  Vec3<S>& t = swing_.target[i];
-  touchdown_xy(i, t.x, t.y);
-  t.z = cfg_.home[i].z;
-  swing_.settled[i] = true;
-  // Only the semicircle's apex depends on the step's length (a square root).
-  const Vec3<S>& l = swing_.lift[i];
-  swing_.apex[i] = cfg_.shape == SwingShape::kSemicircle
-                       ? swing_apex_mm(cfg_.shape, hypot(t.x - l.x, t.y - l.y), cfg_.step_height_mm)
-                       : cfg_.step_height_mm;
-}
-
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::step_swing(S dt) {
-  // Touch-down points move at most max_step per tick (command and gait changes).
-  const S max_step = cfg_.target_speed_mm_s * dt;
-  swing_.step(foot_, contact_, cfg_.home, cfg_.leg_count, [this, max_step](uint8_t i) { settle_target(i, max_step); });
-}
-
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::settle_target(uint8_t i, S max_step) {
-  // Every tick of a ramp, for every foot in the air.
-  S wx, wy;
-  touchdown_xy(i, wx, wy);
-  swing_.settle(i, wx, wy, max_step);
 }
 
 }  // namespace strider
