@@ -15,7 +15,7 @@ struct BodyOffsets {
   S roll_rad, pitch_rad, yaw_rad;
   static BodyOffsets zero() { return BodyOffsets{Vec3<S>(), S(0), S(0), S(0)}; }
 };
-// GaitEngine::step_pose() walks the six offsets as an array.
+// BodyPosture::step_pose() walks the six offsets as an array.
 static_assert(sizeof(BodyOffsets<float>) == 6 * sizeof(float) && sizeof(BodyOffsets<Fixed>) == 6 * sizeof(Fixed),
               "BodyOffsets: six scalars, no padding");
 

@@ -23,6 +23,7 @@
 
 #include "../math/flash_table.h"
 #include "gait_table.h"
+#include "phase.h"
 #include "stability.h"
 
 namespace strider {
@@ -86,6 +87,19 @@ class BodyShift {
  private:
   S x_, y_;  // zero, by the constructors
   S from_x_, from_y_;
+};
+
+//! The four-foot window: open while every foot is down and the body shifts
+//! for the next swing group (led by leg `group`), which will stand on
+//! `next_support`.
+template <typename S>
+struct ShiftWindow {
+  static constexpr uint8_t kNoGroup = 0xFF;
+  bool open;
+  uint8_t group = kNoGroup;
+  Phase16 start;
+  S inv;  // 1 / its length [cycles]; 0: no length
+  SupportPolygon<S> next_support;
 };
 
 }  // namespace strider

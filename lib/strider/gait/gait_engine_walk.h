@@ -1,0 +1,194 @@
+//! GaitEngine's set-up, gait changes and walking tick: the phase clock, the
+//! feet on the ground and when they lift and land (include gait_engine.h,
+//! not this file).
+#ifndef STRIDER_GAIT_GAIT_ENGINE_WALK_H
+#define STRIDER_GAIT_GAIT_ENGINE_WALK_H
+
+#include "gait_engine.h"
+
+namespace strider {
+
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting) {
+  if (&config != &cfg_) cfg_ = config;
+  phases_.base = gait;
+  phases_.relabel = false;  // table() is the gait as given until the robot walks
+  phases_.quarter = 0;
+  load_table(gait);
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
+    foot_[i] = cfg_.home[i];
+    contact_[i] = true;
+    pending_[i] = false;
+  }
+  state_ = sitting ? GaitState::kSitting : GaitState::kStanding;
+  posture_.reset(sitting);
+  ramp_.reset(cfg_.limits.min_hz);
+  shift_.reset();
+  odo_.reset();
+  support_dirty_ = true;
+  margin_fresh_ = false;
+  edge_.configure(cfg_);
+}
+
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::set_gait(const GaitTable& gait) {
+  const S old_duty = phases_.duty;
+  phases_.base = gait;
+  load_table(phases_.relabel ? gait_table::relabeled(gait, phases_.quarter) : gait);
+  ramp_.keep_travel(old_duty, phases_.duty);
+  ramp_.step(S(0));
+  replan();
+}
+
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::start_walking() {
+  const VelocityPlan<S>& to = ramp_.plan;
+  const bool relabel = phases_.base.relabel_by_direction && (to.vx_mm_s != S(0) || to.vy_mm_s != S(0));
+  int8_t quarter = 0;
+  if (relabel) {
+    // The quadrant of the direction of travel (seed 000 section 3.3).
+    const S ax = abs(to.vx_mm_s), ay = abs(to.vy_mm_s);
+    quarter = ax >= ay ? (to.vx_mm_s >= S(0) ? 0 : 2) : (to.vy_mm_s > S(0) ? 1 : 3);
+  }
+  // configure(), set_gait() and the last start loaded the table that
+  // relabel and quarter name: the same one again (the usual start) keeps
+  // its phases and fractions (the duty's conversions cost ~5,000 cycles in
+  // Fixed, in the tick that also starts the ramp and the first swings).
+  if (relabel != phases_.relabel || quarter != phases_.quarter) {
+    phases_.relabel = relabel;
+    phases_.quarter = quarter;
+    load_table(phases_.table());
+  } else {
+    invalidate_touchdown();
+  }
+  clock_.reset(phases_.start_phase);
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
+    pending_[i] = false;
+    // Each foot starts as if it had been down since its last touch-down
+    // in the table (negative for a foot the table has in the air: its
+    // first stance runs to its offset), so none looks overdue.
+    stance_elapsed_[i] =
+        int32_t(kPhaseOne - phases_.swing_len) - int32_t(Phase16(phases_.offset[i] - phases_.start_phase));
+  }
+  window_.open = false;
+  window_.group = ShiftWindow<S>::kNoGroup;
+  state_ = GaitState::kWalking;
+}
+
+template <typename S, uint8_t kLegs>
+void GaitEngine<S, kLegs>::step_walk(S dt) {
+  // A steady command (the ramp over, the products known) and its landing
+  // stride known: nothing to ramp or place.
+  if (ramp_.t < S(1) || !ramp_.vel_fresh) ramp_.step(dt);
+  if (!ramp_.land_fresh && ramp_.update_landing(phases_.duty, phases_.inv_stance)) invalidate_touchdown();
+  typename SpeedRamp<S>::StepCache& sc = ramp_.step_cache;
+  if (!(sc.dt == dt)) sc = typename SpeedRamp<S>::StepCache{dt, BodyStep<S>::make(ramp_.vx, ramp_.vy, ramp_.wz, dt)};
+  // Field by field: avr-gcc copies the whole struct with a byte loop.
+  BodyStep<S> step{sc.step.dx_mm, sc.step.dy_mm, sc.step.dyaw, sc.step.cos_yaw, sc.step.sin_yaw};
+  // A foot on the ground at the edge of its reach that this step would take
+  // farther out holds the body for this tick (it lifts as soon as it can).
+  held_ = false;
+  bool edge[kLegs];  // legs 0 to leg_count - 1, all set here
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
+  for (uint8_t i = 0; i < cfg_.leg_count && !held_; ++i) {
+    if (!edge[i]) continue;
+    held_ = ReachEdge<S, kLegs>::takes_out(foot_[i], cfg_.home[i], step);
+  }
+  if (held_) step = BodyStep<S>::none();
+  odo_.add(step);
+
+  const uint8_t n = cfg_.leg_count;
+  bool changed = step_ground(step, dt);
+  if (step_lift(edge)) changed = true;
+  step_swing(dt);
+  if (cfg_.stance_depth_mm != S(0)) {
+    for (uint8_t i = 0; i < n; ++i) {
+      if (!contact_[i]) continue;
+      const uint32_t down = stance_elapsed_[i] > 0 ? uint32_t(stance_elapsed_[i]) : 0u;
+      foot_[i].z = cfg_.home[i].z - stance_sink_mm(cfg_.stance_depth_mm, phase_to<S>(down) * phases_.inv_stance);
+    }
+  }
+  if (changed) support_dirty_ = true;
+  // A gait without body shift and no shift left (a trot, a tripod): nothing to move, no call.
+  if (phases_.base.shift_body || shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) step_shift(dt);
+
+  if (state_ == GaitState::kWalking && !wants_to_walk()) state_ = GaitState::kStopping;
+  if (state_ == GaitState::kStopping && wants_to_walk()) state_ = GaitState::kWalking;
+  if (state_ == GaitState::kStopping && at_rest()) {
+    bool still = shift_.x_mm() == S(0) && shift_.y_mm() == S(0);
+    for (uint8_t i = 0; i < n && still; ++i) still = contact_[i] && near_home(i);
+    if (still) state_ = GaitState::kStanding;
+  }
+}
+
+template <typename S, uint8_t kLegs>
+bool GaitEngine<S, kLegs>::step_ground(const BodyStep<S>& step, S dt) {
+  clock_.advance(dt, ramp_.hz);
+  const uint32_t delta = Phase16(clock_.now() - clock_.before());
+  const uint8_t n = cfg_.leg_count;
+  bool changed = false;
+  // Not turning (walking straight): move_ground_point()'s differences, in
+  // place and without its call.
+  const bool straight = step.sin_yaw == S(0) && step.cos_yaw == S(1);
+  Vec3<S>* foot = foot_;
+  int32_t* elapsed = stance_elapsed_;
+  // One pass: a foot landing this tick stays where it lands (the feet on
+  // the ground move on their own, so the order of the legs does not matter).
+  for (uint8_t i = 0; i < n; ++i, ++foot, ++elapsed) {
+    if (!contact_[i]) {
+      swing_.elapsed[i] += delta;
+      if (swing_.elapsed[i] < swing_.len[i]) continue;
+      foot->x = swing_.target[i].x;
+      foot->y = swing_.target[i].y;
+      foot->z = cfg_.home[i].z;
+      contact_[i] = true;
+      *elapsed = int32_t(swing_.elapsed[i] - swing_.len[i]);
+      changed = true;
+      continue;
+    }
+    // Feet on the ground stay on the ground: they move by the inverse step.
+    if (straight) {
+      foot->x = sub_inline(foot->x, step.dx_mm);
+      foot->y = sub_inline(foot->y, step.dy_mm);
+    } else {
+      // Field by field (leg_ik::copy_point): avr-gcc copies a whole Vec3 with a byte loop.
+      leg_ik::copy_point(step.move_ground_point(*foot), *foot);
+    }
+    const int32_t e = *elapsed + int32_t(delta);
+    *elapsed = e < int32_t(kPhaseOne) ? e : int32_t(kPhaseOne);
+  }
+  return changed;
+}
+
+template <typename S, uint8_t kLegs>
+bool GaitEngine<S, kLegs>::step_lift(const bool* edge) {
+  const uint8_t n = cfg_.leg_count;
+  bool changed = false;
+  for (uint8_t i = 0; i < n; ++i) {
+    if (!contact_[i]) continue;
+    const bool crossed = clock_.crossed(phases_.offset[i]);
+    // Lift at the offset; or, after a gait change that made a foot miss its
+    // offset, as soon as its stance is a sixteenth of a cycle overdue; or
+    // when the foot reaches the edge of its stride (a command change).
+    if (crossed || stance_elapsed_[i] >= int32_t(kPhaseOne - phases_.swing_len + kPhaseOne / 16) ||
+        (edge[i] && at_edge(i)))
+      pending_[i] = true;
+    if (!pending_[i]) continue;
+    if (done(i)) {
+      pending_[i] = false;  // home already: this foot stays down
+      continue;
+    }
+    // Deferred until more than min_support feet are down.
+    uint8_t down = 0;
+    for (uint8_t k = 0; k < n; ++k)
+      if (contact_[k]) ++down;
+    if (down <= cfg_.min_support) continue;
+    lift_foot(i, crossed);
+    changed = true;
+  }
+  return changed;
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_GAIT_ENGINE_WALK_H
