@@ -1,6 +1,5 @@
 // Entry point of the dog12 firmware (PlatformIO env:dog12, CMake strider_firmware_dog12):
 // the whole firmware, built for this model (its profile).
-#define STRIDER_WALKER_LEGS 4  // the gait engine's state for four legs, until it takes Firmware::kLegs
 #include "../firmware_build.h"
 using Firmware = strider::FirmwareProfile<strider::robot_index(strider::kDog12)>;
 #include "../firmware_main.h"

@@ -63,7 +63,7 @@ TEST(PadLimits, FullSliderIsTheSpeedTheModelMakes) {
 
 TEST(PadLimits, AGaitNotListedKeepsThePadsDefaults) {
   int32_t linear = 1550, turn = 600;
-  strider::pad_top_of("spider12", "no_such", &linear, &turn);
+  strider::pad_top_of("spider12", "limp", &linear, &turn);
   strider::pad_top_of("no_such", "walk", &linear, &turn);
   EXPECT_EQ(linear, 1550);
   EXPECT_EQ(turn, 600);

@@ -32,7 +32,6 @@ struct FirmwareProfile : HostProfile<S> {
   static constexpr uint8_t kModelIndex = r;
   static constexpr const RobotModel& kModel = *kAllRobots[r];
   static constexpr uint8_t kLegs = kModel.leg_count;
-  static_assert(kLegs <= kWalkerLegs, "the gait engine holds the model's legs (kWalkerLegs)");
   static constexpr uint8_t kSolvers = leg_solver_count(kModel);
   static constexpr bool kFeet = false;
   static constexpr uint8_t kTickSlots = kSolvers == 1 ? kModel.dof() : 0;
@@ -47,7 +46,7 @@ struct FirmwareProfile : HostProfile<S> {
   //! The model's strides alone of the stored table, and its gait
   //! configuration at its defaults with the ramps (stored_gait_config()).
   static constexpr StoredStrides kStrides STRIDER_PROGMEM = stored_strides(r);
-  static constexpr GaitConfig<S> kGaitConfig STRIDER_PROGMEM = stored_gait_config<S>(r, &kStrides.code[0][0]);
+  static constexpr GaitConfig<S, kLegs> kGaitConfig STRIDER_PROGMEM = stored_gait_config<S, kLegs>(r, &kStrides.code[0][0]);
   //! The walker's legs, but for the mounts' cos and sin (walker_legs()).
   static constexpr WalkerLegs<S, kLegs, kSolvers> kWalkerLegsInFlash STRIDER_PROGMEM =
       walker_legs<S, kLegs, kSolvers>(kModel);
@@ -60,7 +59,7 @@ struct FirmwareProfile : HostProfile<S> {
 template <uint8_t r, typename S>
 constexpr StoredStrides FirmwareProfile<r, S>::kStrides;
 template <uint8_t r, typename S>
-constexpr GaitConfig<S> FirmwareProfile<r, S>::kGaitConfig;
+constexpr GaitConfig<S, FirmwareProfile<r, S>::kLegs> FirmwareProfile<r, S>::kGaitConfig;
 template <uint8_t r, typename S>
 constexpr WalkerLegs<S, FirmwareProfile<r, S>::kLegs, FirmwareProfile<r, S>::kSolvers> FirmwareProfile<r, S>::kWalkerLegsInFlash;
 template <uint8_t r, typename S>

@@ -39,7 +39,7 @@ class GaitTuner {
   //! Takes the model's defaults from a walker just configured at them
   //! (before any tuning).
   void configure(WalkerMotion<S, P>& motion) {
-    const GaitConfig<S>& c = motion.walker().engine().config();
+    const auto& c = motion.walker().engine().config();
     own_ = Own{c.step_height_mm, c.limits.preferred_stride_mm, c.limits.min_hz, c.shape};
     live_ = gait_defaults(motion, duty_pct_of(motion.gait()));
     origin_ = TuneOrigin::kDefault;
@@ -202,8 +202,8 @@ class GaitTuner {
   //! model's own is its own value, bit for bit.
   void apply(WalkerMotion<S, P>& motion) {
     using namespace gait_tuner_detail;
-    GaitEngine<S>& e = motion.walker().engine();
-    const GaitConfig<S>& c = e.config();
+    auto& e = motion.walker().engine();
+    const auto& c = e.config();
     const GaitTuning mine = own_tuning();
     const S height = live_.step_height_cmm == mine.step_height_cmm ? own_.step_height_mm
                                                                    : from_hundredths<S>(live_.step_height_cmm);

@@ -25,7 +25,7 @@ namespace strider {
 //! unless the model's own.
 template <typename S, typename P, typename Stage>
 void write_motion_status(ReplyWriter& w, const WalkerMotion<S, P>& motion, const Stage& stage, TuneOrigin origin) {
-  const GaitEngine<S>& e = motion.walker().engine();
+  const auto& e = motion.walker().engine();
   w.format(FlashText{text::kWalkFmt}, motion.body_speed(to_tenths(e.vx())), motion.body_speed(to_tenths(e.vy())),
            motion.body_speed(to_tenths(e.wz() * scalar<S>(1.0 / kDegToRad)), true));
   const FlashText servos = stage.all_on() ? FlashText{text::kOn}

@@ -52,7 +52,7 @@ class WalkerMotion {
   //! The same at the model's gait defaults with their configuration from
   //! flash (Walker::configure_stored(): a firmware's constant), starting in
   //! `default_gait` (the defaults' default_gait).
-  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S>* flash_config,
+  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S, P::kLegs>* flash_config,
                         bool solve_now = true) {
     GaitTable gait;
     if (!load_gait(model, default_gait, &gait) ||
@@ -64,7 +64,7 @@ class WalkerMotion {
 
   //! The same with the walker's legs from flash too (walker_legs() of the
   //! model: a firmware's constant).
-  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S>* flash_config,
+  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S, P::kLegs>* flash_config,
                         const WalkerLegs<S, P::kLegs, P::kSolvers>* flash_legs, bool solve_now = true) {
     GaitTable gait;
     if (!load_gait(model, default_gait, &gait) ||
@@ -253,7 +253,7 @@ class WalkerMotion {
     pose.pitch_rad = o.pitch_rad;
     pose.yaw_rad = o.yaw_rad;
     const Transform<S> body = body_transform(pose);
-    const GaitConfig<S>& cfg = walker_.engine().config();
+    const auto& cfg = walker_.engine().config();
     for (uint8_t i = 0; i < walker_.leg_count(); ++i) {
       const Vec3<S> target = walker_.leg_mount(i).body_to_leg(foot_in_body(body, cfg.home[i]));
       typename AnyLeg<S>::Joints q;

@@ -49,7 +49,8 @@ class BodyShift {
 
   //! The shift [mm] that moves `ref` [mm] into `poly`'s region with margin
   //! `want_mm` (along x only with x_only).
-  static void correction(const SupportPolygon<S>& poly, const Vec3<S>* feet, S ref_x, S ref_y, S want_mm,
+  template <uint8_t kLegs>
+  static void correction(const SupportPolygon<S, kLegs>& poly, const Vec3<S>* feet, S ref_x, S ref_y, S want_mm,
                          bool x_only, S& sx, S& sy) {
     S px = ref_x, py = ref_y;
     poly.constrain(feet, px, py, want_mm, x_only);
@@ -92,14 +93,14 @@ class BodyShift {
 //! The four-foot window: open while every foot is down and the body shifts
 //! for the next swing group (led by leg `group`), which will stand on
 //! `next_support`.
-template <typename S>
+template <typename S, uint8_t kLegs>
 struct ShiftWindow {
   static constexpr uint8_t kNoGroup = 0xFF;
   bool open;
   uint8_t group = kNoGroup;
   Phase16 start;
   S inv;  // 1 / its length [cycles]; 0: no length
-  SupportPolygon<S> next_support;
+  SupportPolygon<S, kLegs> next_support;
 };
 
 }  // namespace strider

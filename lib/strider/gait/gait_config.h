@@ -18,7 +18,7 @@ inline bool velocity_limits_known(const RobotModel& model, const GaitParams& par
   return STRIDER_VELOCITY_SEARCH != 0 || stored_limits_index(model, params, shape) < kRobotCount;
 }
 
-template <typename S>
+template <typename S, uint8_t kLegs = kMaxLegs>
 struct GaitConfig {
   constexpr GaitConfig()
       : leg_count(0), step_height_mm(), stance_depth_mm(), foot_radius_mm(), com_x_mm(), com_y_mm(), margin_mm(),
@@ -27,7 +27,7 @@ struct GaitConfig {
 
   // leg_count, shift_x_only and unit_shift are zero, by the constructors.
   uint8_t leg_count;
-  Vec3<S> home[kWalkerLegs];       //!< standing feet, body frame [mm]
+  Vec3<S> home[kLegs];       //!< standing feet, body frame [mm]
   SwingShape shape = SwingShape::kEllipse;
   S step_height_mm;             //!< swing apex [mm]
   S stance_depth_mm;            //!< [mm]
@@ -48,7 +48,7 @@ struct GaitConfig {
   bool shift_x_only;            //!< planar legs: the body can only shift along x
   uint8_t min_support = 2;      //!< never lift a foot if fewer would stay down
   int8_t unit_shift;            //!< working units of the support polygon (stability.h)
-  S edge_mm[kWalkerLegs] = {};     //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
+  S edge_mm[kLegs] = {};     //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
   VelocityLimits<S> limits;
 };
 
@@ -62,15 +62,15 @@ namespace gait_config_detail {
 template <typename S>
 constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
 //! The largest |x| or |y| of the standing feet [mm].
-template <typename S>
-constexpr S reach_of(const GaitConfig<S>& c) {
+template <typename S, uint8_t kLegs>
+constexpr S reach_of(const GaitConfig<S, kLegs>& c) {
   S reach = S(0);
   for (uint8_t i = 0; i < c.leg_count; ++i) reach = max_of(reach, max_of(magnitude(c.home[i].x), magnitude(c.home[i].y)));
   return reach;
 }
 //! The fixed speed limits of every configuration.
-template <typename S>
-constexpr void set_speeds(GaitConfig<S>& c) {
+template <typename S, uint8_t kLegs>
+constexpr void set_speeds(GaitConfig<S, kLegs>& c) {
   c.shift_speed_mm_s = scalar<S>(400.0);
   c.pose_speed_mm_s = scalar<S>(50.0);
   c.pose_rate_rad_s = scalar<S>(0.5);
@@ -78,8 +78,8 @@ constexpr void set_speeds(GaitConfig<S>& c) {
 }
 //! The fields that come from the gait defaults and the model's kind, for
 //! feet that reach `reach` mm (reach_of()) from the body's centre.
-template <typename S>
-constexpr void set_params(GaitConfig<S>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
+template <typename S, uint8_t kLegs>
+constexpr void set_params(GaitConfig<S, kLegs>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
                           S reach) {
   c.shape = shape;
   c.step_height_mm = scalar<S>(params.step_height_mm);
@@ -101,8 +101,8 @@ constexpr void set_params(GaitConfig<S>& c, const RobotModel& model, const GaitP
 //! the top forward speed of a trot-like duty in one default cycle, which
 //! keeps every first stance within its stride, and the touch-down points'
 //! speed. Run time only (velocity plans); fill_gait_config() ends with it.
-template <typename S>
-void finish_gait_config(GaitConfig<S>& c) {
+template <typename S, uint8_t kLegs>
+void finish_gait_config(GaitConfig<S, kLegs>& c) {
   const S reach = gait_config_detail::reach_of(c);
   const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
   const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
@@ -116,10 +116,10 @@ void finish_gait_config(GaitConfig<S>& c) {
 //! model at its defaults takes its velocity limits from the stored table
 //! (stored_velocity_limits.h: no IK, a few thousand cycles); otherwise they
 //! cost a few thousand IK calls: call it at start-up, not per tick.
-template <typename S>
-void fill_gait_config(GaitConfig<S>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
+template <typename S, uint8_t kLegs>
+void fill_gait_config(GaitConfig<S, kLegs>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
                       SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {
-  if (model.leg_count > kWalkerLegs) {  // more legs than this build's walker holds
+  if (model.leg_count > kLegs) {  // more legs than this build's walker holds
     c.leg_count = 0;
     return;
   }
@@ -166,13 +166,15 @@ namespace gait_config_detail {
 //! The ramps of stored configuration r: Fixed's from the table (what
 //! finish_gait_config() gives it, computed by tools/gen), float's left to
 //! finish_gait_config() at run time (stored_ramps_given).
-constexpr void set_stored_ramps(GaitConfig<Fixed>& c, uint8_t r) {
+template <uint8_t kLegs>
+constexpr void set_stored_ramps(GaitConfig<Fixed, kLegs>& c, uint8_t r) {
   using T = detail::VelocityLimitTables<>;
   c.accel_mm_s2 = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][0]) | (uint32_t(T::kRamp[r][1]) << 16)));
   c.yaw_accel_rad_s2 = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][2]) | (uint32_t(T::kRamp[r][3]) << 16)));
   c.target_speed_mm_s = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][4]) | (uint32_t(T::kRamp[r][5]) << 16)));
 }
-constexpr void set_stored_ramps(GaitConfig<float>&, uint8_t) {}
+template <uint8_t kLegs>
+constexpr void set_stored_ramps(GaitConfig<float, kLegs>&, uint8_t) {}
 }  // namespace gait_config_detail
 //! Whether stored_gait_config<S>() includes the ramps (Fixed) or leaves
 //! them to finish_gait_config() (float).
@@ -188,13 +190,13 @@ constexpr bool stored_ramps_given<Fixed>() { return true; }
 //! model is a constant of the build, keeps it in flash instead of converting
 //! the float model and looking the limits up at start-up. flash_codes: where
 //! the strides are (STRIDER_VELOCITY_SEARCH 0; without: the whole table's).
-template <typename S>
-constexpr GaitConfig<S> stored_gait_config(uint8_t r, const uint16_t* flash_codes) {
+template <typename S, uint8_t kLegs = kMaxLegs>
+constexpr GaitConfig<S, kLegs> stored_gait_config(uint8_t r, const uint16_t* flash_codes) {
   namespace enc = velocity_limit_encoding;
   using T = detail::VelocityLimitTables<>;
   const RobotModel& model = *kAllRobots[r];
   const GaitParams& params = kGaitParams[r];
-  GaitConfig<S> c{};
+  GaitConfig<S, kLegs> c{};
   c.leg_count = model.leg_count;
   for (uint8_t i = 0; i < model.leg_count; ++i) {
     const Vec3<float>& h = model.legs[i].stand_mm;
@@ -231,9 +233,9 @@ constexpr GaitConfig<S> stored_gait_config(uint8_t r, const uint16_t* flash_code
   return c;
 }
 
-template <typename S>
-constexpr GaitConfig<S> stored_gait_config(uint8_t r) {
-  return stored_gait_config<S>(r, &detail::VelocityLimitTables<>::kStride[r][0][0]);
+template <typename S, uint8_t kLegs = kMaxLegs>
+constexpr GaitConfig<S, kLegs> stored_gait_config(uint8_t r) {
+  return stored_gait_config<S, kLegs>(r, &detail::VelocityLimitTables<>::kStride[r][0][0]);
 }
 
 //! The same as a value (fill_gait_config() builds it in place: no copy of

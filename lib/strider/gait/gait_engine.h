@@ -24,7 +24,7 @@
 
 namespace strider {
 
-template <typename S, uint8_t kLegs = kWalkerLegs>
+template <typename S, uint8_t kLegs = kMaxLegs>
 class GaitEngine {
  public:
   //! The robot stands with no configuration (configure() before use).
@@ -34,7 +34,7 @@ class GaitEngine {
         window_(), posture_() {}
 
   //! Takes the configuration and a gait; the robot stands (or sits).
-  void configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting = false);
+  void configure(const GaitConfig<S, kLegs>& config, const GaitTable& gait, bool sitting = false);
   //! The same with the configuration built in place (fill_gait_config()).
   void configure(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params, SwingShape shape,
                  const GaitTable& gait, bool sitting = false) {
@@ -43,7 +43,7 @@ class GaitEngine {
   }
   //! The same from a configuration in flash (stored_gait_config()), copied
   //! into place and finished there (finish_gait_config()) if its ramps are not given.
-  void configure_stored(const GaitConfig<S>* flash_config, const GaitTable& gait, bool sitting = false) {
+  void configure_stored(const GaitConfig<S, kLegs>* flash_config, const GaitTable& gait, bool sitting = false) {
     flash_copy(&cfg_, flash_config, sizeof cfg_);
     finish_stored(cfg_);
     configure(cfg_, gait, sitting);
@@ -161,16 +161,16 @@ class GaitEngine {
   GaitTable table() const { return phases_.table(); }
   //! The gait as given to configure() or set_gait() (table() may be relabelled).
   const GaitTable& gait() const { return phases_.base; }
-  const GaitConfig<S>& config() const { return cfg_; }
-  const SupportPolygon<S>& support() const {
+  const GaitConfig<S, kLegs>& config() const { return cfg_; }
+  const SupportPolygon<S, kLegs>& support() const {
     if (support_dirty_) build_support();
     return support_;
   }
 
  private:
   // A stored configuration with its ramps (Fixed) needs no finishing.
-  static void finish_stored(GaitConfig<float>& c) { finish_gait_config(c); }
-  static void finish_stored(GaitConfig<Fixed>&) {}
+  static void finish_stored(GaitConfig<float, kLegs>& c) { finish_gait_config(c); }
+  static void finish_stored(GaitConfig<Fixed, kLegs>&) {}
 
   void load_table(const GaitTable& t) {
     phases_.load(t, cfg_.leg_count);
@@ -214,7 +214,7 @@ class GaitEngine {
   void build_support() const;
 
   // Members without a default here are set by the constructor (zero).
-  GaitConfig<S> cfg_;
+  GaitConfig<S, kLegs> cfg_;
   TablePhases<S, kLegs> phases_;
   GaitState state_ = GaitState::kStanding;
   bool sit_requested_;
@@ -230,14 +230,14 @@ class GaitEngine {
   Touchdown<S> td_;
   ReachEdge<S, kLegs> edge_;
 
-  mutable SupportPolygon<S> support_;
+  mutable SupportPolygon<S, kLegs> support_;
   mutable bool support_dirty_ = true;
   mutable S margin_;
   mutable bool margin_fresh_;
   Odometry<S> odo_;
   BodyShift<S> shift_;
   bool held_;
-  ShiftWindow<S> window_;
+  ShiftWindow<S, kLegs> window_;
   BodyPosture<S> posture_;
 };
 

@@ -26,10 +26,10 @@ void GaitEngine<S, kLegs>::step_shift(S dt) {
   // One correction call: the support now while feet swing; in a window, the
   // support of the next swing (if a foot is still to step) for the CoM
   // where it will be at lift-off, blended in below.
-  const SupportPolygon<S>* poly = &support_;
+  const SupportPolygon<S, kLegs>* poly = &support_;
   S t = S(0);
-  ShiftWindow<S>& w = window_;
-  constexpr uint8_t kNoGroup = ShiftWindow<S>::kNoGroup;
+  ShiftWindow<S, kLegs>& w = window_;
+  constexpr uint8_t kNoGroup = ShiftWindow<S, kLegs>::kNoGroup;
   if (any_swing) {
     w.open = false;
   } else {

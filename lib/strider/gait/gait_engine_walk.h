@@ -9,7 +9,7 @@
 namespace strider {
 
 template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::configure(const GaitConfig<S>& config, const GaitTable& gait, bool sitting) {
+void GaitEngine<S, kLegs>::configure(const GaitConfig<S, kLegs>& config, const GaitTable& gait, bool sitting) {
   if (&config != &cfg_) cfg_ = config;
   phases_.base = gait;
   phases_.relabel = false;  // table() is the gait as given until the robot walks
@@ -71,7 +71,7 @@ void GaitEngine<S, kLegs>::start_walking() {
         int32_t(kPhaseOne - phases_.swing_len) - int32_t(Phase16(phases_.offset[i] - phases_.start_phase));
   }
   window_.open = false;
-  window_.group = ShiftWindow<S>::kNoGroup;
+  window_.group = ShiftWindow<S, kLegs>::kNoGroup;
   state_ = GaitState::kWalking;
 }
 

@@ -30,8 +30,10 @@ namespace strider {
 //! The margin reported when no foot is on the ground [mm].
 constexpr double kNoSupportMarginMm = -999.0;
 
-template <typename S>
+template <typename S, uint8_t kLegs = kMaxLegs>
 class SupportPolygon {
+  static_assert(kLegs >= 4 && kLegs <= kMaxLegs, "4 slots at least: a two-foot support region has four corners");
+
  public:
   SupportPolygon() : count_(0), idx_(), inv_len_(), corner_(), radius_(S(0)), shift_(0) {}
   //! The hull of the feet i < n with contact[i] (their x, y) [mm], feet of
@@ -40,13 +42,13 @@ class SupportPolygon {
     shift_ = shift;
     radius_ = foot_radius_mm;
     count_ = 0;
-    uint8_t pts[kWalkerLegs];
+    uint8_t pts[kLegs];
     uint8_t m = 0;
-    for (uint8_t i = 0; i < n && i < kWalkerLegs; ++i)
+    for (uint8_t i = 0; i < n && i < kLegs; ++i)
       if (contact[i]) pts[m++] = i;
     if (m == 0) return;
     // The feet in working units once (the wrapping visits each many times).
-    Vec3<S> pu[kWalkerLegs];
+    Vec3<S> pu[kLegs];
     for (uint8_t k = 0; k < m; ++k) pu[pts[k]] = at(feet, pts[k]);
     // Gift wrapping from the lowest-x (then lowest-y) foot, counter-clockwise.
     uint8_t start = pts[0];
@@ -124,8 +126,8 @@ class SupportPolygon {
   //! nearest x the region allows on its line y (the middle if none does).
   void constrain(const Vec3<S>* feet, S& x_mm, S& y_mm, S want_mm, bool x_only) const {
     if (count_ == 0) return;
-    Vec3<S> v[kWalkerLegs], u[kWalkerLegs];
-    S len[kWalkerLegs];
+    Vec3<S> v[kLegs], u[kLegs];
+    S len[kLegs];
     const uint8_t n = region(feet, unit(want_mm), v, u, len);
     const Vec3<S> p(unit(x_mm), unit(y_mm), S(0));
     Vec3<S> q = p;
@@ -261,9 +263,9 @@ class SupportPolygon {
 
   // Initialised by the constructor.
   uint8_t count_;
-  uint8_t idx_[kWalkerLegs];
-  S inv_len_[kWalkerLegs];
-  S corner_[kWalkerLegs];  //!< vertex k of the shrunk polygon: a_k + d (n_k + corner_k u_k)
+  uint8_t idx_[kLegs];
+  S inv_len_[kLegs];
+  S corner_[kLegs];  //!< vertex k of the shrunk polygon: a_k + d (n_k + corner_k u_k)
   S radius_;
   int8_t shift_;
 };

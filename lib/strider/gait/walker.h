@@ -47,7 +47,7 @@ class Walker {
   //! float model's gait figures, no limits look-up. The caller makes sure
   //! that flash_config is stored_gait_config() of this model (a firmware:
   //! at compile time).
-  bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>* flash_config,
+  bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs>* flash_config,
                         bool sitting = false, bool solve_now = true) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !build_legs(model)) return false;
     engine_.configure_stored(flash_config, gait, sitting);
@@ -57,7 +57,7 @@ class Walker {
 
   //! The same with the legs from flash too (walker_legs() of the model,
   //! which the caller makes sure of): no conversion of the float model at all.
-  bool configure_stored(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, const GaitTable& gait, const GaitConfig<S>* flash_config,
+  bool configure_stored(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, const GaitTable& gait, const GaitConfig<S, kLegs>* flash_config,
                         bool sitting = false, bool solve_now = true) {
     if (!build_legs(flash_legs, gait.leg_count)) return false;
     engine_.configure_stored(flash_config, gait, sitting);
@@ -69,7 +69,7 @@ class Walker {
   //! search, so a robot can switch configurations quickly. The legs are
   //! built from `model` every time (a copy of a few fields each; a model is
   //! not recognised by its address, which a copy that is gone may share).
-  bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S>& config,
+  bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs>& config,
                  bool sitting = false) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || config.leg_count != model.leg_count)
       return false;
@@ -82,15 +82,15 @@ class Walker {
   //! Starts over with the legs built before and `config` (which may be the
   //! engine's own), without the model: false when no legs are built or the
   //! leg counts differ.
-  bool restart(const GaitTable& gait, const GaitConfig<S>& config, bool sitting = false) {
+  bool restart(const GaitTable& gait, const GaitConfig<S, kLegs>& config, bool sitting = false) {
     if (dof_ == 0 || gait.leg_count != config.leg_count || config.leg_count != leg_count()) return false;
     engine_.configure(config, gait, sitting);
     reset_legs();
     return true;
   }
 
-  GaitEngine<S>& engine() { return engine_; }
-  const GaitEngine<S>& engine() const { return engine_; }
+  GaitEngine<S, kLegs>& engine() { return engine_; }
+  const GaitEngine<S, kLegs>& engine() const { return engine_; }
   //! Leg i as one AnyLeg: its solver at its mount (a copy: legs of one
   //! geometry may share their solver, P::kSolvers).
   AnyLeg<S> leg_model(uint8_t i) const { return legs_.leg(i); }
@@ -290,7 +290,7 @@ class Walker {
   MountTurn turn_[kLegs];  // of each leg's mount (mount_turn.h)
   ReachProjection<S> proj_;
   IkOptions<S> ik_options_{};  // the defaults, built once rather than per leg and tick
-  GaitEngine<S> engine_;
+  GaitEngine<S, kLegs> engine_;
   Result out_[kLegs];
 };
 

@@ -129,7 +129,7 @@ bool build_legs(const RobotModel& model, Legs& legs) {
 //! A walker's legs built from a model at compile time (walker_legs()): a
 //! firmware keeps its model's in flash and converts nothing at start-up
 //! (Walker::configure_stored()).
-template <typename S, uint8_t kLegs = kWalkerLegs, uint8_t kSolvers = kLegs>
+template <typename S, uint8_t kLegs = kMaxLegs, uint8_t kSolvers = kLegs>
 struct WalkerLegs {
   walker_detail::LegSolvers<S, kLegs, kSolvers> legs;  // the mounts without their cos and sin
   ReachProjection<S> proj;
@@ -137,7 +137,7 @@ struct WalkerLegs {
   uint8_t dof;
   bool ok;  // the model fits (kLegs, kSolvers)
 };
-template <typename S, uint8_t kLegs = kWalkerLegs, uint8_t kSolvers = kLegs>
+template <typename S, uint8_t kLegs = kMaxLegs, uint8_t kSolvers = kLegs>
 constexpr WalkerLegs<S, kLegs, kSolvers> walker_legs(const RobotModel& model) {
   using Legs = walker_detail::LegSolvers<S, kLegs, kSolvers>;
   return WalkerLegs<S, kLegs, kSolvers>{Legs::constant(model), ReachProjection<S>::make(model), model.leg_count,

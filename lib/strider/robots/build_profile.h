@@ -11,13 +11,13 @@
 
 namespace strider {
 
-//! The host's profile, for any model: state for kWalkerLegs legs, an IK
+//! The host's profile, for any model: state for kMaxLegs legs, an IK
 //! solver per leg, leg results with their feet, a servo tick-map range per
 //! joint, and everything built from the model at start-up.
 template <typename S>
 struct HostProfile {
   using Scalar = S;
-  static constexpr uint8_t kLegs = kWalkerLegs;
+  static constexpr uint8_t kLegs = kMaxLegs;
   //! Leg solvers: as many as legs (an AnyLeg per leg), or fewer for legs of
   //! one geometry sharing one (walker_legs.h).
   static constexpr uint8_t kSolvers = kLegs;

@@ -53,16 +53,11 @@ constexpr const char* to_string(BodySide side) { return side == BodySide::kLeft 
 constexpr uint8_t kMaxLegs = 6;
 constexpr uint8_t kMaxLegDof = 3;
 
-//! Most legs the walking state (walker, gait engine, gait configuration,
-//! support polygon) holds: kMaxLegs by default. A firmware for a quadruped
-//! defines STRIDER_WALKER_LEGS 4 before any Strider header, so that its
-//! RAM carries no state for two legs it does not have; a walker then refuses
-//! a model with more legs. Models and gait tables keep kMaxLegs slots.
-#ifndef STRIDER_WALKER_LEGS
-#define STRIDER_WALKER_LEGS 6
-#endif
-constexpr uint8_t kWalkerLegs = uint8_t(STRIDER_WALKER_LEGS);
-static_assert(kWalkerLegs >= 4 && kWalkerLegs <= kMaxLegs, "STRIDER_WALKER_LEGS: 4 (a two-foot support region has four corners) to kMaxLegs");
+//! The walking state (walker, gait engine, gait configuration, support
+//! polygon) holds as many legs as its build profile's kLegs
+//! (robots/build_profile.h): kMaxLegs on the host, the model's own count in
+//! a firmware, so that a quadruped's RAM carries no state for two legs it
+//! does not have. Models and gait tables keep kMaxLegs slots.
 
 //! Link lengths of a leg [mm]; the meaning of each slot depends on the kind.
 struct LinkLengths {
