@@ -117,7 +117,6 @@ struct GaitRig {
   // after it.
   strider::Walker<S> walker;
   const strider::RobotModel* model = nullptr;
-  const strider::GaitTable* gait = nullptr;
   S vx = S(0);
   NullServoOutput out;
   strider::Pca9685Timing timing;
@@ -175,7 +174,8 @@ void put_walk(const strider::Walker<S>& w, const char* model, const char* scalar
 
 template <typename S>
 void bench_model(void* storage, const strider::RobotModel& m, const char* scalar_P, uint8_t stride) {
-  if (scenario_gait(m) == nullptr) return;
+  strider::GaitTable gait;
+  if (!scenario_gait(m, &gait)) return;
   GaitRig<S>& rig = *new (storage) GaitRig<S>();
   const S dt = strider::scalar<S>(0.02);
 
@@ -185,7 +185,6 @@ void bench_model(void* storage, const strider::RobotModel& m, const char* scalar
   stop();
   if (!ok) return;
   rig.model = &m;
-  rig.gait = scenario_gait(m);
   rig.init_frame();
   rig.vx = scenario_speed(rig.walker);
 

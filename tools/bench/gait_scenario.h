@@ -19,17 +19,18 @@ constexpr uint16_t kGaitTicks = 250;
 //! Values in a walk record: every joint of six 3-DOF legs, odometry x, y.
 constexpr uint8_t kWalkRecordMax = 20;
 
-inline const strider::GaitTable* scenario_gait(const strider::RobotModel& m) {
+//! The model's default gait into *out (out of flash on the AVR); false if none.
+inline bool scenario_gait(const strider::RobotModel& m, strider::GaitTable* out) {
   strider::GaitParams p;
-  return strider::gait_params_of(m, &p) ? strider::find_gait(m, p.default_gait) : nullptr;
+  return strider::gait_params_of(m, &p) && strider::load_gait(m, p.default_gait, out);
 }
 
 //! Configures w for model m (its default gait and parameters); false if none.
 template <typename S>
 bool scenario_configure(strider::Walker<S>& w, const strider::RobotModel& m) {
   strider::GaitParams p;
-  const strider::GaitTable* g = scenario_gait(m);
-  return strider::gait_params_of(m, &p) && g != nullptr && w.configure(m, *g, p, p.shape);
+  strider::GaitTable g;
+  return strider::gait_params_of(m, &p) && scenario_gait(m, &g) && w.configure(m, g, p, p.shape);
 }
 
 //! Half the top forward speed of the configured gait [mm/s].
@@ -43,7 +44,8 @@ S scenario_speed(const strider::Walker<S>& w) {
 //! Back to standing with the configuration built before, then the command.
 template <typename S>
 void scenario_restart(strider::Walker<S>& w, const strider::RobotModel& m, S vx) {
-  w.configure(m, *scenario_gait(m), w.engine().config());
+  strider::GaitTable g;
+  if (scenario_gait(m, &g)) w.configure(m, g, w.engine().config());
   w.engine().set_command(vx, S(0), S(0));
 }
 

@@ -12,18 +12,10 @@
 #include "../math/flash_table.h"
 #include "gait_table.h"
 
-//! STRIDER_GAITS_IN_FLASH 1 (the firmware, firmware_main.h): the gait tables
-//! and their lists are in flash on the AVR (no RAM for the seven tables) and
-//! only load_gait() reads them; find_gait() and gaits_for() are not built.
-//! Default 0: plain constants (host tools, benchmarks).
-#ifndef STRIDER_GAITS_IN_FLASH
-#define STRIDER_GAITS_IN_FLASH 0
-#endif
-#if STRIDER_GAITS_IN_FLASH
+//! The gait tables and their lists are in flash on the AVR (no RAM for the
+//! seven tables): load_gait() and gait_index() copy them out; the host's
+//! find_gait() and gaits_for() hand out pointers to them.
 #define STRIDER_GAIT_STORAGE STRIDER_PROGMEM
-#else
-#define STRIDER_GAIT_STORAGE
-#endif
 
 namespace strider {
 
@@ -121,7 +113,7 @@ inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
   const GaitTable* const* items = gait_library_detail::list_items(leg_count);
   const uint8_t count = gait_library_detail::list_count(leg_count);
   for (uint8_t i = 0; i < count; ++i) {
-#if STRIDER_GAITS_IN_FLASH && defined(__AVR__)
+#if defined(__AVR__)
     static_assert(sizeof(const GaitTable*) == 2, "AVR data pointers are 16-bit");
     const GaitTable* g = reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i));
     if (!gait_library_detail::same_as_flash(name, g->name)) continue;
@@ -144,7 +136,7 @@ inline uint8_t gait_index(uint8_t leg_count, const char* name) {
   const uint8_t count = gait_library_detail::list_count(leg_count);
   for (uint8_t i = 0; i < count; ++i) {
     GaitTable g;
-#if STRIDER_GAITS_IN_FLASH && defined(__AVR__)
+#if defined(__AVR__)
     const GaitTable* const* items = gait_library_detail::list_items(leg_count);
     flash_copy(&g, reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i)), sizeof g);
 #else
@@ -159,7 +151,7 @@ inline bool load_gait(const RobotModel& model, const char* name, GaitTable* out)
   return load_gait(model.leg_count, name, out);
 }
 
-#if !STRIDER_GAITS_IN_FLASH
+#if !defined(__AVR__)
 //! The gaits for a body with `leg_count` legs (none for other counts).
 constexpr GaitList gaits_for_legs(uint8_t leg_count) {
   return GaitList{gait_library_detail::list_items(leg_count), gait_library_detail::list_count(leg_count)};
