@@ -218,9 +218,14 @@ TEST_P(EepromPowerCut, EveryByteOfASaveKeepsTheOldOrTheNewRecord) {
   EXPECT_EQ(usb.boot_notice(), new_record) << usb.transcript();
   ASSERT_EQ(trim0_decideg(usb.command("cal show")), kNewDeg * 10);
 
-  // The power cut at each of its writes.
+  // The power cut at each of its writes: every write on sprawl8 (and on every
+  // model with STRIDER_EEPROM_EVERY_WRITE=1, `tools/dev soak`); the other
+  // models run the same save code over records of another length, so the test
+  // command cuts them at every 5th write and at the last three.
+  const bool every_write = c.erased_too || std::getenv("STRIDER_EEPROM_EVERY_WRITE") != nullptr;
   int cuts = 0, gave_old = 0;
   for (int n = 0; n < writes; ++n) {
+    if (!every_write && n % 5 != 0 && n < writes - 3) continue;
     for (TornByte torn : {TornByte::kOld, TornByte::kErased}) {
       if (torn == TornByte::kErased && !c.erased_too) continue;
       const char* torn_name = torn == TornByte::kOld ? "left" : "erased";
