@@ -5,7 +5,7 @@
 //
 // Included once per build, last, by the file of src/models/ that PlatformIO
 // (build_src_filter) or CMake (per target) picks, which first includes
-// firmware_build.h and names its profile: `using Firmware =
+// control/firmware_profile.h and names its profile: `using Firmware =
 // strider::FirmwareProfile<strider::robot_index(strider::kSprawl8)>;` (control/firmware_profile.h):
 // the model is a compile-time constant here, and the profile sizes the
 // walker, the servo stage and the RobotApp to it.
@@ -189,7 +189,7 @@ void serialEventRun() {}
 void setup() {
   // The watchdog before anything can hang: a bus held low (before Wire's
   // time-out is set), a library that blocks. Start-up takes about 20 ms
-  // (the velocity limits come from a table, firmware_build.h); a
+  // (the velocity limits come from the stored table, FirmwareProfile); a
   // reply that waits for a full ring feeds it (serial_link.h).
   wdt_enable(WDTO_500MS);
   static App app(kModelInFlash, g_servos, g_eeprom, strider::ModelMemory::kFlash);  // reads the settings from EEPROM

@@ -1,5 +1,5 @@
 // Entry point of the dog12 firmware (PlatformIO env:dog12, CMake strider_firmware_dog12):
 // the whole firmware, built for this model (its profile).
-#include "../firmware_build.h"
+#include "control/firmware_profile.h"
 using Firmware = strider::FirmwareProfile<strider::robot_index(strider::kDog12)>;
 #include "../firmware_main.h"

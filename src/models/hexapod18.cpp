@@ -1,5 +1,5 @@
 // Entry point of the hexapod18 firmware (PlatformIO env:hexapod18, CMake strider_firmware_hexapod18):
 // the whole firmware, built for this model (its profile).
-#include "../firmware_build.h"
+#include "control/firmware_profile.h"
 using Firmware = strider::FirmwareProfile<strider::robot_index(strider::kHexapod18)>;
 #include "../firmware_main.h"

@@ -36,6 +36,7 @@ struct FirmwareProfile : HostProfile<S> {
   static constexpr bool kFeet = false;
   static constexpr uint8_t kTickSlots = kSolvers == 1 ? kModel.dof() : 0;
   static constexpr uint8_t kJoints = kModel.joint_count();
+  static constexpr bool kSearch = false;
   static constexpr bool kStoredConfig = true;
   static constexpr bool kStoredLegs = true;
   static constexpr bool kStoredChannels = true;
@@ -46,7 +47,8 @@ struct FirmwareProfile : HostProfile<S> {
   //! The model's strides alone of the stored table, and its gait
   //! configuration at its defaults with the ramps (stored_gait_config()).
   static constexpr StoredStrides kStrides STRIDER_PROGMEM = stored_strides(r);
-  static constexpr GaitConfig<S, kLegs> kGaitConfig STRIDER_PROGMEM = stored_gait_config<S, kLegs>(r, &kStrides.code[0][0]);
+  static constexpr GaitConfig<S, kLegs, kSearch> kGaitConfig STRIDER_PROGMEM =
+      stored_gait_config<S, kLegs, kSearch>(r, &kStrides.code[0][0]);
   //! The walker's legs, but for the mounts' cos and sin (walker_legs()).
   static constexpr WalkerLegs<S, kLegs, kSolvers> kWalkerLegsInFlash STRIDER_PROGMEM =
       walker_legs<S, kLegs, kSolvers>(kModel);
@@ -59,7 +61,7 @@ struct FirmwareProfile : HostProfile<S> {
 template <uint8_t r, typename S>
 constexpr StoredStrides FirmwareProfile<r, S>::kStrides;
 template <uint8_t r, typename S>
-constexpr GaitConfig<S, FirmwareProfile<r, S>::kLegs> FirmwareProfile<r, S>::kGaitConfig;
+constexpr GaitConfig<S, FirmwareProfile<r, S>::kLegs, false> FirmwareProfile<r, S>::kGaitConfig;
 template <uint8_t r, typename S>
 constexpr WalkerLegs<S, FirmwareProfile<r, S>::kLegs, FirmwareProfile<r, S>::kSolvers> FirmwareProfile<r, S>::kWalkerLegsInFlash;
 template <uint8_t r, typename S>

@@ -100,14 +100,14 @@ class GaitTuner {
   //! swing under the model's own (kSwing: lo is the shapes' mask).
   TuneRange range(const WalkerMotion<S, P>& motion, TuneParam p) const {
     using namespace gait_tuner_detail;
-    const VelocityLimits<S>& lim = motion.walker().engine().config().limits;
+    const VelocityLimits<S, P::kSearch>& lim = motion.walker().engine().config().limits;
     const GaitTuning mine = own_tuning();
     switch (p) {
       case TuneParam::kStepHeight: return TuneRange{kMinStepHeightCmm, mine.step_height_cmm};
       case TuneParam::kStepLength: {
         S longest = S(0);
         for (uint8_t i = 0; i < motion.walker().leg_count(); ++i)
-          for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) longest = max_of(longest, lim.stride_mm(i, k));
+          for (uint8_t k = 0; k < kStrideDirections; ++k) longest = max_of(longest, lim.stride_mm(i, k));
         const int32_t hi = hundredths(longest);
         return TuneRange{kMinStepLengthCmm, hi > mine.step_length_cmm ? hi : int32_t(mine.step_length_cmm)};
       }
@@ -150,7 +150,7 @@ class GaitTuner {
   TuneOrigin origin() const { return origin_; }
   //! The shortest cycle [0.01 s] the servos step at with a duty of
   //! duty_pct [0.01]: 1 / their fastest step rate, rounded up.
-  static int32_t shortest_cycle_cs(const VelocityLimits<S>& lim, int32_t duty_pct) {
+  static int32_t shortest_cycle_cs(const VelocityLimits<S, P::kSearch>& lim, int32_t duty_pct) {
     using namespace gait_tuner_detail;
     const int32_t lo = hundredths(S(1) / lim.servo_hz(S(0), from_hundredths<S>(duty_pct))) + 1;
     return lo > kMinCycleCs ? lo : kMinCycleCs;

@@ -52,7 +52,7 @@ class WalkerMotion {
   //! The same at the model's gait defaults with their configuration from
   //! flash (Walker::configure_stored(): a firmware's constant), starting in
   //! `default_gait` (the defaults' default_gait).
-  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S, P::kLegs>* flash_config,
+  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S, P::kLegs, P::kSearch>* flash_config,
                         bool solve_now = true) {
     GaitTable gait;
     if (!load_gait(model, default_gait, &gait) ||
@@ -64,7 +64,7 @@ class WalkerMotion {
 
   //! The same with the walker's legs from flash too (walker_legs() of the
   //! model: a firmware's constant).
-  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S, P::kLegs>* flash_config,
+  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S, P::kLegs, P::kSearch>* flash_config,
                         const WalkerLegs<S, P::kLegs, P::kSolvers>* flash_legs, bool solve_now = true) {
     GaitTable gait;
     if (!load_gait(model, default_gait, &gait) ||
@@ -79,8 +79,8 @@ class WalkerMotion {
   const GaitTable& gait() const { return walker_.engine().gait(); }
 
   //! Protocol velocity -> engine command (the controller applied the speed %).
-  //! The controller repeats its command every tick: an unchanged one is not
-  //! planned again (planning costs more than a tick's gait step).
+  //! An unchanged one (an RC button the phone app repeats) is not planned
+  //! again: planning costs more than a tick's gait step.
   void set_velocity(const Twist& v) {
     if (have_command_ && v.vx == last_.vx && v.vy == last_.vy && v.wz == last_.wz) return;
     have_command_ = true;

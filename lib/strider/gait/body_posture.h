@@ -25,22 +25,22 @@ struct BodyPosture {
   }
 
   //! How far the body is below standing height [mm].
-  template <uint8_t kL>
-  S drop_mm(const GaitConfig<S, kL>& cfg) const {
+  template <uint8_t kL, bool kSr>
+  S drop_mm(const GaitConfig<S, kL, kSr>& cfg) const {
     // Standing (progress 1): no drop, and no products for it.
     return progress >= S(1) ? S(0) : cfg.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress));
   }
 
   //! The body in the stance frame: shift + offsets + sit/stand height.
-  template <uint8_t kL>
-  BodyPose<S> body_pose(const BodyShift<S>& shift, const GaitConfig<S, kL>& cfg) const {
+  template <uint8_t kL, bool kSr>
+  BodyPose<S> body_pose(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
     return BodyPose<S>::make(Vec3<S>(shift.x_mm() + pose.translation_mm.x, shift.y_mm() + pose.translation_mm.y,
                                      pose.translation_mm.z - drop_mm(cfg)),
                              pose.roll_rad, pose.pitch_rad, pose.yaw_rad);
   }
   //! body_pose()'s translation (sums in place: the same bits).
-  template <uint8_t kL>
-  Vec3<S> translation(const BodyShift<S>& shift, const GaitConfig<S, kL>& cfg) const {
+  template <uint8_t kL, bool kSr>
+  Vec3<S> translation(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
     const S drop = drop_mm(cfg);
     const Vec3<S>& t = pose.translation_mm;
     return Vec3<S>(add_inline(shift.x_mm(), t.x), add_inline(shift.y_mm(), t.y), sub_inline(t.z, drop));
@@ -63,8 +63,8 @@ struct BodyPosture {
 
   //! Every offset moves by at most its rate; when all were at the goal
   //! already (none moved), the pose is there.
-  template <uint8_t kL>
-  void step_pose(const GaitConfig<S, kL>& cfg, S dt) {
+  template <uint8_t kL, bool kSr>
+  void step_pose(const GaitConfig<S, kL, kSr>& cfg, S dt) {
     // At its goal (the usual case): nothing to move, no products.
     if (at_goal) return;
     const S dp = cfg.pose_speed_mm_s * dt, da = cfg.pose_rate_rad_s * dt;

@@ -12,13 +12,16 @@
 namespace strider {
 
 //! True when fill_gait_config() can give `model` with `params` and `shape`
-//! its velocity limits: always with the search built in, else only from the
-//! stored table.
-inline bool velocity_limits_known(const RobotModel& model, const GaitParams& params, SwingShape shape) {
-  return STRIDER_VELOCITY_SEARCH != 0 || stored_limits_index(model, params, shape) < kRobotCount;
+//! its velocity limits: always with the search (kSearch), else only from
+//! the stored table.
+template <bool kSearch>
+bool velocity_limits_known(const RobotModel& model, const GaitParams& params, SwingShape shape) {
+  return kSearch || stored_limits_index(model, params, shape) < kRobotCount;
 }
 
-template <typename S, uint8_t kLegs = kMaxLegs>
+//! kLegs: legs held; kSearch: the velocity limits' strides in RAM, from the
+//! IK search for any model (else the stored table's in flash, StrideTable).
+template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 struct GaitConfig {
   constexpr GaitConfig()
       : leg_count(0), step_height_mm(), stance_depth_mm(), foot_radius_mm(), com_x_mm(), com_y_mm(), margin_mm(),
@@ -49,7 +52,7 @@ struct GaitConfig {
   uint8_t min_support = 2;      //!< never lift a foot if fewer would stay down
   int8_t unit_shift;            //!< working units of the support polygon (stability.h)
   S edge_mm[kLegs] = {};     //!< half the leg's shortest stride: inside it no foot is at its edge [mm]
-  VelocityLimits<S> limits;
+  VelocityLimits<S, kSearch> limits;
 };
 
 //! Where make_gait_config() takes the velocity limits from.
@@ -62,15 +65,15 @@ namespace gait_config_detail {
 template <typename S>
 constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
 //! The largest |x| or |y| of the standing feet [mm].
-template <typename S, uint8_t kLegs>
-constexpr S reach_of(const GaitConfig<S, kLegs>& c) {
+template <typename S, uint8_t kLegs, bool kSearch>
+constexpr S reach_of(const GaitConfig<S, kLegs, kSearch>& c) {
   S reach = S(0);
   for (uint8_t i = 0; i < c.leg_count; ++i) reach = max_of(reach, max_of(magnitude(c.home[i].x), magnitude(c.home[i].y)));
   return reach;
 }
 //! The fixed speed limits of every configuration.
-template <typename S, uint8_t kLegs>
-constexpr void set_speeds(GaitConfig<S, kLegs>& c) {
+template <typename S, uint8_t kLegs, bool kSearch>
+constexpr void set_speeds(GaitConfig<S, kLegs, kSearch>& c) {
   c.shift_speed_mm_s = scalar<S>(400.0);
   c.pose_speed_mm_s = scalar<S>(50.0);
   c.pose_rate_rad_s = scalar<S>(0.5);
@@ -78,8 +81,8 @@ constexpr void set_speeds(GaitConfig<S, kLegs>& c) {
 }
 //! The fields that come from the gait defaults and the model's kind, for
 //! feet that reach `reach` mm (reach_of()) from the body's centre.
-template <typename S, uint8_t kLegs>
-constexpr void set_params(GaitConfig<S, kLegs>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
+template <typename S, uint8_t kLegs, bool kSearch>
+constexpr void set_params(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
                           S reach) {
   c.shape = shape;
   c.step_height_mm = scalar<S>(params.step_height_mm);
@@ -95,14 +98,39 @@ constexpr void set_params(GaitConfig<S, kLegs>& c, const RobotModel& model, cons
   c.min_support = model.leg_count == 6 ? 3 : 2;
   c.unit_shift = units::unit_shift(reach + reach);
 }
+//! The velocity limits: stored, or from the IK search (for another model or
+//! parameters, or when `source` asks for it).
+template <typename S>
+void set_limits(VelocityLimits<S, true>& lim, const RobotModel& model, const AnyLeg<S>* legs, const Vec3<S>* home,
+                const GaitParams& params, SwingShape shape, S step_height_mm, LimitsSource source) {
+  if (source == LimitsSource::kSearch || !stored_velocity_limits(model, params, shape, lim))
+    lim = compute_velocity_limits(model, legs, home, shape, step_height_mm, scalar<S>(params.step_length_mm),
+                                  scalar<S>(params.cycle_s));
+}
+//! Without the search: the stored limits, or none (no stride: the robot
+//! cannot walk; velocity_limits_known() said so before).
+template <typename S>
+void set_limits(VelocityLimits<S, false>& lim, const RobotModel& model, const AnyLeg<S>*, const Vec3<S>*,
+                const GaitParams& params, SwingShape shape, S, LimitsSource) {
+  if (!stored_velocity_limits(model, params, shape, lim)) lim = VelocityLimits<S, false>();
+}
+//! Robot r's strides of the stored table, in a configuration built at
+//! compile time: copied, or pointed at (flash_codes).
+constexpr void set_stored_strides(StrideTable<true>& t, uint8_t r, const uint16_t*) {
+  for (uint8_t i = 0; i < kMaxLegs; ++i)
+    for (uint8_t k = 0; k < kStrideDirections; ++k) t.stride_code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
+}
+constexpr void set_stored_strides(StrideTable<false>& t, uint8_t, const uint16_t* flash_codes) {
+  t.flash_codes = flash_codes;
+}
 }  // namespace gait_config_detail
 
 //! The ramps of a configuration whose other fields are set: from standing to
 //! the top forward speed of a trot-like duty in one default cycle, which
 //! keeps every first stance within its stride, and the touch-down points'
 //! speed. Run time only (velocity plans); fill_gait_config() ends with it.
-template <typename S, uint8_t kLegs>
-void finish_gait_config(GaitConfig<S, kLegs>& c) {
+template <typename S, uint8_t kLegs, bool kSearch>
+void finish_gait_config(GaitConfig<S, kLegs, kSearch>& c) {
   const S reach = gait_config_detail::reach_of(c);
   const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
   const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
@@ -116,8 +144,8 @@ void finish_gait_config(GaitConfig<S, kLegs>& c) {
 //! model at its defaults takes its velocity limits from the stored table
 //! (stored_velocity_limits.h: no IK, a few thousand cycles); otherwise they
 //! cost a few thousand IK calls: call it at start-up, not per tick.
-template <typename S, uint8_t kLegs>
-void fill_gait_config(GaitConfig<S, kLegs>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
+template <typename S, uint8_t kLegs, bool kSearch>
+void fill_gait_config(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
                       SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {
   if (model.leg_count > kLegs) {  // more legs than this build's walker holds
     c.leg_count = 0;
@@ -130,17 +158,7 @@ void fill_gait_config(GaitConfig<S, kLegs>& c, const RobotModel& model, const An
     reach = max_of(reach, max_of(abs(c.home[i].x), abs(c.home[i].y)));
   }
   gait_config_detail::set_params(c, model, params, shape, reach);
-#if STRIDER_VELOCITY_SEARCH
-  if (source == LimitsSource::kSearch || !stored_velocity_limits(model, params, shape, c.limits))
-    c.limits = compute_velocity_limits(model, legs, c.home, shape, c.step_height_mm,
-                                       scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
-#else
-  // Without the search: the stored limits, or none (no stride: the robot
-  // cannot walk; velocity_limits_known() said so before).
-  (void)source;
-  (void)legs;
-  if (!stored_velocity_limits(model, params, shape, c.limits)) c.limits = VelocityLimits<S>();
-#endif
+  gait_config_detail::set_limits(c.limits, model, legs, c.home, params, shape, c.step_height_mm, source);
   for (uint8_t i = 0; i < model.leg_count; ++i) {
     S shortest = c.limits.stride_mm(i, 0);
     for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
@@ -153,12 +171,12 @@ void fill_gait_config(GaitConfig<S, kLegs>& c, const RobotModel& model, const An
 //! One robot's strides of the stored table ([leg][direction], 1/32 mm):
 //! what a firmware keeps in flash of velocity_limit_table.h.
 struct StoredStrides {
-  uint16_t code[kMaxLegs][VelocityLimits<float>::kDirections];
+  uint16_t code[kMaxLegs][kStrideDirections];
 };
 constexpr StoredStrides stored_strides(uint8_t r) {
   StoredStrides s{};
   for (uint8_t i = 0; i < kMaxLegs; ++i)
-    for (uint8_t k = 0; k < VelocityLimits<float>::kDirections; ++k) s.code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
+    for (uint8_t k = 0; k < kStrideDirections; ++k) s.code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
   return s;
 }
 
@@ -166,15 +184,15 @@ namespace gait_config_detail {
 //! The ramps of stored configuration r: Fixed's from the table (what
 //! finish_gait_config() gives it, computed by tools/gen), float's left to
 //! finish_gait_config() at run time (stored_ramps_given).
-template <uint8_t kLegs>
-constexpr void set_stored_ramps(GaitConfig<Fixed, kLegs>& c, uint8_t r) {
+template <uint8_t kLegs, bool kSearch>
+constexpr void set_stored_ramps(GaitConfig<Fixed, kLegs, kSearch>& c, uint8_t r) {
   using T = detail::VelocityLimitTables<>;
   c.accel_mm_s2 = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][0]) | (uint32_t(T::kRamp[r][1]) << 16)));
   c.yaw_accel_rad_s2 = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][2]) | (uint32_t(T::kRamp[r][3]) << 16)));
   c.target_speed_mm_s = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][4]) | (uint32_t(T::kRamp[r][5]) << 16)));
 }
-template <uint8_t kLegs>
-constexpr void set_stored_ramps(GaitConfig<float, kLegs>&, uint8_t) {}
+template <uint8_t kLegs, bool kSearch>
+constexpr void set_stored_ramps(GaitConfig<float, kLegs, kSearch>&, uint8_t) {}
 }  // namespace gait_config_detail
 //! Whether stored_gait_config<S>() includes the ramps (Fixed) or leaves
 //! them to finish_gait_config() (float).
@@ -189,14 +207,14 @@ constexpr bool stored_ramps_given<Fixed>() { return true; }
 //! (stored_ramps_given()): a firmware, whose
 //! model is a constant of the build, keeps it in flash instead of converting
 //! the float model and looking the limits up at start-up. flash_codes: where
-//! the strides are (STRIDER_VELOCITY_SEARCH 0; without: the whole table's).
-template <typename S, uint8_t kLegs = kMaxLegs>
-constexpr GaitConfig<S, kLegs> stored_gait_config(uint8_t r, const uint16_t* flash_codes) {
+//! the strides are (kSearch false: StrideTable<false>).
+template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
+constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r, const uint16_t* flash_codes) {
   namespace enc = velocity_limit_encoding;
   using T = detail::VelocityLimitTables<>;
   const RobotModel& model = *kAllRobots[r];
   const GaitParams& params = kGaitParams[r];
-  GaitConfig<S, kLegs> c{};
+  GaitConfig<S, kLegs, kSearch> c{};
   c.leg_count = model.leg_count;
   for (uint8_t i = 0; i < model.leg_count; ++i) {
     const Vec3<float>& h = model.legs[i].stand_mm;
@@ -209,13 +227,7 @@ constexpr GaitConfig<S, kLegs> stored_gait_config(uint8_t r, const uint16_t* fla
   c.limits.sideways = model.kind != LegKind::kPlanar;
   c.limits.min_hz = S(1) / scalar<S>(params.cycle_s);
   c.limits.preferred_stride_mm = scalar<S>(params.step_length_mm);
-#if STRIDER_VELOCITY_SEARCH
-  (void)flash_codes;
-  for (uint8_t i = 0; i < kMaxLegs; ++i)
-    for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k) c.limits.stride_code[i][k] = T::kStride[r][i][k];
-#else
-  c.limits.flash_codes = flash_codes;
-#endif
+  gait_config_detail::set_stored_strides(c.limits, r, flash_codes);
   S servo[3] = {};
   for (uint8_t j = 0; j < 3; ++j)
     servo[j] = enc::q16_of(uint32_t(T::kServo[r][2 * j]) | (uint32_t(T::kServo[r][2 * j + 1]) << 16), S());
@@ -233,9 +245,9 @@ constexpr GaitConfig<S, kLegs> stored_gait_config(uint8_t r, const uint16_t* fla
   return c;
 }
 
-template <typename S, uint8_t kLegs = kMaxLegs>
-constexpr GaitConfig<S, kLegs> stored_gait_config(uint8_t r) {
-  return stored_gait_config<S, kLegs>(r, &detail::VelocityLimitTables<>::kStride[r][0][0]);
+template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
+constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r) {
+  return stored_gait_config<S, kLegs, kSearch>(r, &detail::VelocityLimitTables<>::kStride[r][0][0]);
 }
 
 //! The same as a value (fill_gait_config() builds it in place: no copy of

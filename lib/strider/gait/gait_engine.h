@@ -24,7 +24,8 @@
 
 namespace strider {
 
-template <typename S, uint8_t kLegs = kMaxLegs>
+//! kLegs, kSearch: as GaitConfig's.
+template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 class GaitEngine {
  public:
   //! The robot stands with no configuration (configure() before use).
@@ -34,7 +35,7 @@ class GaitEngine {
         window_(), posture_() {}
 
   //! Takes the configuration and a gait; the robot stands (or sits).
-  void configure(const GaitConfig<S, kLegs>& config, const GaitTable& gait, bool sitting = false);
+  void configure(const GaitConfig<S, kLegs, kSearch>& config, const GaitTable& gait, bool sitting = false);
   //! The same with the configuration built in place (fill_gait_config()).
   void configure(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params, SwingShape shape,
                  const GaitTable& gait, bool sitting = false) {
@@ -43,7 +44,7 @@ class GaitEngine {
   }
   //! The same from a configuration in flash (stored_gait_config()), copied
   //! into place and finished there (finish_gait_config()) if its ramps are not given.
-  void configure_stored(const GaitConfig<S, kLegs>* flash_config, const GaitTable& gait, bool sitting = false) {
+  void configure_stored(const GaitConfig<S, kLegs, kSearch>* flash_config, const GaitTable& gait, bool sitting = false) {
     flash_copy(&cfg_, flash_config, sizeof cfg_);
     finish_stored(cfg_);
     configure(cfg_, gait, sitting);
@@ -161,7 +162,7 @@ class GaitEngine {
   GaitTable table() const { return phases_.table(); }
   //! The gait as given to configure() or set_gait() (table() may be relabelled).
   const GaitTable& gait() const { return phases_.base; }
-  const GaitConfig<S, kLegs>& config() const { return cfg_; }
+  const GaitConfig<S, kLegs, kSearch>& config() const { return cfg_; }
   const SupportPolygon<S, kLegs>& support() const {
     if (support_dirty_) build_support();
     return support_;
@@ -169,8 +170,8 @@ class GaitEngine {
 
  private:
   // A stored configuration with its ramps (Fixed) needs no finishing.
-  static void finish_stored(GaitConfig<float, kLegs>& c) { finish_gait_config(c); }
-  static void finish_stored(GaitConfig<Fixed, kLegs>&) {}
+  static void finish_stored(GaitConfig<float, kLegs, kSearch>& c) { finish_gait_config(c); }
+  static void finish_stored(GaitConfig<Fixed, kLegs, kSearch>&) {}
 
   void load_table(const GaitTable& t) {
     phases_.load(t, cfg_.leg_count);
@@ -214,7 +215,7 @@ class GaitEngine {
   void build_support() const;
 
   // Members without a default here are set by the constructor (zero).
-  GaitConfig<S, kLegs> cfg_;
+  GaitConfig<S, kLegs, kSearch> cfg_;
   TablePhases<S, kLegs> phases_;
   GaitState state_ = GaitState::kStanding;
   bool sit_requested_;

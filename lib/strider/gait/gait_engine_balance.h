@@ -8,8 +8,8 @@
 
 namespace strider {
 
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::step_shift(S dt) {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::step_shift(S dt) {
   if (!phases_.base.shift_body) {  // relabelling keeps it
     // Back to no shift (after a gait change); once there, nothing to move.
     if (shift_.x_mm() != S(0) || shift_.y_mm() != S(0)) shift_.step_toward(S(0), S(0), cfg_.shift_speed_mm_s * dt);
@@ -80,8 +80,8 @@ void GaitEngine<S, kLegs>::step_shift(S dt) {
   shift_.step_toward(clamp(tx, -b, b), clamp(ty, -b, b), max_step);
 }
 
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::update_margin() const {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::update_margin() const {
   margin_fresh_ = true;
   const BodyPose<S> bp = body_pose();
   S cx = bp.translation_mm.x + cfg_.com_x_mm, cy = bp.translation_mm.y + cfg_.com_y_mm;
@@ -98,8 +98,8 @@ void GaitEngine<S, kLegs>::update_margin() const {
 //! The support polygon of the feet down now (stability.h), built when first
 //! needed after a lift-off or touch-down: gaits that do not shift the body
 //! need it only for margin_mm().
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::build_support() const {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::build_support() const {
   support_.build(foot_, contact_, cfg_.leg_count, cfg_.foot_radius_mm, cfg_.unit_shift);
   support_dirty_ = false;
 }

@@ -8,8 +8,8 @@
 
 namespace strider {
 
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::lift_foot(uint8_t i, bool crossed) {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::lift_foot(uint8_t i, bool crossed) {
   swing_.lift[i] = foot_[i];
   contact_[i] = false;
   pending_[i] = false;
@@ -28,8 +28,8 @@ void GaitEngine<S, kLegs>::lift_foot(uint8_t i, bool crossed) {
                        : cfg_.step_height_mm;
 }
 
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::step_swing(S dt) {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::step_swing(S dt) {
   const uint8_t n = cfg_.leg_count;
   // Touch-down points move at most max_step per tick (command and gait changes).
   const S max_step = cfg_.target_speed_mm_s * dt;
@@ -66,8 +66,8 @@ void GaitEngine<S, kLegs>::step_swing(S dt) {
   }
 }
 
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::settle_target(uint8_t i, S max_step) {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::settle_target(uint8_t i, S max_step) {
   // Every tick of a ramp, for every foot in the air.
   S wx, wy;
   touchdown_xy(i, wx, wy);

@@ -8,8 +8,8 @@
 
 namespace strider {
 
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::configure(const GaitConfig<S, kLegs>& config, const GaitTable& gait, bool sitting) {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::configure(const GaitConfig<S, kLegs, kSearch>& config, const GaitTable& gait, bool sitting) {
   if (&config != &cfg_) cfg_ = config;
   phases_.base = gait;
   phases_.relabel = false;  // table() is the gait as given until the robot walks
@@ -30,8 +30,8 @@ void GaitEngine<S, kLegs>::configure(const GaitConfig<S, kLegs>& config, const G
   edge_.configure(cfg_);
 }
 
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::set_gait(const GaitTable& gait) {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::set_gait(const GaitTable& gait) {
   const S old_duty = phases_.duty;
   phases_.base = gait;
   load_table(phases_.relabel ? gait_table::relabeled(gait, phases_.quarter) : gait);
@@ -40,8 +40,8 @@ void GaitEngine<S, kLegs>::set_gait(const GaitTable& gait) {
   replan();
 }
 
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::start_walking() {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::start_walking() {
   const VelocityPlan<S>& to = ramp_.plan;
   const bool relabel = phases_.base.relabel_by_direction && (to.vx_mm_s != S(0) || to.vy_mm_s != S(0));
   int8_t quarter = 0;
@@ -75,8 +75,8 @@ void GaitEngine<S, kLegs>::start_walking() {
   state_ = GaitState::kWalking;
 }
 
-template <typename S, uint8_t kLegs>
-void GaitEngine<S, kLegs>::step_walk(S dt) {
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::step_walk(S dt) {
   // A steady command (the ramp over, the products known) and its landing
   // stride known: nothing to ramp or place.
   if (ramp_.t < S(1) || !ramp_.vel_fresh) ramp_.step(dt);
@@ -121,8 +121,8 @@ void GaitEngine<S, kLegs>::step_walk(S dt) {
   }
 }
 
-template <typename S, uint8_t kLegs>
-bool GaitEngine<S, kLegs>::step_ground(const BodyStep<S>& step, S dt) {
+template <typename S, uint8_t kLegs, bool kSearch>
+bool GaitEngine<S, kLegs, kSearch>::step_ground(const BodyStep<S>& step, S dt) {
   clock_.advance(dt, ramp_.hz);
   const uint32_t delta = Phase16(clock_.now() - clock_.before());
   const uint8_t n = cfg_.leg_count;
@@ -160,8 +160,8 @@ bool GaitEngine<S, kLegs>::step_ground(const BodyStep<S>& step, S dt) {
   return changed;
 }
 
-template <typename S, uint8_t kLegs>
-bool GaitEngine<S, kLegs>::step_lift(const bool* edge) {
+template <typename S, uint8_t kLegs, bool kSearch>
+bool GaitEngine<S, kLegs, kSearch>::step_lift(const bool* edge) {
   const uint8_t n = cfg_.leg_count;
   bool changed = false;
   for (uint8_t i = 0; i < n; ++i) {

@@ -19,7 +19,8 @@ struct ReachEdge {
   // Squared radius [unit^2] inside which no foot is at its edge.
   S r2[kLegs];
 
-  void configure(const GaitConfig<S, kLegs>& cfg) {
+  template <bool kSearch>
+  void configure(const GaitConfig<S, kLegs, kSearch>& cfg) {
     // kEdgeShare of the shortest stride (2 edge_mm), 1 % less for rounding,
     // squared in working units.
     constexpr S share = scalar<S>(kEdgeShare * 2.0 * 0.99);
@@ -29,7 +30,8 @@ struct ReachEdge {
     }
   }
 
-  STRIDER_ALWAYS_INLINE bool beyond(const GaitConfig<S, kLegs>& cfg, uint8_t i, const Vec3<S>& p) const {
+  template <bool kSearch>
+  STRIDER_ALWAYS_INLINE bool beyond(const GaitConfig<S, kLegs, kSearch>& cfg, uint8_t i, const Vec3<S>& p) const {
     const S dx = sub_inline(p.x, cfg.home[i].x), dy = sub_inline(p.y, cfg.home[i].y);
     const S r = cfg.edge_mm[i];
     // inside the shortest stride's diamond: no product (sums in place, scalar.h)
@@ -39,7 +41,8 @@ struct ReachEdge {
 
   //! beyond() for a foot (dx, dy) [mm] from home outside the shortest
   //! stride's diamond: apart, so that the usual answer costs no call.
-  STRIDER_NOINLINE bool beyond_diamond(const GaitConfig<S, kLegs>& cfg, uint8_t i, S dx, S dy) const {
+  template <bool kSearch>
+  STRIDER_NOINLINE bool beyond_diamond(const GaitConfig<S, kLegs, kSearch>& cfg, uint8_t i, S dx, S dy) const {
     // Inside the shortest stride's circle (a little smaller, for rounding):
     // two products instead of the atan2, the square root and the lookup.
     const S ux = units::to_unit(dx, cfg.unit_shift), uy = units::to_unit(dy, cfg.unit_shift);

@@ -48,8 +48,8 @@ struct SpeedRamp {
   //! Plans the command and starts the ramp to it. The ramp runs in phase,
   //! linearly in the stride per cycle and the rate: at least one cycle, and
   //! no faster than the acceleration limits at the faster of the two rates.
-  template <uint8_t kL>
-  void replan(const GaitConfig<S, kL>& cfg, S duty, S budget, bool shift_body) {
+  template <uint8_t kL, bool kSr>
+  void replan(const GaitConfig<S, kL, kSr>& cfg, S duty, S budget, bool shift_body) {
     plan = cfg.limits.plan(cfg.home, cmd_vx, cmd_vy, cmd_wz, duty, budget, shift_body);
     const S inv = S(1) / plan.step_hz;
     to = Stride<S>{plan.vx_mm_s * inv, plan.vy_mm_s * inv, plan.wz_rad_s * inv, plan.step_hz};
@@ -64,8 +64,8 @@ struct SpeedRamp {
   }
 
   //! Cycles a stop from now takes (replan() with a zero command).
-  template <uint8_t kL>
-  S stop_cycles(const GaitConfig<S, kL>& cfg, S duty) const {
+  template <uint8_t kL, bool kSr>
+  S stop_cycles(const GaitConfig<S, kL, kSr>& cfg, S duty) const {
     const S rest_hz = min_of(cfg.limits.min_hz, cfg.limits.servo_hz(S(0), duty));
     const S time = max_of(max_of(abs(vx), abs(vy)) / cfg.accel_mm_s2, abs(wz) / cfg.yaw_accel_rad_s2);
     return max_of(time * max_of(rest_hz, hz), S(1));

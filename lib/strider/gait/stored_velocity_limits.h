@@ -46,9 +46,23 @@ inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& pa
 //! Fills `out` from the table for `model` with `params` and `shape`, as
 //! compute_velocity_limits() would (min_hz, preferred stride, sideways
 //! included). Returns false, `out` untouched, when the table has no entry.
-template <typename S>
+namespace stored_limits_detail {
+//! Robot r's strides of the stored table: copied into a table in RAM, or
+//! pointed at in flash.
+inline void set_strides(StrideTable<true>& t, uint8_t r) {
+  for (uint8_t i = 0; i < kMaxLegs; ++i)
+    for (uint8_t k = 0; k < kStrideDirections; ++k)
+      t.stride_code[i][k] = flash_u16(&detail::VelocityLimitTables<>::kStride[r][i][0], k);
+}
+inline void set_strides(StrideTable<false>& t, uint8_t r) {
+  static_assert(kMaxLegs == 6, "the stored table has six legs per robot");
+  t.flash_codes = &detail::VelocityLimitTables<>::kStride[r][0][0];
+}
+}  // namespace stored_limits_detail
+
+template <typename S, bool kSearch>
 bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, SwingShape shape,
-                            VelocityLimits<S>& out) {
+                            VelocityLimits<S, kSearch>& out) {
   namespace enc = velocity_limit_encoding;
   const uint8_t r = stored_limits_index(model, params, shape);
   if (r >= kRobotCount) return false;
@@ -57,15 +71,7 @@ bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, S
   out.sideways = model.kind != LegKind::kPlanar;
   out.min_hz = S(1) / scalar<S>(params.cycle_s);
   out.preferred_stride_mm = scalar<S>(params.step_length_mm);
-#if STRIDER_VELOCITY_SEARCH
-  constexpr uint8_t kDirections = VelocityLimits<S>::kDirections;
-  for (uint8_t i = 0; i < kMaxLegs; ++i)
-    for (uint8_t k = 0; k < kDirections; ++k)
-      out.stride_code[i][k] = flash_u16(&T::kStride[r][i][0], k);
-#else
-  static_assert(kMaxLegs == 6, "the stored table has six legs per robot");
-  out.flash_codes = &T::kStride[r][0][0];
-#endif
+  stored_limits_detail::set_strides(out, r);
   S servo[3];
   for (uint8_t j = 0; j < 3; ++j) {
     const uint32_t lo = flash_u16(T::kServo[r], uint16_t(2 * j)), hi = flash_u16(T::kServo[r], uint16_t(2 * j + 1));

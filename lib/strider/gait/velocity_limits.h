@@ -22,16 +22,6 @@
 #include "swing_trajectory.h"
 #include "velocity_limit_encoding.h"
 
-//! 1 (default): a model or gait parameters without stored velocity limits
-//! (stored_velocity_limits.h) get them from the IK search (velocity_search.h). A firmware
-//! for built-in models defines it 0 before any Strider header: the search
-//! is not built (flash), the strides are read from the stored table in
-//! flash instead of a copy in RAM, and a configuration without stored limits
-//! is refused (gait_config.h's velocity_limits_known()).
-#ifndef STRIDER_VELOCITY_SEARCH
-#define STRIDER_VELOCITY_SEARCH 1
-#endif
-
 namespace strider {
 
 //! Share of a servo's no-load speed a step may use.
@@ -56,36 +46,46 @@ struct VelocityPlan {
   bool limited;                  //!< the command was scaled down
 };
 
-template <typename S>
-struct VelocityLimits {
-  static constexpr uint8_t kDirections = 16;  //!< direction k at k * 22.5 deg from forward
+//! Direction k of a stride table is k * 22.5 deg from forward.
+constexpr uint8_t kStrideDirections = 16;
 
-  constexpr VelocityLimits()
-      : leg_count(0),
-#if !STRIDER_VELOCITY_SEARCH
-        flash_codes(nullptr),
-#endif
-        preferred_stride_mm(), lift_ms(), swing_ms_per_mm(), stance_ms_per_mm() {
+//! Where a robot's stride table lives (the longest stride of leg i along
+//! direction k, in 1/32 mm, velocity_limit_encoding.h: half the RAM of S,
+//! exact in both scalars). In RAM (kInRam): filled by the IK search
+//! (velocity_search.h) or copied from the stored table. Otherwise a pointer
+//! to the stored table in flash (a firmware: no search is built, and the
+//! 192 bytes stay out of RAM); a configuration without stored limits is
+//! refused (gait_config.h's velocity_limits_known()).
+template <bool kInRam>
+struct StrideTable {
+  uint16_t stride_code[kMaxLegs][kStrideDirections] = {};
+  uint16_t code(uint8_t leg, uint8_t k) const { return stride_code[leg][k]; }
+  //! Sets leg's stride along k [mm] (rounded to 1/32 mm).
+  template <typename S>
+  void set_stride_mm(uint8_t leg, uint8_t k, S mm) { stride_code[leg][k] = velocity_limit_encoding::stride_code(mm); }
+};
+template <>
+struct StrideTable<false> {
+  //! The stored table's codes of this robot, [kMaxLegs][kStrideDirections]
+  //! in flash (nullptr: no stride at all).
+  const uint16_t* flash_codes = nullptr;
+  uint16_t code(uint8_t leg, uint8_t k) const {
+    return flash_codes == nullptr ? uint16_t(0) : flash_u16(flash_codes, uint16_t(leg * kStrideDirections + k));
   }
+};
+
+//! kSearch: the strides in RAM, as the IK search gives them (StrideTable).
+template <typename S, bool kSearch = true>
+struct VelocityLimits : StrideTable<kSearch> {
+  static constexpr uint8_t kDirections = kStrideDirections;
+
+  constexpr VelocityLimits() : leg_count(0), preferred_stride_mm(), lift_ms(), swing_ms_per_mm(), stance_ms_per_mm() {}
 
   uint8_t leg_count;  // zero, by the constructors
   //! False for planar legs (seed 003): they cannot step sideways, so a
   //! sideways command is dropped (and reported as limited); turning stays,
   //! its sideways part reported by the walker as clamped.
   bool sideways = true;
-  //! Longest stride of leg i along direction k, in 1/32 mm
-  //! (velocity_limit_encoding.h): half the RAM of S, exact in both scalars.
-#if STRIDER_VELOCITY_SEARCH
-  uint16_t stride_code[kMaxLegs][kDirections] = {};
-  uint16_t code(uint8_t leg, uint8_t k) const { return stride_code[leg][k]; }
-#else
-  //! The stored table's codes of this robot, [kMaxLegs][kDirections] in
-  //! flash (nullptr: no stride at all).
-  const uint16_t* flash_codes;  // nullptr, by the constructors
-  uint16_t code(uint8_t leg, uint8_t k) const {
-    return flash_codes == nullptr ? uint16_t(0) : flash_u16(flash_codes, uint16_t(leg * kDirections + k));
-  }
-#endif
   S min_hz = S(1);                     //!< default step rate, 1 / cycle_s [Hz]
   S preferred_stride_mm;               //!< step_length_mm [mm]
   S lift_ms;                           //!< servo time of a swing's lift alone [ms]
@@ -93,11 +93,7 @@ struct VelocityLimits {
   S stance_ms_per_mm;                  //!< servo time of a stance per mm of stride [ms/mm]
 
   //! Leg i's longest stride along direction k [mm].
-  S stride_mm(uint8_t leg, uint8_t k) const { return velocity_limit_encoding::stride_of(code(leg, k), S()); }
-#if STRIDER_VELOCITY_SEARCH
-  //! Sets it [mm] (rounded to 1/32 mm).
-  void set_stride_mm(uint8_t leg, uint8_t k, S mm) { stride_code[leg][k] = velocity_limit_encoding::stride_code(mm); }
-#endif
+  S stride_mm(uint8_t leg, uint8_t k) const { return velocity_limit_encoding::stride_of(this->code(leg, k), S()); }
 
   //! Leg i's longest stride along (dx, dy) (any length, not both 0) [mm],
   //! interpolated between the two nearest of the 16 directions, less twice

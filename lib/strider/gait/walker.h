@@ -35,7 +35,7 @@ class Walker {
   //! solves them once its copy of the model is off the stack).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
                  bool sitting = false, bool solve_now = true) {
-    if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !velocity_limits_known(model, params, shape) || !build_legs(model))
+    if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !velocity_limits_known<P::kSearch>(model, params, shape) || !build_legs(model))
       return false;
     configure_engine(model, params, shape, gait, sitting);
     reset_legs(solve_now);
@@ -47,7 +47,7 @@ class Walker {
   //! float model's gait figures, no limits look-up. The caller makes sure
   //! that flash_config is stored_gait_config() of this model (a firmware:
   //! at compile time).
-  bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs>* flash_config,
+  bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>* flash_config,
                         bool sitting = false, bool solve_now = true) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !build_legs(model)) return false;
     engine_.configure_stored(flash_config, gait, sitting);
@@ -57,7 +57,7 @@ class Walker {
 
   //! The same with the legs from flash too (walker_legs() of the model,
   //! which the caller makes sure of): no conversion of the float model at all.
-  bool configure_stored(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, const GaitTable& gait, const GaitConfig<S, kLegs>* flash_config,
+  bool configure_stored(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>* flash_config,
                         bool sitting = false, bool solve_now = true) {
     if (!build_legs(flash_legs, gait.leg_count)) return false;
     engine_.configure_stored(flash_config, gait, sitting);
@@ -69,7 +69,7 @@ class Walker {
   //! search, so a robot can switch configurations quickly. The legs are
   //! built from `model` every time (a copy of a few fields each; a model is
   //! not recognised by its address, which a copy that is gone may share).
-  bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs>& config,
+  bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>& config,
                  bool sitting = false) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || config.leg_count != model.leg_count)
       return false;
@@ -82,15 +82,15 @@ class Walker {
   //! Starts over with the legs built before and `config` (which may be the
   //! engine's own), without the model: false when no legs are built or the
   //! leg counts differ.
-  bool restart(const GaitTable& gait, const GaitConfig<S, kLegs>& config, bool sitting = false) {
+  bool restart(const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>& config, bool sitting = false) {
     if (dof_ == 0 || gait.leg_count != config.leg_count || config.leg_count != leg_count()) return false;
     engine_.configure(config, gait, sitting);
     reset_legs();
     return true;
   }
 
-  GaitEngine<S, kLegs>& engine() { return engine_; }
-  const GaitEngine<S, kLegs>& engine() const { return engine_; }
+  GaitEngine<S, kLegs, P::kSearch>& engine() { return engine_; }
+  const GaitEngine<S, kLegs, P::kSearch>& engine() const { return engine_; }
   //! Leg i as one AnyLeg: its solver at its mount (a copy: legs of one
   //! geometry may share their solver, P::kSolvers).
   AnyLeg<S> leg_model(uint8_t i) const { return legs_.leg(i); }
@@ -114,6 +114,8 @@ class Walker {
   void refresh() { solve(); }
 
   const Result& leg(uint8_t i) const { return out_[i]; }
+  //! Every leg's result, leg_count() of them (ServoStage::frame()).
+  const Result* results() const { return out_; }
   //! A body-frame point [mm] in leg i's frame, as the walker computes it
   //! (LegMount::body_to_leg with fewer products for the usual mounts).
   Vec3<S> to_leg(uint8_t i, const Vec3<S>& body_mm) const { return to_leg_unchecked(i, body_mm); }
@@ -220,17 +222,16 @@ class Walker {
   }
 
   //! The engine's configuration from the model, built in place. The search
-  //! needs an AnyLeg per leg: shared solvers build them on the stack.
+  //! (P::kSearch) needs an AnyLeg per leg: shared solvers build them on the
+  //! stack.
   void configure_engine(const RobotModel& model, const GaitParams& params, SwingShape shape, const GaitTable& gait,
                         bool sitting) {
-#if STRIDER_VELOCITY_SEARCH
-    if (legs_.per_leg() == nullptr) {
+    if (P::kSearch && legs_.per_leg() == nullptr) {
       AnyLeg<S> legs[kLegs];
       for (uint8_t i = 0; i < model.leg_count; ++i) legs[i] = leg_model(i);
       engine_.configure(model, legs, params, shape, gait, sitting);
       return;
     }
-#endif
     engine_.configure(model, legs_.per_leg(), params, shape, gait, sitting);
   }
 
@@ -290,7 +291,7 @@ class Walker {
   MountTurn turn_[kLegs];  // of each leg's mount (mount_turn.h)
   ReachProjection<S> proj_;
   IkOptions<S> ik_options_{};  // the defaults, built once rather than per leg and tick
-  GaitEngine<S, kLegs> engine_;
+  GaitEngine<S, kLegs, P::kSearch> engine_;
   Result out_[kLegs];
 };
 

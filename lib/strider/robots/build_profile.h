@@ -28,6 +28,10 @@ struct HostProfile {
   //! joint; the joints per leg for legs of one geometry, servo_tick_map.h).
   static constexpr uint8_t kTickSlots = 0;
   static constexpr uint8_t kJoints = kMaxLegs * kMaxLegDof;  //!< most servos driven
+  //! The velocity limits of any model and gait parameters by the IK search,
+  //! their strides in RAM; false: only the stored limits of the built-in
+  //! models at their defaults, read from flash (gait/velocity_limits.h).
+  static constexpr bool kSearch = true;
   //! Which of the model's constants the profile holds (FirmwareProfile's
   //! kGaitConfig, kWalkerLegsInFlash, kChannels, kDefaultGait, kAvoidClearMm);
   //! the others are built from the model at start-up.
