@@ -5,7 +5,8 @@
 //! refuse motion until cleared.
 //!
 //! MotionSink members (template concept, no virtual calls):
-//!   void set_velocity(const Twist& v);   // [0.1 mm/s], [0.1 deg/s]; zero = step in place/stop
+//!   void set_velocity(const Twist& v);   // [0.1 mm/s], [0.1 deg/s]; zero = step in place/stop;
+//!                                         // a motion command, or avoidance changing it
 //!   void stand();                         // stop walking and stand
 //!   void relax();                         // servos limp
 //!   bool set_gait(const char* name);      // false: no such gait for this robot
@@ -95,8 +96,13 @@ class MotionModes {
     cfg.slow_mm = settings.avoid_slow_mm;
     cfg.clear_mm = avoid_clear_mm_;
     const AvoidState before = avoid_.state();
-    out_ = avoid_.update(cmd_, sonar, now_ms, cfg, walked_vy);
-    sink_.set_velocity(out_);
+    // The sink hears of the velocity only when avoidance changes it: out_ is
+    // what it walks (move() set it to the operator's command).
+    const Twist next = avoid_.update(cmd_, sonar, now_ms, cfg, walked_vy);
+    if (next.vx != out_.vx || next.vy != out_.vy || next.wz != out_.wz) {
+      out_ = next;
+      sink_.set_velocity(out_);
+    }
     if (avoid_.state() != before && avoid_.state() != AvoidState::kPassThrough) {
       w.text(FlashText{text::kInfoAvoid_}).text(to_flash(avoid_.state()));
       return true;
@@ -125,7 +131,8 @@ class MotionModes {
     } else {
       mode_ = RobotMode::kWalking;
       if (pad) sink_.choose_pad_gait(cmd_);
-      sink_.set_velocity(cmd_);  // avoidance refines it on the next tick
+      out_ = cmd_;  // avoidance refines it on the next tick
+      sink_.set_velocity(out_);
     }
     w.format(FlashText{text::kOkMoveFmt}, t.vx, t.vy, t.wz);
   }

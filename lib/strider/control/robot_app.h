@@ -154,7 +154,7 @@ class RobotApp {
       motion_.stand_up();
     if (board_watch_.restored(stage_.starting())) controller_.set_servo_fault(board_watch_.faulted != 0);
     motion_.walker().tick(dt_s);
-    stage_.frame(motion_.walker(), now_ms, out_);
+    stage_.frame(motion_.walker().results(), now_ms, out_);
   }
 
   //! How long the last tick took [us] (the caller measures), ticks it had

@@ -1,10 +1,8 @@
 //! ServoStage: the last step before the servo boards. Every frame it maps the
-//! walker's joints to PCA9685 ticks (servo_tick_map.h, with the live trims), moves
-//! each output towards its target by at most what the servo can turn in one
-//! frame (so a new gait, pose or trim never makes the PCA9685 jump: the
-//! board switches to a new width at once, the servo would slam), and writes
-//! only the channels that changed. Output::flush() ends the frame (the driver
-//! sends its changed channels in auto-increment bursts).
+//! legs' joint angles to PCA9685 ticks (servo_tick_map.h, with the live
+//! trims), moves each output towards its target by at most what the servo
+//! turns in one frame (a new gait, pose or trim never makes a servo slam),
+//! and writes only the channels that changed; Output::flush() ends the frame.
 //!
 //! Soft start: after power-up or relax every output is off (no pulse, servo
 //! limp); the legs are switched on one at a time, kSoftStartStepMs apart, so
@@ -19,7 +17,7 @@
 
 #include <stdint.h>
 
-#include "../gait/walker.h"
+#include "../robots/build_profile.h"
 #include "channel_map.h"
 #include "joint_channels.h"
 #include "servo_boards.h"
@@ -148,9 +146,11 @@ class ServoStage {
     fit_legs(legs_);
   }
 
-  //! One frame at now_ms: soft start, map, slew, write; ends with out.flush().
-  template <typename Output>
-  ServoStatus frame(const Walker<S, P>& walker, uint32_t now_ms, Output& out) {
+  //! One frame at now_ms of the legs' joint angles, legs[i].q[j] [rad] (the
+  //! walker's leg results, Walker::results()): soft start, map, slew, write;
+  //! ends with out.flush().
+  template <typename Leg, typename Output>
+  ServoStatus frame(const Leg* legs, uint32_t now_ms, Output& out) {
     if (pwm_pending_) apply_pwm(out);
     if (relax_pending_) {
       for (uint8_t k = 0; k < count_; ++k) {
@@ -169,7 +169,7 @@ class ServoStage {
     if (fitted_legs_ < legs_) {
       fit_legs(1);
     } else {
-      status_ = fast_ ? write_legs(walker, out, nullptr) : write_legs_slowly(walker, out);
+      status_ = fast_ ? write_legs(legs, out, nullptr) : write_legs_slowly(legs, out);
     }
     out.flush();
     return status_;
@@ -181,11 +181,11 @@ class ServoStage {
   //! The enabled legs' joints through the tick map, or (model given: the
   //! map cannot hold them) through map_joint() with channels rebuilt from
   //! the model; slewed, written when changed. The worst status.
-  template <typename Output>
-  ServoStatus write_legs(const Walker<S, P>& walker, Output& out, const RobotModel* model) {
+  template <typename Leg, typename Output>
+  ServoStatus write_legs(const Leg* legs, Output& out, const RobotModel* model) {
     ServoStatus worst_status = ServoStatus::kOk;
     for (uint8_t leg = 0; leg < enabled_legs_; ++leg) {
-      const auto& r = walker.leg(leg);
+      const Leg& r = legs[leg];
       for (uint8_t j = 0; j < dof_; ++j) {
         const uint8_t k = uint8_t(leg * dof_ + j);
         const ServoCommand cmd = model == nullptr
@@ -206,21 +206,21 @@ class ServoStage {
     }
     return worst_status;
   }
-  template <typename Output>
-  STRIDER_NOINLINE ServoStatus write_legs_slowly(const Walker<S, P>& walker, Output& out) {
-    return write_legs_slowly(walker, out, Given<kHasChannels>());
+  template <typename Leg, typename Output>
+  STRIDER_NOINLINE ServoStatus write_legs_slowly(const Leg* legs, Output& out) {
+    return write_legs_slowly(legs, out, Given<kHasChannels>());
   }
   template <bool kOn>
   struct Given {};
-  template <typename Output>
-  ServoStatus write_legs_slowly(const Walker<S, P>& walker, Output& out, Given<false>) {
+  template <typename Leg, typename Output>
+  ServoStatus write_legs_slowly(const Leg* legs, Output& out, Given<false>) {
     RobotModel m;
     read_model(*model_, where_, &m);
-    return write_legs(walker, out, &m);
+    return write_legs(legs, out, &m);
   }
-  template <typename Output>
-  ServoStatus write_legs_slowly(const Walker<S, P>& walker, Output& out, Given<true>) {
-    return write_legs(walker, out, model_);  // only a flag: the channels come from P::kChannels
+  template <typename Leg, typename Output>
+  ServoStatus write_legs_slowly(const Leg* legs, Output& out, Given<true>) {
+    return write_legs(legs, out, model_);  // only a flag: the channels come from P::kChannels
   }
 
   //! The tick map's constants for the timing and trims of up to n more
