@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "control/robot_app.h"
+#include "gait/gait_presets.h"
 #include "fakes/fake_store.h"
 #include "fakes/recording_servo.h"
 #include "math/fixed.h"
@@ -316,6 +317,31 @@ TYPED_TEST(GaitTunerTest, SavedPerGaitAcrossAPowerCycle) {
     EXPECT_EQ(again.say("gait " + other), "ok gait " + other);
     EXPECT_EQ(again.say("get"), other_get);
   }
+}
+
+// A model's presets (gait_presets.h) are picked like gaits: `gait trot10`
+// walks the trot with the preset's parameters, which `get` shows; every
+// preset of every model is accepted by its walker; another model does not
+// have them (err 23, its gaits named).
+TYPED_TEST(GaitTunerTest, PresetsWalkTheirGaitWithTheirParameters) {
+  using S = TypeParam;
+  for (uint8_t i = 0; i < strider::kGaitPresetCount; ++i) {
+    const strider::GaitPreset& p = strider::kGaitPresets[i];
+    SCOPED_TRACE(std::string(p.robot) + " " + p.name);
+    strider_test::FakeStore store;
+    Robot<S> r(*strider::find_robot(p.robot), store);
+    EXPECT_EQ(r.say(std::string("gait ") + p.name), std::string("ok gait ") + p.name);
+    const std::string get = r.say("get");
+    EXPECT_EQ(r.field(get, "gait"), p.gait);
+    EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "step_length"))), p.step_length_cmm);
+    EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "step_height"))), p.step_height_cmm);
+    if (p.cycle_cs != 0) EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "cycle"))), p.cycle_cs);
+    if (p.duty_pct != 0) EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "duty"))), p.duty_pct);
+    EXPECT_NE(r.say("status").find(" tune=changed"), std::string::npos);
+  }
+  strider_test::FakeStore store;
+  Robot<S> other(strider::kSprawl8, store);
+  EXPECT_EQ(other.say("gait trot10"), "err 23 unknown gait: walk trot pace crawl");
 }
 
 // A save's bytes: the tuning record after the settings (the settings load as

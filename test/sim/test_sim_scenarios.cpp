@@ -377,19 +377,34 @@ TEST(SimScenarios, Mammal8PaceSwingsItsFeetOnTheGround) {
   EXPECT_GT(pace.metrics.odometry_error_pct, 100.0);  // backward: the dragging feet carry more than half
 }
 
-// All nine runs, each gait. Measured (4 ms step, MLCP): walk 0.0 / 0.5 /
-// 1.5 %, trot 47.5 / 38.9 / 31.8 %, pace 156.1 / 158.9 / 160.1 % (backward).
-// The trot tips about its support diagonal onto a swing foot, the pace onto
-// its lifted side, and those feet drag. No gait setting comes within 2 %
-// (tools/sim/sweep_gait.py, 150 settings each: best trot 20 %, pace never
-// within 56 %); docs/simulator.md says why this robot cannot.
-TEST(SimTargets, DISABLED_Mammal8ReachesCommandedDistanceWithin2Percent) {
-  for (const char* gait : {"walk", "trot", "pace"})
+// Seed 003 table 5 at the seed's own operating point: 10 mm steps at the
+// seed's speeds (walk 2.5, trot 4.2, pace 3.1 mm/s), 20 mm rubber pads
+// (`feet pad 5`), the servos at 200 Hz (docs/gaits.md). The walk reaches
+// 100, 200 and 1000 mm within 5 % of its odometry (measured 1.2 / 2.1 /
+// 3.8 % short; at 50 Hz 35-48 %: the 4.9 us tick is inside the MG996R's 5 us
+// dead band, so each slow joint moves in 0.9 deg jumps and the other feet
+// slide; docs/simulator.md).
+TEST(SimTargets, Mammal8SeedWalkReachesCommandedDistanceWithin5Percent) {
+  for (const char* mm : {"100", "200", "1000"}) {
+    const std::string s = std::string("mammal8_seed_walk_") + mm + "mm";
+    const Metrics m = run_file(s).metrics;
+    EXPECT_FALSE(m.fell) << s;
+    EXPECT_LT(std::fabs(m.odometry_error_pct), 5.0) << s;
+  }
+}
+
+// The trot and pace at the seed's point, the same target. Measured: trot
+// 66.6 / 65.7 / 64.9 %, pace 51.5 / 49.5 / 53.3 % short of 100 / 200 /
+// 1000 mm, no fall (tilt below 2 deg): the trot balances on its stance
+// diagonal and the pace beside its stance side (docs/simulator.md, "mammal8's
+// trot and pace"); slow steps do not change that.
+TEST(SimTargets, DISABLED_Mammal8SeedTrotAndPaceReachCommandedDistanceWithin5Percent) {
+  for (const char* gait : {"trot", "pace"})
     for (const char* mm : {"100", "200", "1000"}) {
-      const std::string s = std::string("mammal8_") + gait + "_" + mm + "mm";
+      const std::string s = std::string("mammal8_seed_") + gait + "_" + mm + "mm";
       const Metrics m = run_file(s).metrics;
       EXPECT_FALSE(m.fell) << s;
-      EXPECT_LT(std::fabs(m.odometry_error_pct), 2.0) << s;
+      EXPECT_LT(std::fabs(m.odometry_error_pct), 5.0) << s;
     }
 }
 

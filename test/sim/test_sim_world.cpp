@@ -136,6 +136,16 @@ TEST(SimScenario, RejectsBadLinesWithTheirNumber) {
   EXPECT_FALSE(strider_sim::parse_scenario("robot sprawl8\nduration 5\nat 1 send bad\\q\n", &s, &err));
 }
 
+TEST(SimScenario, ParsesFootPads) {  // `feet pad MM`: the --foot-pad capsules
+  strider_sim::Scenario s;
+  std::string err;
+  ASSERT_TRUE(strider_sim::parse_scenario("robot mammal8\nduration 5\nfeet pad 5\n", &s, &err)) << err;
+  EXPECT_DOUBLE_EQ(s.foot_pad_half_mm, 5.0);
+  EXPECT_FALSE(strider_sim::parse_scenario("robot mammal8\nduration 5\nfeet pad 0\n", &s, &err));
+  EXPECT_FALSE(strider_sim::parse_scenario("robot mammal8\nduration 5\nfeet ball 5\n", &s, &err));
+  EXPECT_EQ(err.rfind("line 3:", 0), 0u) << err;
+}
+
 TEST(SimScenario, ParsesRampShoveUprightAndBattery) {  // and `at T ramp`
   strider_sim::Scenario s;
   std::string err;

@@ -19,7 +19,7 @@ Sources:
 Intermediate results go to out/results/.
 
 usage: make_results.py [--build DIR] [--out docs/results.md] [--reuse] [--quick] [--no-slow]
-                       [--only pso,gait]
+                       [--only pso,gait,pad,seed003]
   --reuse  take the PSO comparison, gait tuning, simulator metrics and
            cross-check replays from out/results when present instead of
            measuring them again
@@ -28,7 +28,7 @@ usage: make_results.py [--build DIR] [--out docs/results.md] [--reuse] [--quick]
            (they then read "not measured"); for the generator's own test
   --only   measure only the named section groups (pso: seed 003 table 4
            and the pyswarms comparison; gait: the gait tuning; pad: the phone
-           pad per model) and replace
+           pad per model; seed003: seed 003 table 5 in the simulator) and replace
            those sections and their summary rows in the existing page
 """
 import argparse
@@ -49,7 +49,8 @@ from results_sim import gait_tune_data, gait_tuning, physics_check, seed000, see
 
 SECTION_GROUPS = {"pso": ("Seed 003: PSO joint angles, table 4", "PSO: Strider against pyswarms"),
                   "gait": ("Gait tuning by PSO (simulator rollouts)",),
-                  "pad": ("Phone pad per model (simulator, firmware mode)",)}
+                  "pad": ("Phone pad per model (simulator, firmware mode)",),
+                  "seed003": ("Seed 003: distances walked, table 5 (simulator)",)}
 
 
 def splice(old_text, parts, summary, notes):

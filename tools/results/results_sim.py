@@ -87,43 +87,55 @@ S003_TABLE5 = {  # seed 003 table 5: gait -> {target cm: experimental error %}
 }
 
 
+RUN_003 = r"^mammal8_(seed_)?(walk|trot|pace)_(\d+)mm$"
+
+
 def seed003_distance(metrics):
     head = ("003", "table 5: distance reached, walk/trot/pace", "errors 0.35-10 %")
     if isinstance(metrics, NotMeasured):
         return not_measured(str(metrics)), [head + ("not measured (simulator)",)]
-    rows, errs = [], []
-    runs = find(metrics, r"^mammal8_(walk|trot|pace)_\d+mm")
+    rows, errs = [], {}
+    runs = find(metrics, RUN_003)
     order = {"walk": 0, "trot": 1, "pace": 2}  # the paper's order, then by distance
 
     def key(name):
-        g, mm = re.match(r"^mammal8_(walk|trot|pace)_(\d+)mm", name).groups()
-        return order[g], int(mm)
+        seed, g, mm = re.match(RUN_003, name).groups()
+        return bool(seed), order[g], int(mm)
 
     for name in sorted(runs, key=key):
         m = runs[name]
-        gait, mm = re.match(r"^mammal8_(walk|trot|pace)_(\d+)mm", name).groups()
+        seed, gait, mm = re.match(RUN_003, name).groups()
         cm = int(mm) // 10
         odo, err = m.get("odometry_mm"), m.get("odometry_error_pct")
         # strider-sim's error counts the displacement along the way the gait
         # went: reached = commanded (1 - error), negative when it slid back.
         along = odo * (1.0 - err / 100.0) if odo is not None and err is not None else None
         if err is not None:
-            errs.append(abs(err))
+            errs.setdefault((bool(seed), gait), []).append(abs(err))
         paper = S003_TABLE5.get(gait, {}).get(cm)
-        rows.append([gait, f"{cm}", fmt(odo), fmt(along), fmt(m.get("distance_mm")), fmt(err),
+        rows.append([gait, scenario_commands(name), f"{cm}", fmt(odo), fmt(along), fmt(m.get("distance_mm")), fmt(err),
                      fmt(paper) if paper is not None else "-", "yes" if m.get("fell") else "no"])
     if not rows:
         return not_measured("no mammal8_<gait>_<mm>mm scenario has metrics"), [head + ("not measured",)]
     md = ("Seed 003 walked its robot 10, 20, 100 and 200 cm in each gait and measured the distance reached "
-          "(table 5). mammal8 in the simulator, commanded by the scenarios' `walk` and `stop` lines; "
-          "'commanded' is the distance the gait engine's own odometry covered, 'reached' the body's "
-          "displacement in the simulated world along that way (negative: it went backward), error = "
-          "(commanded - reached) / commanded as strider-sim's metrics.json reports it:\n\n")
-    md += table(["gait", "target [cm]", "commanded [mm]", "reached along it [mm]", "displacement [mm]", "error [%]",
-                 "paper's error [%]", "fell"], rows)
-    back = sum(1 for r in rows if r[3].startswith("-") and r[3] != "-")
-    return md, [head + ((f"errors {fmt(min(errs))}-{fmt(max(errs))} % over {len(rows)} runs"
-                         + (f"; {back} of them went backward" if back else "")) if errs else "-",)]
+          "(table 5), in 10 mm steps at 2.5-4.2 mm/s. mammal8 in the simulator, commanded by the scenarios' "
+          "`walk` and `stop` lines: first its default gaits (15-100 mm/s), then at the seed's own point "
+          "(`mammal8_seed_*`: the presets `walk10`, `trot10`, `pace10` at the seed's speeds, 20 mm rubber pads, "
+          "the servos at 200 Hz; docs/gaits.md). 'commanded' is the distance the gait engine's own odometry "
+          "covered, 'reached' the body's displacement in the simulated world along that way (negative: it went "
+          "backward), error = (commanded - reached) / commanded as strider-sim's metrics.json reports it "
+          "(library mode; firmware mode in docs/simulator.md):\n\n")
+    md += table(["gait", "commands", "target [cm]", "commanded [mm]", "reached along it [mm]", "displacement [mm]",
+                 "error [%]", "paper's error [%]", "fell"], rows)
+    back = sum(1 for r in rows if r[4].startswith("-") and r[4] != "-")
+
+    def span(seed):
+        parts = [f"{g} {fmt(min(errs[seed, g]))}-{fmt(max(errs[seed, g]))}" for g in order if (seed, g) in errs]
+        return ", ".join(parts)
+
+    cell = "; ".join(c for c in (f"default gaits {span(False)} %" if span(False) else "",
+                                 f"seed's point {span(True)} %" if span(True) else "") if c)
+    return md, [head + ((cell + (f"; {back} runs went backward" if back else "")) if errs else "-",)]
 
 
 def sim_table(metrics):

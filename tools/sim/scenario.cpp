@@ -103,6 +103,12 @@ bool parse_scenario(const std::string& text, Scenario* out, std::string* error) 
       if (words >> extra) return fail("obstacle box takes X Y SX SY SZ [mm]");
       if (v[2] <= 0 || v[3] <= 0 || v[4] <= 0) return fail("obstacle sizes must be > 0");
       s.obstacles.push_back(ObstacleBox{v[0], v[1], v[2], v[3], v[4]});
+    } else if (word == "feet") {
+      std::string kind, mm, extra;
+      words >> kind >> mm;
+      if (kind != "pad" || !to_number(mm, &s.foot_pad_half_mm) ||
+          !(s.foot_pad_half_mm > 0 && s.foot_pad_half_mm <= 50) || (words >> extra))
+        return fail("feet takes pad and its half-length 0..50 [mm]");
     } else if (word == "imu") {
       std::string v, extra;
       words >> v;

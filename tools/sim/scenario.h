@@ -3,6 +3,7 @@
 //   duration 20                      # seconds of simulated time
 //   obstacle box X Y SX SY SZ        # mm; axis-aligned box on the ground, centre at X,Y
 //   at T send TEXT                   # at T seconds, send TEXT to the Bluetooth link; \n \r escapes
+//   feet pad MM                      # feet as capsules across the leg, MM to each side (--foot-pad wins)
 //   imu on                           # an MPU-6050 is fitted (firmware mode: vbench's, fed by the IMU model)
 //   ramp DEG [UPHILL_DEG]            # the ground slopes DEG, rising toward UPHILL_DEG (0: +x, 90: +y)
 //   battery cells N mah C ohm R soc S  # the pack (any of the four keys, in any order)
@@ -41,6 +42,7 @@ struct Scenario {
   double duration_s = 0;
   std::vector<ObstacleBox> obstacles;
   std::vector<TimedSend> sends;  // sorted by time (stable)
+  double foot_pad_half_mm = 0;   // `feet pad MM`; 0: the model's ball feet
   bool imu = false;              // `imu on`
   double ramp_deg = 0;           // `ramp DEG [UPHILL_DEG]`: the ground's slope [deg]
   double ramp_uphill_deg = 0;    // the direction it rises toward, world frame [deg]

@@ -101,6 +101,7 @@ RunResult run_scenario(const Scenario& sc, const RunOptions& opt) {
   const std::clock_t cpu0 = std::clock();
   WorldConfig wc = opt.world;
   if (wc.initial_joints_rad.empty()) wc.initial_joints_rad = sitting_joints(*model);
+  if (wc.foot_pad_half_mm == 0) wc.foot_pad_half_mm = sc.foot_pad_half_mm;
   World world(*model, wc, sc.obstacles);
   if (sc.ramp_deg != 0) world.set_ramp(sc.ramp_deg, sc.ramp_uphill_deg);
   RangeFn range = [&world]() { return world.sonar_mm(); };

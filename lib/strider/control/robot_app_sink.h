@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 
+#include "../gait/gait_presets.h"
 #include "../gait/gait_tuning.h"
 #include "gait_tuner.h"
 #include "motion_reach.h"
@@ -54,10 +55,14 @@ class RobotAppSink {
     app_.stage_.relax_all();
     app_.motion_.sit_now();
   }
+  //! A library gait, or one of the model's presets (gait_presets.h): its
+  //! gait, then its parameters.
   bool set_gait(const char* name) {
-    if (!app_.motion_.set_gait(name)) return false;
+    GaitPreset preset;
+    const bool is_preset = find_gait_preset(app_.name_, name, &preset);
+    if (!app_.motion_.set_gait(is_preset ? preset.gait : name)) return false;
     app_.tuner_.use_gait(app_.motion_, app_.store_);
-    return true;
+    return !is_preset || apply_gait_preset(preset, [this](TuneParam p, int32_t v) { return tune(p, v); });
   }
   RcLimits pad_limits() const { return app_.motion_.pad_limits(); }
   void choose_pad_gait(const Twist& v) {

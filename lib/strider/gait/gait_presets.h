@@ -1,0 +1,63 @@
+//! Gait presets: a model's named operating points, each a gait of the
+//! library walked with its own live parameters (gait_tuning.h), picked like a
+//! gait: `gait trot10` is `gait trot` and the `set` lines of its row. `get`
+//! and `status` then show the gait's own name, tuned (`tune=changed`).
+#ifndef STRIDER_GAIT_GAIT_PRESETS_H
+#define STRIDER_GAIT_GAIT_PRESETS_H
+
+#include <stdint.h>
+#include <string.h>
+
+#include "../math/flash_table.h"
+#include "gait_params.h"
+#include "gait_tuning.h"
+
+namespace strider {
+
+struct GaitPreset {
+  char robot[kRobotNameBytes];  //!< the model it is for
+  char name[kGaitNameBytes];    //!< what `gait NAME` takes
+  char gait[kGaitNameBytes];    //!< the library gait it walks
+  // Applied in this order (the cycle before the share down); 0: the gait's own.
+  uint16_t cycle_cs;
+  uint8_t duty_pct;
+  uint16_t step_length_cmm;
+  uint16_t step_height_cmm;
+};
+
+//! mammal8 at seed 003's own operating point (table 5): 10 mm steps, walked
+//! at the seed's 2.5 (walk), 4.2 (trot) and 3.1 mm/s (pace). The cycles give
+//! a trot and pace stride of 10 mm at those speeds; the walk keeps its 2 s
+//! (a 5 mm stride at 2.5 mm/s: with 4 s it went 16-41 % short). Low steps; the
+//! trot's 10 mm and four-foot overlaps of the trot and pace were the least
+//! short in the simulator (docs/simulator.md, "mammal8 at seed 003's point").
+constexpr GaitPreset kGaitPresets[] STRIDER_PROGMEM = {
+    {"mammal8", "walk10", "walk", 0, 0, 1000, 300},
+    {"mammal8", "trot10", "trot", 238, 60, 1000, 1000},
+    {"mammal8", "pace10", "pace", 323, 70, 1000, 300},
+};
+constexpr uint8_t kGaitPresetCount = sizeof kGaitPresets / sizeof kGaitPresets[0];
+
+//! The preset `name` of the model called `robot` into *out (copied out of
+//! flash on the AVR); false when it has none of that name.
+inline bool find_gait_preset(const char* robot, const char* name, GaitPreset* out) {
+  for (uint8_t i = 0; i < kGaitPresetCount; ++i) {
+    flash_copy(out, &kGaitPresets[i], sizeof *out);
+    if (strcmp(out->name, name) == 0 && strcmp(out->robot, robot) == 0) return true;
+  }
+  return false;
+}
+
+//! The preset's parameters through `tune(TuneParam, value)` (a sink's or a
+//! tuner's); false when one is refused (the rest are not tried).
+template <typename Tune>
+bool apply_gait_preset(const GaitPreset& p, Tune tune) {
+  return (p.cycle_cs == 0 || tune(TuneParam::kCycle, p.cycle_cs)) &&
+         (p.duty_pct == 0 || tune(TuneParam::kDuty, p.duty_pct)) &&
+         (p.step_length_cmm == 0 || tune(TuneParam::kStepLength, p.step_length_cmm)) &&
+         (p.step_height_cmm == 0 || tune(TuneParam::kStepHeight, p.step_height_cmm));
+}
+
+}  // namespace strider
+
+#endif  // STRIDER_GAIT_GAIT_PRESETS_H
