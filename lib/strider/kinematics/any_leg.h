@@ -25,8 +25,6 @@ class AnyLeg {
   using Joints = JointVector<S, kMaxDof>;
 
   //! A zero-length sprawl leg at the body centre; assign from from_model().
-  // The mount LegMount::make(Vec3(), 0) gives, as a constant (cos 0 = 1 and
-  // sin 0 = 0 in both scalars): no trig call.
   AnyLeg() : kind_(LegKind::kSprawl), side_(BodySide::kLeft), mount_{Vec3<S>(), S(0), S(1), S(0)} {}
 
   //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S).
@@ -98,16 +96,12 @@ class AnyLeg {
     switch (kind_) {
       case LegKind::kSprawl:
         return legs_.sprawl.fk(narrow<2>(q));
-        break;
       case LegKind::kPlanar:
         return legs_.planar.fk(narrow<2>(q));
-        break;
       case LegKind::kCoxaFemurTibia:
         return legs_.cft.fk(narrow<3>(q));
-        break;
       case LegKind::kAbduction:
         return legs_.abduction.fk(narrow<3>(q));
-        break;
     }
     return Vec3<S>();
   }
@@ -119,16 +113,12 @@ class AnyLeg {
     switch (kind_) {
       case LegKind::kSprawl:
         return solve(legs_.sprawl, target, q, reached, opt);
-        break;
       case LegKind::kPlanar:
         return solve(legs_.planar, target, q, reached, opt);
-        break;
       case LegKind::kCoxaFemurTibia:
         return solve(legs_.cft, target, q, reached, opt);
-        break;
       case LegKind::kAbduction:
         return solve(legs_.abduction, target, q, reached, opt);
-        break;
     }
     return IkStatus::kUnreachable;
   }
@@ -183,9 +173,7 @@ class AnyLeg {
     for (uint8_t j = 0; j < N; ++j) r[j] = q[j];
     return r;
   }
-  // A leg with every joint slot (3-DOF) solves into q and reached directly:
-  // its ik() has the same contract (writes both unless kUnreachable), so
-  // the copies are not needed.
+  // A 3-DOF leg solves into q and reached directly (the same contract).
   template <bool kFull>
   struct Full {};
   template <typename Leg>
@@ -210,9 +198,8 @@ class AnyLeg {
     return s;
   }
 
-  // ik_body_fast(): Fixed coxa/femur/tibia legs only. The offset from the
-  // mount in scalars and Fixed's differences in place (a Vec3 difference is
-  // an out-of-line call on the AVR).
+  // ik_body_fast(): Fixed coxa/femur/tibia legs only; differences in place
+  // (a Vec3 difference is an out-of-line call on the AVR).
   template <typename Leg>
   static bool body_fast(const Leg&, const LegMount<float>&, const Vec3<float>&, Joints&) {
     return false;

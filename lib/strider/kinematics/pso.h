@@ -1,29 +1,8 @@
 //! Particle swarm optimisation, global-best topology (seed 003 section 4.1,
 //! algorithm 1, table 3), for D <= 6 dimensions and up to Capacity particles
-//! in fixed arrays (no heap).
-//!
-//! Velocity and position updates, per particle and dimension d, with r1, r2
-//! drawn uniform in [0, 1) for every d (one xorshift32 draw each: 32 random
-//! bits in double, 24 in float, 16 in Fixed):
-//!   v = w v + c1 r1 (pbest - x) + c2 r2 (gbest - x)                (eq 12)
-//!   x = clamp(x + v, lo, hi)                                       (eq 13)
-//! This is the form pyswarms implements and the seed ran. Eq 12 as printed
-//! multiplies the whole sum by w, w (v + c1 r1 (..) + c2 r2 (..)), which
-//! would also scale the attraction terms by w; Strider follows pyswarms.
-//! Bounds: positions are clamped to [lo, hi] after each move (pyswarms'
-//! "nearest"; its GlobalBestPSO default is "periodic"), and a velocity
-//! component that left the box is reversed and halved, so a particle does not
-//! stay pressed against a bound (seed 003 problem, bounds 0..20 rad, 2000
-//! seeds: 1.05 % of runs stalled on a bound with plain clamping, 0.35 % with
-//! this; bounds 0..20 deg: 0.85 % and none). Initial
-//! positions are uniform in the bounds (particle 0 optionally at a given
-//! start), initial velocities zero (pyswarms draws U[0, 1) whatever the
-//! bounds). Each iteration evaluates the swarm
-//! (minimize: one cost call per particle; minimize_swarm: one call for the
-//! whole swarm, as pyswarms' costs are), updates the personal and the global
-//! bests, stops when the best cost is below cost_threshold, then
-//! moves the swarm; it ends after max_iterations evaluations at the latest.
-//! The same seed gives the same result on the host and on the AVR for Fixed.
+//! in fixed arrays (no heap), in pyswarms' form of eq 12. The update, the
+//! bounds and why they differ from the seed: docs/kinematics.md, "Generic
+//! chains".
 #ifndef STRIDER_KINEMATICS_PSO_H
 #define STRIDER_KINEMATICS_PSO_H
 

@@ -1,12 +1,6 @@
-//! Square root and hypot for Fixed (Q16.16), integer-only and division-free.
-//!
-//! Method (docs/fixed-point.md): normalise the radicand by an even shift into
-//! m in [2^30, 2^32); a 193-node table of sqrt with linear interpolation gives
-//! q within 1 of floor(sqrt(m)); an exact residual m - q^2 (computed modulo
-//! 2^32) fixes q = floor(sqrt(m)); one Newton step with a table reciprocal
-//! adds 11 fraction bits (within 1 of the floor of sqrt(m 2^22)), and hypot
-//! of large values alone pays for a second exact residual. The root is then
-//! shifted back and rounded.
+//! Square root and hypot for Fixed (Q16.16), integer-only and division-free:
+//! normalise, table estimate, exact residual, one Newton step with a table
+//! reciprocal (docs/fixed-point.md, "sqrt" and "hypot").
 #ifndef STRIDER_MATH_FIXED_SQRT_H
 #define STRIDER_MATH_FIXED_SQRT_H
 

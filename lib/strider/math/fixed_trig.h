@@ -1,11 +1,7 @@
 //! sin and cos for Fixed (Q16.16 radians), and the exact angle reduction that
-//! they share with wrap_pi / wrap_two_pi.
-//!
-//! Method (docs/fixed-point.md): reduce the angle to [-pi, pi] in Q8.24
-//! (2^-24 rad) with a two-part 2 pi (Cody-Waite), fold into [0, pi/2], then
-//! interpolate linearly in a 404-node table of sin at steps of 2^-8 rad.
-//! Integer-only, no division, bounded time; sin(-x) = -sin(x) and
-//! cos(-x) = cos(x) bit for bit.
+//! they share with wrap_pi / wrap_two_pi: Cody-Waite reduction in Q8.24 and a
+//! 404-node sin table (docs/fixed-point.md, "sin and cos"). sin(-x) = -sin(x)
+//! and cos(-x) = cos(x) bit for bit.
 #ifndef STRIDER_MATH_FIXED_TRIG_H
 #define STRIDER_MATH_FIXED_TRIG_H
 
