@@ -18,13 +18,9 @@ enum class LegSide : uint8_t { kLeft = 0, kRight = 1 };
 namespace leg_ik {
 
 //! The integer fast path of AbductionLeg<Fixed>::ik() (docs/fixed-point.md,
-//! "Leg IK fast path") for the common case: the foot at least 1/16 working
-//! unit outside the abduction cylinder (A > La) and strictly inside the
-//! femur-tibia annulus of its leg plane, every length below 8 units. t1 is
-//! the angle of (y, z) turned by alpha3 = atan2(p, La), as the sum of two
-//! atan2s; the leg plane is the two-link problem of solve_wide(). Float, and
-//! every other case, returns false and takes the general path. Writes sol
-//! only when it returns true.
+//! "Leg IK fast path"): sol for a foot at least 1/16 working unit outside the
+//! abduction cylinder and strictly inside the annulus of its leg plane, else
+//! false (and float).
 template <typename Leg, typename S>
 bool abduction_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 3>&) {
   return false;
@@ -110,8 +106,7 @@ struct AbductionLeg {
   //! reachability and joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
-    // Fixed's fast path (always false for float): an exact solve, so q can
-    // take it directly; it writes q only when it succeeds.
+    // Fixed's fast path: an exact solve, written to q only when it succeeds.
     if (!(opt.max_clamp_mm < S(0)) && leg_ik::abduction_solve_fast(*this, target, q)) {
       if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
       leg_ik::copy_point(target, reached);  // what finish() does for an exact solve inside the limits
@@ -121,8 +116,7 @@ struct AbductionLeg {
   }
 
  private:
-  // Every case the fast path leaves; out of line, so that ik()'s common case
-  // does not pay for this path's registers and stack frame.
+  // Every case the fast path leaves, out of line (ik()'s prologue stays small).
   STRIDER_NOINLINE IkStatus ik_general(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
                                        const IkOptions<S>& opt) const {
     const S bound_x = lb_mm + lc_mm + opt.max_clamp_mm;

@@ -42,14 +42,7 @@ STRIDER_NOINLINE_NOCLONE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& 
   JointVector<Fixed, 3> q;
   int32_t t1 = detail::atan2_lean_raw(target.y.raw(), target.x.raw());  // eq 12
   if (yaw != nullptr) {
-    // Both in [-pi, pi]: one turn at most.
-    constexpr int32_t pi_raw = int32_t((detail::kPiQ24 + 128) >> 8);
-    t1 -= yaw->raw();
-    if (t1 > pi_raw) {
-      t1 -= 2 * pi_raw;
-    } else if (t1 <= -pi_raw) {
-      t1 += 2 * pi_raw;
-    }
+    t1 = detail::wrap_pi_once_raw(t1 - yaw->raw());
     if (t1 < leg.limits.lo[0].raw() || leg.limits.hi[0].raw() < t1) return false;
   }
   q[0] = Fixed::from_raw(t1);
@@ -64,10 +57,8 @@ STRIDER_NOINLINE_NOCLONE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& 
   return true;
 }
 
-//! The fast path for a target d given in axes turned by yaw about z against
-//! the leg frame (a walker's offset from the mount before the mount's yaw):
-//! true, with q written, only for a solve inside the joint limits (kOk, d
-//! itself reached); false leaves q alone.
+//! The fast path for a target d in axes turned by yaw about z against the
+//! leg frame (a walker's offset from the mount before the mount's yaw).
 template <typename Leg, typename S>
 STRIDER_ALWAYS_INLINE bool cft_solve_turned(const Leg& leg, const Vec3<S>& d, const S& yaw, JointVector<S, 3>& q) {
   return cft_solve_fast(leg, d, &yaw, q);
@@ -112,25 +103,18 @@ struct CoxaFemurTibiaLeg {
   //! joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
-    // Fixed's fast path: strictly inside the annulus is within the bounds
-    // of ik_general() while max_clamp >= 0 (always false for float). It
-    // writes q only when it succeeds, and every exit below then writes q
-    // anyway, so it solves into q directly (no zeroed copy to fill and move).
+    // Fixed's fast path (within ik_general()'s bounds while max_clamp >= 0)
+    // writes q only when it succeeds.
     if (!(opt.max_clamp_mm < S(0)) && leg_ik::cft_solve_fast(*this, target, static_cast<const S*>(nullptr), q)) {
       if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
-      // What finish() does for an exact solve inside the limits; field by
-      // field, as avr-gcc copies a whole Vec3 with a byte loop.
-      reached.x = target.x;
-      reached.y = target.y;
-      reached.z = target.z;
+      leg_ik::copy_point(target, reached);  // what finish() does for an exact solve inside the limits
       return IkStatus::kOk;
     }
     return ik_general(target, q, reached, opt);
   }
 
  private:
-  // Every case the fast path leaves; out of line, so that ik()'s common case
-  // does not pay for this path's registers and stack frame.
+  // Every case the fast path leaves, out of line (ik()'s prologue stays small).
   STRIDER_NOINLINE IkStatus ik_general(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
                                        const IkOptions<S>& opt) const {
     Joints sol;

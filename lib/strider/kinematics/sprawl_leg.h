@@ -108,8 +108,7 @@ struct SprawlLeg {
     return status;
   }
 
-  // Every case the fast path leaves; out of line, so that ik()'s common case
-  // does not pay for this path's registers and stack frame.
+  // Every case the fast path leaves, out of line (ik()'s prologue stays small).
   STRIDER_NOINLINE IkStatus ik_general(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
                                        const IkOptions<S>& opt) const {
     const S bound_xy = a1_mm + a2_mm + opt.max_clamp_mm;
