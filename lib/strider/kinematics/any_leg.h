@@ -64,7 +64,7 @@ class AnyLeg {
   JointLimits<S, kMaxDof> limits() const {
     JointLimits<S, kMaxDof> l;
     for (uint8_t j = 0; j < kMaxDof; ++j) l.lo[j] = l.hi[j] = S(0);
-    visit([&l](const auto& leg) { copy_limits(leg.limits, l); });
+    visit([&l](const auto& leg) { copy_limits(leg.limits, l); return true; }, true);
     return l;
   }
 
@@ -78,14 +78,15 @@ class AnyLeg {
 
   //! Foot in the leg frame [mm].
   Vec3<S> fk(const Joints& q) const {
-    return visit([&q](const auto& leg) { return leg.fk(narrow(leg, q)); });
+    return visit([&q](const auto& leg) { return leg.fk(narrow(q, leg.limits)); }, Vec3<S>());
   }
 
   //! IK in the leg frame: the leg type's solver. Writes q and reached [mm]
-  //! unless the status is kUnreachable.
-  IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
-              const IkOptions<S>& opt = IkOptions<S>()) const {
-    return visit([&](const auto& leg) { return solve(leg, target, q, reached, opt); });
+  //! unless the status is kUnreachable. Out of line: a firmware's LTO would
+  //! otherwise copy the dispatch into each caller.
+  STRIDER_NOINLINE IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+                               const IkOptions<S>& opt = IkOptions<S>()) const {
+    return visit([&](const auto& leg) { return solve(leg, target, q, reached, opt); }, IkStatus::kUnreachable);
   }
 
   //! ik_body()'s fast path alone, for the walker's tick: true, with q
@@ -129,26 +130,26 @@ class AnyLeg {
   static void copy_limits(const JointLimits<S, N>& from, JointLimits<S, kMaxDof>& to) {
     for (uint8_t j = 0; j < N; ++j) to.lo[j] = from.lo[j], to.hi[j] = from.hi[j];
   }
-  template <typename Leg>
-  static typename Leg::Joints narrow(const Leg&, const Joints& q) {
-    typename Leg::Joints r;
-    for (uint8_t j = 0; j < Leg::kDof; ++j) r[j] = q[j];
+  template <uint8_t N>
+  static JointVector<S, N> narrow(const Joints& q, const JointLimits<S, N>&) {
+    JointVector<S, N> r;
+    for (uint8_t j = 0; j < N; ++j) r[j] = q[j];
     return r;
   }
-  // f(the live leg); kind_ is always one of the four.
-  template <typename F>
-  auto visit(F f) const {
+  // f(the live leg), or fallback (kind_ is always one of the four).
+  template <typename F, typename R>
+  R visit(F f, R fallback) const {
     switch (kind_) {
+      case LegKind::kSprawl:
+        return f(legs_.sprawl);
       case LegKind::kPlanar:
         return f(legs_.planar);
       case LegKind::kCoxaFemurTibia:
         return f(legs_.cft);
       case LegKind::kAbduction:
         return f(legs_.abduction);
-      case LegKind::kSprawl:
-        break;
     }
-    return f(legs_.sprawl);
+    return fallback;
   }
   // A 3-DOF leg solves into q and reached directly (the same contract).
   template <bool kFull>
