@@ -1,48 +1,10 @@
 //! AbductionLeg: the 3-DOF dog leg of seed 001 (Shahriar): abduction t1,
 //! hip t2, knee t3; abduction link La at 90 deg to the femur Lb, tibia Lc.
-//!
-//! Frame: origin on the abduction axis, which is x (forward); y left, z up.
-//! - t1: angle of La measured counterclockwise about +x from +y, in [0, 2 pi)
-//!   (table 3, algorithm 1's angle_range_limiter). La points along
-//!   u = (0, cos t1, sin t1); the leg plane is perpendicular to u and contains
-//!   x. Its "down" direction is w = (0, sin t1, -cos t1) on a left leg and
-//!   w = (0, -sin t1, cos t1) on a right leg: standing, a left leg has t1 = 0
-//!   (La points +y), a right leg t1 = pi (La points -y), both hang down.
-//! - t2: femur angle in the leg plane measured from the backward direction
-//!   (-x) toward w: backward 0, down pi/2, forward pi. t3 = pi - R3 >= 0: knee
-//!   flexion, 0 when straight; t3 > 0 turns the tibia forward of the femur,
-//!   so the knee points backward (behind the hip-foot line).
-//! FK: xp = -Lb cos t2 - Lc cos(t2 + t3), d = Lb sin t2 + Lc sin(t2 + t3),
-//!     foot = La u + xp (1, 0, 0) + d w.
-//! A right leg is the mirror image (y -> -y) of a left leg at t1' = pi - t1.
-//!
-//! IK (section 2.2): A = sqrt(y^2 + z^2) (eq 4.1); alpha1 = atan2(z, y) in
-//! [0, 2 pi) (eqs 4.2-4.5 are its quadrant cases); alpha2 = asin(La / A) (4.6),
-//! alpha3 = pi/2 - alpha2 (4.7); left t1 = alpha1 + alpha3, right
-//! t1 = alpha1 - alpha3 (algorithm 1), wrapped to [0, 2 pi). Strider turns
-//! (y, z) by alpha3 (cos = La / A, sin = p / A, p = sqrt(A^2 - La^2)) and takes
-//! one atan2. In the leg plane the foot is at xp = x and d = p: the seed's eqs
-//! 4.12-4.21 use z for -d, which is only right when t1 = 0 (or pi). Then
-//! R = sqrt(x^2 + p^2) (4.12), R1 = angle of the hip-foot line from backward
-//! (4.13 for x > 0, on both sides: w mirrors a right leg's plane, so eq 4.14's
-//! right-leg variant is not needed), R2 = acos((Lb^2 + R^2 - Lc^2) / (2 Lb R)) (4.15; the seed
-//! prints "- L_c" for "- L_c^2"), R3 = acos((Lb^2 + Lc^2 - R^2) / (2 Lb Lc))
-//! (4.16), t2 = R1 - R2 in (-pi, pi] (4.17), t3 = pi - R3 (4.21): the two-link
-//! problem of two_link.h on the positive branch, without acos.
-//!
-//! Seed 001's math_error_handler: a foot inside the abduction cylinder
-//! (A < La) is moved out to A = La, then the two-link clamp applies in the
-//! leg plane of that t1 (the nearest reachable point, except within |Lb - Lc|
-//! of the hip where turning t1 could come nearer); on the abduction axis
-//! (A = 0) t1 takes the side's standing value. The miss distance decides
-//! kClamped or kUnreachable. No asin/acos is evaluated.
-//! t1 is reported in [0, 2 pi) unless the joint limits ask for another
-//! representative (e.g. a left leg limited to [-30, 30] deg gets -10 deg, not
-//! 350 deg). Fixed: keep max_clamp_mm below Lb + Lc - La (the working units of
-//! A^2 would saturate beyond; never NaN, but the clamped point is then rough).
-//!
-//! Seed 001's DH product (eqs 3.2-3.6) puts La in line with the femur, which
-//! contradicts the 90 deg of its IK and figure 2; Strider follows the IK.
+//! Origin on the abduction axis x (forward), y left, z up; t1 in [0, 2 pi)
+//! is the angle of La about +x from +y. The angle conventions, FK, IK (the
+//! two-link problem of two_link.h in the leg plane, no asin/acos), the
+//! clamping of seed 001's math_error_handler and where Strider departs from
+//! the seed: docs/kinematics.md, "3-DOF abduction leg".
 #ifndef STRIDER_KINEMATICS_ABDUCTION_LEG_H
 #define STRIDER_KINEMATICS_ABDUCTION_LEG_H
 
@@ -56,13 +18,9 @@ enum class LegSide : uint8_t { kLeft = 0, kRight = 1 };
 namespace leg_ik {
 
 //! The integer fast path of AbductionLeg<Fixed>::ik() (docs/fixed-point.md,
-//! "Leg IK fast path") for the common case: the foot at least 1/16 working
-//! unit outside the abduction cylinder (A > La) and strictly inside the
-//! femur-tibia annulus of its leg plane, every length below 8 units. t1 is
-//! the angle of (y, z) turned by alpha3 = atan2(p, La), as the sum of two
-//! atan2s; the leg plane is the two-link problem of solve_wide(). Float, and
-//! every other case, returns false and takes the general path. Writes sol
-//! only when it returns true.
+//! "Leg IK fast path"): sol for a foot at least 1/16 working unit outside the
+//! abduction cylinder and strictly inside the annulus of its leg plane, else
+//! false (and float).
 template <typename Leg, typename S>
 bool abduction_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 3>&) {
   return false;
@@ -134,7 +92,7 @@ struct AbductionLeg {
   //! t1 of the standing leg: La horizontal and pointing outward [rad].
   constexpr S standing_t1() const { return side == LegSide::kLeft ? S(0) : pi<S>(); }
 
-  //! Foot = La u + xp x + d w (see the header comment).
+  //! Foot = La u + xp x + d w (docs/kinematics.md).
   Vec3<S> fk(const Joints& q) const {
     const S c1 = cos(q[0]), s1 = sin(q[0]);
     const S t23 = q[1] + q[2];
@@ -144,12 +102,11 @@ struct AbductionLeg {
     return Vec3<S>(xp, la_mm * c1 + d * s1, la_mm * s1 - d * c1);
   }
 
-  //! Seed 001 eqs 4.1-4.21 and algorithm 1 (see the header comment), then
+  //! Seed 001 eqs 4.1-4.21 and algorithm 1 (docs/kinematics.md), then
   //! reachability and joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
-    // Fixed's fast path (always false for float): an exact solve, so q can
-    // take it directly; it writes q only when it succeeds.
+    // Fixed's fast path: an exact solve, written to q only when it succeeds.
     if (!(opt.max_clamp_mm < S(0)) && leg_ik::abduction_solve_fast(*this, target, q)) {
       if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
       leg_ik::copy_point(target, reached);  // what finish() does for an exact solve inside the limits
@@ -159,8 +116,7 @@ struct AbductionLeg {
   }
 
  private:
-  // Every case the fast path leaves; out of line, so that ik()'s common case
-  // does not pay for this path's registers and stack frame.
+  // Every case the fast path leaves, out of line (ik()'s prologue stays small).
   STRIDER_NOINLINE IkStatus ik_general(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
                                        const IkOptions<S>& opt) const {
     const S bound_x = lb_mm + lc_mm + opt.max_clamp_mm;

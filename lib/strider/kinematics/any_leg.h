@@ -25,8 +25,6 @@ class AnyLeg {
   using Joints = JointVector<S, kMaxDof>;
 
   //! A zero-length sprawl leg at the body centre; assign from from_model().
-  // The mount LegMount::make(Vec3(), 0) gives, as a constant (cos 0 = 1 and
-  // sin 0 = 0 in both scalars): no trig call.
   AnyLeg() : kind_(LegKind::kSprawl), side_(BodySide::kLeft), mount_{Vec3<S>(), S(0), S(1), S(0)} {}
 
   //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S).
@@ -38,10 +36,8 @@ class AnyLeg {
     return true;
   }
 
-  //! from_model()'s leg as a constant (a firmware's model is one), but for
-  //! the mount's cos and sin, which are left 0 (cos() and sin() are not
-  //! constant expressions): mount_trig() gives them at run time. An index
-  //! past the legs gives the default leg.
+  //! from_model()'s leg as a constant, but for the mount's cos and sin (left
+  //! 0 until mount_trig()). An index past the legs gives the default leg.
   static constexpr AnyLeg constant(const RobotModel& model, uint8_t index) {
     return index >= model.leg_count || index >= kMaxLegs ? AnyLeg(LegKind::kSprawl, BodySide::kLeft, LegMount<S>{Vec3<S>(), S(0), S(0), S(0)}, Legs())
                : AnyLeg(model.kind, model.legs[index].side,
@@ -68,20 +64,7 @@ class AnyLeg {
   JointLimits<S, kMaxDof> limits() const {
     JointLimits<S, kMaxDof> l;
     for (uint8_t j = 0; j < kMaxDof; ++j) l.lo[j] = l.hi[j] = S(0);
-    switch (kind_) {
-      case LegKind::kSprawl:
-        copy_limits(legs_.sprawl.limits, l);
-        break;
-      case LegKind::kPlanar:
-        copy_limits(legs_.planar.limits, l);
-        break;
-      case LegKind::kCoxaFemurTibia:
-        copy_limits(legs_.cft.limits, l);
-        break;
-      case LegKind::kAbduction:
-        copy_limits(legs_.abduction.limits, l);
-        break;
-    }
+    visit([&l](const auto& leg) { copy_limits(leg.limits, l); return true; }, true);
     return l;
   }
 
@@ -95,51 +78,21 @@ class AnyLeg {
 
   //! Foot in the leg frame [mm].
   Vec3<S> fk(const Joints& q) const {
-    switch (kind_) {
-      case LegKind::kSprawl:
-        return legs_.sprawl.fk(narrow<2>(q));
-        break;
-      case LegKind::kPlanar:
-        return legs_.planar.fk(narrow<2>(q));
-        break;
-      case LegKind::kCoxaFemurTibia:
-        return legs_.cft.fk(narrow<3>(q));
-        break;
-      case LegKind::kAbduction:
-        return legs_.abduction.fk(narrow<3>(q));
-        break;
-    }
-    return Vec3<S>();
+    return visit([&q](const auto& leg) { return leg.fk(narrow(q, leg.limits)); }, Vec3<S>());
   }
 
   //! IK in the leg frame: the leg type's solver. Writes q and reached [mm]
-  //! unless the status is kUnreachable.
-  IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
-              const IkOptions<S>& opt = IkOptions<S>()) const {
-    switch (kind_) {
-      case LegKind::kSprawl:
-        return solve(legs_.sprawl, target, q, reached, opt);
-        break;
-      case LegKind::kPlanar:
-        return solve(legs_.planar, target, q, reached, opt);
-        break;
-      case LegKind::kCoxaFemurTibia:
-        return solve(legs_.cft, target, q, reached, opt);
-        break;
-      case LegKind::kAbduction:
-        return solve(legs_.abduction, target, q, reached, opt);
-        break;
-    }
-    return IkStatus::kUnreachable;
+  //! unless the status is kUnreachable. Out of line: a firmware's LTO would
+  //! otherwise copy the dispatch into each caller.
+  STRIDER_NOINLINE IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
+                               const IkOptions<S>& opt = IkOptions<S>()) const {
+    return visit([&](const auto& leg) { return solve(leg, target, q, reached, opt); }, IkStatus::kUnreachable);
   }
 
-  //! ik_body()'s fast path alone, for the walker's tick: true when the leg
-  //! solved the body-frame target [mm] exactly inside the joint limits (kOk,
-  //! the target itself reached), with q written; false leaves q alone (then
-  //! ik() of the leg-frame target decides). Only Fixed coxa/femur/tibia legs
-  //! have this path, which needs no turn into the leg frame: the foot's
-  //! distance from the yaw axis does not depend on it, and t1 is the angle
-  //! of the target's offset from the mount less the mount's yaw.
+  //! ik_body()'s fast path alone, for the walker's tick: true, with q
+  //! written, when the leg solved the body-frame target [mm] exactly inside
+  //! the joint limits; false leaves q alone (then ik() decides). Fixed
+  //! coxa/femur/tibia legs only (leg_ik::cft_solve_turned()).
   STRIDER_ALWAYS_INLINE bool ik_body_fast(const Vec3<S>& target_body, Joints& q, const IkOptions<S>& opt) const {
     return ik_body_fast(mount_, target_body, q, opt);
   }
@@ -178,14 +131,27 @@ class AnyLeg {
     for (uint8_t j = 0; j < N; ++j) to.lo[j] = from.lo[j], to.hi[j] = from.hi[j];
   }
   template <uint8_t N>
-  static JointVector<S, N> narrow(const Joints& q) {
+  static JointVector<S, N> narrow(const Joints& q, const JointLimits<S, N>&) {
     JointVector<S, N> r;
     for (uint8_t j = 0; j < N; ++j) r[j] = q[j];
     return r;
   }
-  // A leg with every joint slot (3-DOF) solves into q and reached directly:
-  // its ik() has the same contract (writes both unless kUnreachable), so
-  // the copies are not needed.
+  // f(the live leg), or fallback (kind_ is always one of the four).
+  template <typename F, typename R>
+  R visit(F f, R fallback) const {
+    switch (kind_) {
+      case LegKind::kSprawl:
+        return f(legs_.sprawl);
+      case LegKind::kPlanar:
+        return f(legs_.planar);
+      case LegKind::kCoxaFemurTibia:
+        return f(legs_.cft);
+      case LegKind::kAbduction:
+        return f(legs_.abduction);
+    }
+    return fallback;
+  }
+  // A 3-DOF leg solves into q and reached directly (the same contract).
   template <bool kFull>
   struct Full {};
   template <typename Leg>
@@ -210,9 +176,8 @@ class AnyLeg {
     return s;
   }
 
-  // ik_body_fast(): Fixed coxa/femur/tibia legs only. The offset from the
-  // mount in scalars and Fixed's differences in place (a Vec3 difference is
-  // an out-of-line call on the AVR).
+  // ik_body_fast(): Fixed coxa/femur/tibia legs only; differences in place
+  // (a Vec3 difference is an out-of-line call on the AVR).
   template <typename Leg>
   static bool body_fast(const Leg&, const LegMount<float>&, const Vec3<float>&, Joints&) {
     return false;
@@ -224,8 +189,7 @@ class AnyLeg {
     return leg_ik::cft_solve_turned(leg, d, m.yaw_rad, q);
   }
 
-  // One leg of the four kinds; kind_ says which member is live. The
-  // constructor is needed because Fixed has a non-trivial default constructor.
+  // One leg of the four kinds; kind_ says which member is live.
   template <LegKind kKind>
   struct KindTag {};
   union Legs {

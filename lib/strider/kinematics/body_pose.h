@@ -1,17 +1,8 @@
 //! Body pose kinematics: move and tilt the body while the feet stay on the
 //! ground (seed 001 section 2.3 with algorithm 2; seed 000 eqs 9-11 are the
-//! translation-only case).
-//!
-//! Frames: the stance frame is the body frame of the neutral pose (origin at
-//! the body centre, x forward, y left, z up); the feet are fixed in it. A
-//! pose moves the body to translation t [mm] and rotation R = rotation_rpy
-//! (roll, pitch, yaw, order) in the stance frame. A foot p of the stance
-//! frame is then, in the moved body frame,
-//!   p' = R^T (p - t),
-//! and in its leg frame mount.body_to_leg(p') (seed 000 eqs 9-11 plus the
-//! mount yaw). The default order is kZYX, R = Rz(yaw) Ry(pitch) Rx(roll),
-//! which is also what seed 001's default order 'xyz' means in its own naming
-//! (math/rotation.h).
+//! translation-only case). A stance-frame foot p is p' = R^T (p - t) in the
+//! moved body frame, then in its leg frame through the mount (frames:
+//! docs/kinematics.md).
 #ifndef STRIDER_KINEMATICS_BODY_POSE_H
 #define STRIDER_KINEMATICS_BODY_POSE_H
 

@@ -1,27 +1,12 @@
 //! CoxaFemurTibiaLeg: the 3-DOF hexapod leg of seed 002 (Qingsheng and
 //! Andika 2018), also seed 004's hip yaw / hip elevation / knee leg.
-//!
-//! Frame: DH frame 0 of seed 002 (table 2): origin on the coxa (yaw) axis, z
-//! up along it, x along the coxa at t1 = 0, y left. d1 is the height of the
-//! femur axis above the origin, l1 (coxa) the horizontal distance from the yaw
-//! axis to the femur axis, l2 the femur, l3 the tibia. t1 yaws the leg about
-//! z; t2 and t3 pitch femur and tibia in the vertical leg plane, positive
-//! upward. All zero: leg stretched out horizontally, foot at (l1 + l2 + l3, 0, d1).
-//!
-//! IK: t1 = atan2(py, px) (eq 12); eq 11's first two rows leave the planar
-//! two-link problem h = px c1 + py s1 - l1 = rho - l1, v = pz - d1 for the femur
-//! and tibia. Default branch t3 <= 0 (knee above the hip-foot line: "t3 is
-//! negative due to reach value z < 0"). Singular cases: on the yaw axis
-//! (rho = 0) t1 is free and set to 0; a target inside the femur-tibia annulus'
-//! hole is tried facing away (t1 + pi), which reaches feet tucked behind the
-//! yaw axis.
-//!
-//! Seed 004 (theta1 hip yaw, theta2 knee, theta3 hip elevation, offset cx) is
-//! this leg with coxa = 0. Its triangle (phi1 = atan(r / (z + cx))) needs
-//! z + cx > 0 for a foot below the hip, so its z is measured downward:
-//! z_seed004 = -z and d1 = cx. Then t1 = theta1, t2 = pi/2 - theta3 (theta3 is
-//! the femur angle from straight up), t3 = theta2 - pi (theta2 is the interior
-//! knee angle), on the branch t3 <= 0.
+//! Origin on the coxa (yaw) axis, z up, x along the coxa at t1 = 0; d1 is the
+//! height of the femur axis, l1 the coxa, l2 the femur, l3 the tibia. t1 yaws
+//! about z, t2 and t3 pitch femur and tibia, positive upward; all zero: leg
+//! stretched out horizontally. IK: t1 = atan2(py, px) (eq 12), then the
+//! two-link problem h = rho - l1, v = pz - d1 (eq 11), branch t3 <= 0 by
+//! default. On the yaw axis t1 is 0; a target inside the annulus' hole is
+//! tried facing away (t1 + pi). Seed 004 as this leg: docs/kinematics.md.
 #ifndef STRIDER_KINEMATICS_COXA_FEMUR_TIBIA_LEG_H
 #define STRIDER_KINEMATICS_COXA_FEMUR_TIBIA_LEG_H
 
@@ -31,18 +16,12 @@ namespace strider {
 
 namespace leg_ik {
 
-//! The integer fast path of CoxaFemurTibiaLeg<Fixed>::ik() for the common
-//! case: target off the yaw axis, in front of it and strictly inside the
-//! femur-tibia annulus (a kOk solve of the target itself). Float, and every
-//! other case, returns false and takes the general path. Writes sol only
-//! when it returns true. One out-of-line copy, for ik() (yaw nullptr) and
-//! for the walker's targets before the mount's turn (cft_solve_turned()).
-//!
-//! With yaw, the target is given in axes turned by *yaw about z against the
-//! leg frame: rho and the two-link problem do not depend on the turn, and t1
-//! is the target's angle less *yaw, wrapped into (-pi, pi]; then only a
-//! solve inside the joint limits counts (t1 first: a foot beyond the coxa's
-//! limits costs no two-link solve).
+//! The integer fast path of CoxaFemurTibiaLeg<Fixed>::ik() (docs/fixed-point.md,
+//! "Leg IK fast path"): a kOk solve of a target off the yaw axis, in front of
+//! it and strictly inside the femur-tibia annulus; else false (and float).
+//! With yaw, the target is in axes turned by *yaw about z against the leg
+//! frame (cft_solve_turned()): t1 is its angle less *yaw, and only a solve
+//! inside the joint limits counts.
 template <typename Leg, typename S>
 bool cft_solve_fast(const Leg&, const Vec3<S>&, const S*, JointVector<S, 3>&) {
   return false;
@@ -63,14 +42,7 @@ STRIDER_NOINLINE_NOCLONE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& 
   JointVector<Fixed, 3> q;
   int32_t t1 = detail::atan2_lean_raw(target.y.raw(), target.x.raw());  // eq 12
   if (yaw != nullptr) {
-    // Both in [-pi, pi]: one turn at most.
-    constexpr int32_t pi_raw = int32_t((detail::kPiQ24 + 128) >> 8);
-    t1 -= yaw->raw();
-    if (t1 > pi_raw) {
-      t1 -= 2 * pi_raw;
-    } else if (t1 <= -pi_raw) {
-      t1 += 2 * pi_raw;
-    }
+    t1 = detail::wrap_pi_once_raw(t1 - yaw->raw());
     if (t1 < leg.limits.lo[0].raw() || leg.limits.hi[0].raw() < t1) return false;
   }
   q[0] = Fixed::from_raw(t1);
@@ -85,10 +57,8 @@ STRIDER_NOINLINE_NOCLONE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& 
   return true;
 }
 
-//! The fast path for a target d given in axes turned by yaw about z against
-//! the leg frame (a walker's offset from the mount before the mount's yaw):
-//! true, with q written, only for a solve inside the joint limits (kOk, d
-//! itself reached); false leaves q alone.
+//! The fast path for a target d in axes turned by yaw about z against the
+//! leg frame (a walker's offset from the mount before the mount's yaw).
 template <typename Leg, typename S>
 STRIDER_ALWAYS_INLINE bool cft_solve_turned(const Leg& leg, const Vec3<S>& d, const S& yaw, JointVector<S, 3>& q) {
   return cft_solve_fast(leg, d, &yaw, q);
@@ -133,25 +103,18 @@ struct CoxaFemurTibiaLeg {
   //! joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
-    // Fixed's fast path: strictly inside the annulus is within the bounds
-    // of ik_general() while max_clamp >= 0 (always false for float). It
-    // writes q only when it succeeds, and every exit below then writes q
-    // anyway, so it solves into q directly (no zeroed copy to fill and move).
+    // Fixed's fast path (within ik_general()'s bounds while max_clamp >= 0)
+    // writes q only when it succeeds.
     if (!(opt.max_clamp_mm < S(0)) && leg_ik::cft_solve_fast(*this, target, static_cast<const S*>(nullptr), q)) {
       if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
-      // What finish() does for an exact solve inside the limits; field by
-      // field, as avr-gcc copies a whole Vec3 with a byte loop.
-      reached.x = target.x;
-      reached.y = target.y;
-      reached.z = target.z;
+      leg_ik::copy_point(target, reached);  // what finish() does for an exact solve inside the limits
       return IkStatus::kOk;
     }
     return ik_general(target, q, reached, opt);
   }
 
  private:
-  // Every case the fast path leaves; out of line, so that ik()'s common case
-  // does not pay for this path's registers and stack frame.
+  // Every case the fast path leaves, out of line (ik()'s prologue stays small).
   STRIDER_NOINLINE IkStatus ik_general(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
                                        const IkOptions<S>& opt) const {
     Joints sol;

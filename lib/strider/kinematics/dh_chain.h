@@ -1,11 +1,8 @@
 //! DhChain: a serial chain of N <= 6 revolute joints in standard DH
-//! parameters (math/dh.h), with joint limits and a fixed base transform.
-//!
-//! Frames: the base transform maps DH frame 0 into the chain's reference
-//! frame (for a leg: the leg frame or the body frame); frame i is attached to
-//! link i and joint i turns about z of frame i-1. The tip is the origin of
-//! frame N. Forward kinematics is the product base * A1(q1) * ... * AN(qN)
-//! (seed 002 eq 4, seed 000 eq 3).
+//! parameters (math/dh.h), with joint limits and a base transform that maps
+//! DH frame 0 into the chain's reference frame. Joint i turns about z of
+//! frame i-1; the tip is the origin of frame N, at base * A1(q1) * ... *
+//! AN(qN) (seed 002 eq 4, seed 000 eq 3).
 #ifndef STRIDER_KINEMATICS_DH_CHAIN_H
 #define STRIDER_KINEMATICS_DH_CHAIN_H
 
@@ -46,7 +43,6 @@ class DhChain {
     cos_alpha_[i] = cos(p.alpha_rad);
     sin_alpha_[i] = sin(p.alpha_rad);
   }
-  const DhParams<S>& link(uint8_t i) const { return links_[i]; }
   const Limits& limits() const { return limits_; }
   void set_limits(const Limits& l) { limits_ = l; }
   const Transform<S>& base() const { return base_; }
@@ -76,10 +72,8 @@ class DhChain {
   //! The tip position in the reference frame [mm].
   Vec3<S> fk(const Joints& q) const { return fk_pose(q).translation; }
 
-  //! Fills the positional Jacobian at q and returns the tip [mm]. For a
-  //! revolute joint about unit axis z_(i-1) through p_(i-1):
-  //! col = z_(i-1) x (tip - p_(i-1)); the lever stays within the reach,
-  //! so no product exceeds a few hundred mm in Fixed.
+  //! Fills the positional Jacobian at q and returns the tip [mm]:
+  //! col_i = z_(i-1) x (tip - p_(i-1)), within the reach in Fixed.
   Vec3<S> jacobian(const Joints& q, PositionJacobian<S, N>& jac) const {
     Transform<S> f[N + 1];
     frames(q, f);
@@ -88,8 +82,7 @@ class DhChain {
     return tip;
   }
 
-  //! An upper bound of |tip - origin of frame 0| for any q: sum(|a| + |d|)
-  //! [mm]. Sums, no squares, so it is safe in Fixed.
+  //! An upper bound of |tip - origin of frame 0| for any q: sum(|a| + |d|) [mm].
   S reach_bound_mm() const {
     S r = S(0);
     for (uint8_t i = 0; i < N; ++i) r = r + abs(links_[i].a_mm) + abs(links_[i].d_mm);

@@ -1,29 +1,7 @@
 //! Numeric IK for the tip position of a DhChain by damped least squares
-//! (Levenberg-Marquardt): dq = J^T (J J^T + mu I)^-1 e, with e = target - tip
-//! and J the 3xN positional Jacobian. A 3x3 symmetric solve, no heap.
-//!
-//! - Scaling: lengths are measured in units of L / 8, L the power of two at or
-//!   above the chain's reach bound, so J J^T stays below 64 N and nothing
-//!   overflows Q16.16; the error is shifted by a power of two before the
-//!   solve so that small residuals keep their bits.
-//! - Damping: mu = lambda^2 + |e|^2 / 2 (in those units; Sugihara 2011, IEEE
-//!   T-RO 27(5)): far targets take gradient-like steps that a short, nearly
-//!   singular link cannot hijack, close ones Gauss-Newton steps. lambda adapts
-//!   to the gain ratio: a rejected step (residual not lower) multiplies it by
-//!   4, a step that gains less than 1/4 of the linear prediction by 2, one
-//!   that gains more than 3/4 halves it.
-//! - Step limiting: dq is halved until no joint moves more than max_step_rad.
-//! - Joint limits: every iterate is clamped into the limits; a joint sitting on
-//!   a limit that the step pushes outward is locked (its column zeroed).
-//! - Restarts: when the residual stalls above the tolerance, or an attempt has
-//!   used its share of max_iterations, the solver restarts from seeded random
-//!   joints (a local minimum is not the nearest point) and keeps the best
-//!   result over all attempts.
-//! Status: kOk within tolerance_mm; else kJointLimit if a joint sits on a
-//! limit, else kClamped (the nearest reachable point it found); kUnreachable
-//! (q and reached untouched) beyond max_clamp_mm or for a non-finite target.
-//! No NaN can come out: every division has a positive divisor and a NaN start
-//! is replaced.
+//! (Levenberg-Marquardt): dq = J^T (J J^T + mu I)^-1 e, a 3x3 symmetric
+//! solve, no heap. Scaling, damping, step limiting, joint limits, restarts
+//! and the statuses: docs/kinematics.md, "Generic chains".
 #ifndef STRIDER_KINEMATICS_DLS_IK_H
 #define STRIDER_KINEMATICS_DLS_IK_H
 

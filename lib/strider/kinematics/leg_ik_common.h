@@ -15,17 +15,13 @@ namespace strider {
 
 namespace leg_ik {
 
-//! The first test of every solver: |v| <= bound [mm] (the leg's reach plus
-//! max_clamp; further out the target is unreachable anyway), false for NaN
-//! and infinities. Float compares the bits of |v| and of bound (>= 0), one
-//! integer test instead of a ~100-cycle float compare.
+//! |v| <= bound [mm] (bound >= 0), false for NaN and infinities; float
+//! compares the bits (float_bits.h), not the values.
 inline bool within(float v, float bound) { return detail::magnitude_bits(v) <= detail::float_bits(bound); }
 inline bool within(Fixed v, Fixed bound) { return abs(v) <= bound; }
 
-//! a < b and v == 0 for the solvers' hot paths: Fixed compares raws, float
-//! compares bits (float_bits.h) instead of calling the AVR's ~50-cycle float
-//! comparison. Same results as < and == 0 for every value but NaN, which the
-//! solvers never pass (their inputs pass within() first).
+//! a < b and v == 0 on the bits for float, as within(); the same results
+//! for every value but NaN, which never passes within().
 STRIDER_ALWAYS_INLINE bool lt(float a, float b) { return detail::float_less(a, b); }
 STRIDER_ALWAYS_INLINE bool lt(Fixed a, Fixed b) { return a < b; }
 STRIDER_ALWAYS_INLINE bool is_zero(float v) { return detail::float_is_zero(v); }
@@ -34,15 +30,13 @@ STRIDER_ALWAYS_INLINE bool is_zero(Fixed v) { return v.raw() == 0; }
 STRIDER_ALWAYS_INLINE bool same_bits(float a, float b) { return detail::float_bits(a) == detail::float_bits(b); }
 STRIDER_ALWAYS_INLINE bool same_bits(Fixed a, Fixed b) { return a == b; }
 
-//! Whether a sum of squares [unit^2] is too small for its square root to keep
-//! Fixed's precision (a length under 1/4 unit); then use units::norm(). Never for float.
+//! Whether a sum of squares [unit^2] is too small for Fixed's sqrt to keep
+//! its precision (a length under 1/4 unit; then units::norm()).
 constexpr bool tiny_square(float) { return false; }
 constexpr bool tiny_square(Fixed sq) { return sq < Fixed(0.0625); }
 
-//! Scales a pair by one power of two so that its larger magnitude is at
-//! least 1 (Fixed; float is left alone). The angle of the pair is unchanged,
-//! and products of lifted pairs keep ~16 significant bits however small the
-//! pair was (near the folded leg both sides of the two-link atan2 shrink).
+//! Scales a Fixed pair by a power of two so that its larger magnitude is at
+//! least 1: the same angle, and products that keep ~16 significant bits.
 inline void lift_pair(float&, float&) {}
 inline void lift_pair(Fixed& a, Fixed& b) {
   uint32_t m = Fixed::abs_raw(a.raw());
@@ -62,9 +56,8 @@ IkStatus miss_status(S miss_mm, const IkOptions<S>& opt) {
   return miss_mm > opt.tolerance_mm ? IkStatus::kClamped : IkStatus::kOk;
 }
 
-//! Picks, for each revolute joint, the representative of its angle (+-2 pi)
-//! that lies inside the limits; if none does, clamps it to the limit that is
-//! nearer around the circle. Returns true when any joint was clamped.
+//! Each joint's angle +-2 pi inside the limits if one is; else clamped to
+//! the limit nearer around the circle. True when any joint was clamped.
 template <typename S, uint8_t N>
 bool fit_into_limits(const JointLimits<S, N>& lim, JointVector<S, N>& q) {
   bool moved = false;
@@ -98,10 +91,8 @@ bool within_limits(const JointLimits<S, N>& lim, const JointVector<S, N>& q) {
   return true;
 }
 
-//! JointLimits::contains for the fast paths, always inlined (avr-gcc at
-//! -Os otherwise calls it from the larger solvers) and unrolled: avr-gcc
-//! keeps the loop, which reloads every joint just stored (~40 cycles a joint
-//! on the AVR instead of ~25).
+//! JointLimits::contains for the fast paths, inlined and unrolled (avr-gcc's
+//! loop reloads every joint just stored).
 template <uint8_t I, uint8_t N>
 struct LimitsFrom {
   template <typename S>
@@ -129,19 +120,16 @@ STRIDER_ALWAYS_INLINE void copy_point(const Vec3<S>& p, Vec3<S>& reached) {
   reached.z = p.z;
 }
 
-//! An angle that is free (e.g. yaw with the foot on the yaw axis): the
-//! preferred value, or the nearest limit when that is outside them. Choosing
-//! it is not a joint-limit hit.
+//! A free angle (yaw with the foot on the yaw axis): the preferred value
+//! clamped into the limits, which is not a joint-limit hit.
 template <typename S, uint8_t N>
 S free_angle(const JointLimits<S, N>& lim, uint8_t i, S preferred) {
   return clamp(preferred, lim.lo[i], lim.hi[i]);
 }
 
-//! Joint limits after a solve: clamps sol into them and, when that moved a
-//! joint, recomputes `at` = fk(sol). The status becomes kJointLimit only when
-//! the clamp moved the foot by more than the tolerance (a joint a hair past its
-//! limit, e.g. from rounding at a pose on the limit, is not a limit hit), and
-//! a kOk stays kOk only while the target is still within the tolerance.
+//! Clamps sol into the joint limits and, when that moved a joint, sets
+//! at = fk(sol); kJointLimit only when the foot moved by more than the
+//! tolerance, and kOk only while the target is still within it.
 template <typename Leg, typename S>
 IkStatus apply_limits(const Leg& leg, const Vec3<S>& target, typename Leg::Joints& sol, Vec3<S>& at,
                       IkStatus status, const IkOptions<S>& opt) {
@@ -153,11 +141,10 @@ IkStatus apply_limits(const Leg& leg, const Vec3<S>& target, typename Leg::Joint
   return moved ? worst(status, IkStatus::kJointLimit) : status;
 }
 
-//! The common end of every analytic ik(): status from the miss distance,
-//! joint limits, outputs. sol is the solution for the nearest reachable point;
-//! clamped says whether that point may differ from the target (then its
-//! distance is measured through fk; otherwise the target itself was solved for
-//! exactly and is reported as reached). Outputs are untouched on kUnreachable.
+//! The common end of every analytic ik(): sol solves the nearest reachable
+//! point, which may differ from the target when clamped (then measured
+//! through fk; else the target is reported as reached). Status from the miss
+//! distance and the limits; outputs untouched on kUnreachable.
 template <typename Leg, typename S>
 IkStatus finish(const Leg& leg, const Vec3<S>& target, typename Leg::Joints sol, bool clamped,
                 const IkOptions<S>& opt, typename Leg::Joints& q, Vec3<S>& reached) {

@@ -1,24 +1,12 @@
 //! PlanarLeg: the 2-DOF planar (mammal) leg of seed 003 (Srinivas et al.
 //! 2021): hip pitch t1, knee t2, links a1 and a2 in one vertical plane.
-//!
-//! Frame: seed 003's DH frame 0 (table 2) with Strider's axis names: origin on
-//! the hip axis, x forward, z up, y left. The DH x-y plane is the leg's x-z
-//! plane (DH x = x, DH y = z, DH z = -y; the seed calls the second coordinate
-//! z2), so both joints turn about -y and a positive angle turns a link from +x
-//! toward +z. t1 = t2 = 0: leg straight forward; t1 = -pi/2, t2 = 0: hanging
-//! straight down. FK is eq 3; the foot always has y = 0.
-//!
-//! IK: eq 5 gives |t2| = acos((x^2 + z^2 - a1^2 - a2^2) / (2 a1 a2)); the member
-//! `branch` picks its sign. Eq 4 as printed,
-//!   t1 = atan(z / x) + atan(a2 sin t2 / (a1 + a2 cos t2)),
-//! fed eq 5's t2 = +acos(...), gives the hip angle of the other solution,
-//! t2 = -acos(...) (KneeBranch::kNegative). Check: with a1 = a2 = 1, t1 = 0,
-//! t2 = 90 deg the foot is (1, 1); eq 5 gives 90 deg and eq 4 then 90 deg, and
-//! (90, -90) deg also reaches (1, 1) while (90, 90) deg does not. The consistent
-//! pairs are t1 = atan2(z, x) -+ atan2(a2 sin|t2|, a1 + a2 cos t2) for t2 = +-|t2|.
-//! Default: KneeBranch::kPositive (eq 5's acos, and seed 003's 0 <= t2 limits).
-//! A target off the leg plane (y != 0) is projected onto it, so |y| counts
-//! in the miss distance (kClamped beyond the tolerance).
+//! Origin on the hip axis, x forward, z up, y left; both joints turn about
+//! -y (a positive angle turns a link from +x toward +z); t1 = -pi/2, t2 = 0
+//! hangs straight down. FK is eq 3 (the foot has y = 0), IK eqs 4-5 as the
+//! two-link problem of two_link.h with `branch` the sign of t2 (eq 4 as
+//! printed belongs to the other branch: docs/kinematics.md, "2-DOF planar
+//! leg"). A target off the leg plane is projected onto it, so |y| counts in
+//! the miss distance.
 #ifndef STRIDER_KINEMATICS_PLANAR_LEG_H
 #define STRIDER_KINEMATICS_PLANAR_LEG_H
 

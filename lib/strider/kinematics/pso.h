@@ -1,29 +1,8 @@
 //! Particle swarm optimisation, global-best topology (seed 003 section 4.1,
 //! algorithm 1, table 3), for D <= 6 dimensions and up to Capacity particles
-//! in fixed arrays (no heap).
-//!
-//! Velocity and position updates, per particle and dimension d, with r1, r2
-//! drawn uniform in [0, 1) for every d (one xorshift32 draw each: 32 random
-//! bits in double, 24 in float, 16 in Fixed):
-//!   v = w v + c1 r1 (pbest - x) + c2 r2 (gbest - x)                (eq 12)
-//!   x = clamp(x + v, lo, hi)                                       (eq 13)
-//! This is the form pyswarms implements and the seed ran. Eq 12 as printed
-//! multiplies the whole sum by w, w (v + c1 r1 (..) + c2 r2 (..)), which
-//! would also scale the attraction terms by w; Strider follows pyswarms.
-//! Bounds: positions are clamped to [lo, hi] after each move (pyswarms'
-//! "nearest"; its GlobalBestPSO default is "periodic"), and a velocity
-//! component that left the box is reversed and halved, so a particle does not
-//! stay pressed against a bound (seed 003 problem, bounds 0..20 rad, 2000
-//! seeds: 1.05 % of runs stalled on a bound with plain clamping, 0.35 % with
-//! this; bounds 0..20 deg: 0.85 % and none). Initial
-//! positions are uniform in the bounds (particle 0 optionally at a given
-//! start), initial velocities zero (pyswarms draws U[0, 1) whatever the
-//! bounds). Each iteration evaluates the swarm
-//! (minimize: one cost call per particle; minimize_swarm: one call for the
-//! whole swarm, as pyswarms' costs are), updates the personal and the global
-//! bests, stops when the best cost is below cost_threshold, then
-//! moves the swarm; it ends after max_iterations evaluations at the latest.
-//! The same seed gives the same result on the host and on the AVR for Fixed.
+//! in fixed arrays (no heap), in pyswarms' form of eq 12. The update, the
+//! bounds and why they differ from the seed: docs/kinematics.md, "Generic
+//! chains".
 #ifndef STRIDER_KINEMATICS_PSO_H
 #define STRIDER_KINEMATICS_PSO_H
 
@@ -40,7 +19,7 @@ enum class PsoStatus : uint8_t {
   kBadParams = 2       //!< empty swarm, too many particles or lo > hi: nothing run
 };
 
-//! Table 3 of seed 003 are the defaults, except the bounds.
+//! Seed 003's table 3 gives the defaults.
 template <typename S, uint8_t D>
 struct PsoParams {
   S lo[D];                          //!< lower bound per dimension
@@ -54,8 +33,7 @@ struct PsoParams {
   S velocity_clamp = S(0);          //!< |v_d| <= this * (hi_d - lo_d); 0: no clamp
   uint32_t seed = 1;                //!< PRNG seed
   //! Where particle 0 starts instead of its uniform draw (clamped to the
-  //! box; nullptr: uniform like the others), e.g. a known guess: the result
-  //! is then never worse than the guess. The draws are the same either way.
+  //! box; nullptr: uniform), e.g. a known guess, which the result then beats or equals.
   const JointVector<S, D>* start = nullptr;
 
   //! The same bounds for every dimension.
@@ -146,21 +124,17 @@ class ParticleSwarm {
     }
   };
 
-  // Uniform in [0, 1): float 24 bits and Fixed 16 bits of one draw (as
-  // Prng::uniform); double the 32 bits of one draw, exact in a 64-bit
-  // double: xorshift32 has 32 bits of state, so the second draw that
-  // Prng::uniform<double> spends on 53 bits would add no randomness (and the
-  // generator's serial chain is the swarm update's critical path). On the
-  // AVR double is a 32-bit float: there it takes float's 24 bits.
+  // Uniform in [0, 1) from one draw: float 24 bits, Fixed 16, double 32
+  // (a second draw would add no randomness to xorshift32's 32 bits of
+  // state; on the AVR double is float).
   static float unit(Prng& rng, float*) { return rng.uniform<float>(); }
   static Fixed unit(Prng& rng, Fixed*) { return rng.uniform<Fixed>(); }
   static double unit(Prng& rng, double*) {
     return sizeof(double) >= 8 ? double(rng.next_u32()) * (1.0 / 4294967296.0) : double(rng.uniform<float>());
   }
 
-  // Eqs 12-13 in pyswarms' form (see the file comment). The parameters are
-  // copied to locals: the stores to the swarm could otherwise alias them
-  // (they are S too), and every read would be repeated per dimension.
+  // Eqs 12-13 in pyswarms' form. The parameters are copied to locals, as
+  // the stores to the swarm (S too) could alias them.
   void move(const PsoParams<S, D>& p, uint8_t g, Prng& rng) {
     const S w = p.w, c1 = p.c1, c2 = p.c2;
     S lo[D], hi[D], vmax[D];
@@ -198,9 +172,8 @@ class ParticleSwarm {
 };
 
 //! PSO as inverse kinematics: the cost of joints q is the distance from
-//! fk(q) to the target [mm] (seed 003 eq 15), overflow-safe in Fixed. Fk is
-//! any functor Vec3<S>(const JointVector<S, D>&), e.g. a lambda around a
-//! leg's or a DhChain's fk.
+//! fk(q) to the target [mm] (seed 003 eq 15); Fk is any functor
+//! Vec3<S>(const JointVector<S, D>&).
 template <typename S, typename Fk>
 struct FkDistanceCost {
   const Fk* fk;
@@ -214,11 +187,9 @@ FkDistanceCost<S, Fk> make_fk_distance_cost(const Fk& fk, const Vec3<S>& target_
   return FkDistanceCost<S, Fk>{&fk, target_mm};
 }
 
-//! IK by PSO under joint limits: the box is `limits` (finite ones!), the
-//! other settings come from `params`. Status as for the analytic legs: kOk
-//! within opt.tolerance_mm, kJointLimit when the best sits on (within 1/1024
-//! of the range of) a bound, else kClamped; kUnreachable (q and reached
-//! untouched) beyond opt.max_clamp_mm.
+//! IK by PSO in the box of (finite) `limits`, other settings from `params`.
+//! kOk within opt.tolerance_mm, kJointLimit when the best sits within 1/1024
+//! of the range of a bound, else kClamped; kUnreachable beyond max_clamp_mm.
 template <typename S, uint8_t D, uint8_t Capacity, typename Fk>
 IkStatus pso_ik(ParticleSwarm<S, D, Capacity>& swarm, const Fk& fk, const JointLimits<S, D>& limits,
                 const Vec3<S>& target_mm, JointVector<S, D>& q, Vec3<S>& reached,
@@ -234,7 +205,6 @@ IkStatus pso_ik(ParticleSwarm<S, D, Capacity>& swarm, const Fk& fk, const JointL
   IkStatus status = IkStatus::kOk;
   if (opt.tolerance_mm < r.cost) {
     status = IkStatus::kClamped;
-    // On a limit: within 1/1024 of the range (a swarm lands near, not on, it).
     for (uint8_t d = 0; d < D; ++d) {
       const S margin = (limits.hi[d] - limits.lo[d]) * S(1.0 / 1024.0);
       if (!(limits.lo[d] + margin < r.position[d]) || !(r.position[d] < limits.hi[d] - margin))

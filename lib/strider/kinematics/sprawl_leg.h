@@ -1,20 +1,11 @@
 //! SprawlLeg: the 2-DOF sprawling leg of seed 000 (Atique et al. 2018).
-//!
-//! Frame: DH frame 0 of seed 000, origin on the hip yaw axis, z up. Joint t1
-//! yaws the leg about z (eq 7), joint t2 pitches the shank (eq 8); the thigh
-//! a1 stays horizontal. t1 = t2 = 0 puts the foot at (a1 + a2, 0, 0).
-//! The foot can only reach the torus swept by the knee circle of radius a1
-//! and the shank a2. Eqs 7-8 face the target (t1 = atan2(y, x)) and give the
-//! nearest point of the near half, |sqrt((rho - a1)^2 + z^2) - a2| away (rho =
-//! sqrt(x^2 + y^2)); a target inside that circle can be nearer the far half
-//! (t1 + pi, knee folded back past the yaw axis: a2 > a1 reaches under the
-//! hip), so both are tried and the nearer wins. Any target off the surface is
-//! clamped onto it. On the yaw axis (rho = 0) t1 is free and set to 0; on the
-//! knee circle (rho = a1, z = 0) the shank direction is undefined and the
-//! target is unreachable.
-//!
-//! Squares are taken in working units (leg_ik_common.h) chosen per call, so
-//! the plain aggregate {a1_mm, a2_mm, limits} needs no cached constants.
+//! Origin on the hip yaw axis, z up; t1 yaws the leg about z (eq 7), t2
+//! pitches the shank (eq 8), the thigh a1 stays horizontal; t1 = t2 = 0 puts
+//! the foot at (a1 + a2, 0, 0). The foot lives on a torus: a target off it is
+//! clamped onto it, the near and the far half (t1 + pi) both tried, and the
+//! singular points are handled as docs/kinematics.md, "2-DOF sprawling leg",
+//! says. Squares are taken in working units chosen per call, so the plain
+//! aggregate {a1_mm, a2_mm, limits} needs no cached constants.
 #ifndef STRIDER_KINEMATICS_SPRAWL_LEG_H
 #define STRIDER_KINEMATICS_SPRAWL_LEG_H
 
@@ -24,17 +15,9 @@ namespace strider {
 
 namespace leg_ik {
 
-//! The integer fast path of SprawlLeg<Fixed>::ik() (docs/fixed-point.md,
-//! "Leg IK fast path"): eqs 7-8 in wide units with the lean atan2 for the
-//! common case, the target off the yaw axis (rho >= 1/16 unit) and off the
-//! knee circle, every length below 8 units, and the near half of the torus
-//! at least as near as the far half. Gives the joints and the miss distance
-//! [mm]; float, and every other case, returns false and takes the general
-//! path. Writes sol and miss_mm only when it returns true.
 //! For a target inside the knee circle (miss < 0) [wide units]: whether
-//! the near half of the torus is at least as near as the far half (t1 + pi,
-//! knee distance sqrt((rho + a1)^2 + z^2)); false also when that distance
-//! does not fit wide units. Out of line: it is the rarer case.
+//! the near half of the torus is at least as near as the far half (t1 + pi);
+//! false also when the far knee distance does not fit wide units.
 STRIDER_NOINLINE inline bool sprawl_near_half_wins(int32_t rho, int32_t a1, int32_t a2, int32_t z, int32_t miss) {
   const uint32_t far = uint32_t(rho) + uint32_t(a1);
   if (far >= 0x80000000UL) return false;
@@ -44,6 +27,9 @@ STRIDER_NOINLINE inline bool sprawl_near_half_wins(int32_t rho, int32_t a1, int3
   return !(miss_far < 0 ? -miss_far < -miss : miss_far < -miss);
 }
 
+//! The integer fast path of SprawlLeg<Fixed>::ik() (docs/fixed-point.md,
+//! "Leg IK fast path"): the joints and the miss distance [mm], or false
+//! (float, and every case it leaves) for the general path.
 template <typename Leg, typename S>
 bool sprawl_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 2>&, S&) {
   return false;
@@ -51,8 +37,7 @@ bool sprawl_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 2>&, S&) {
 template <typename Leg>
 STRIDER_ALWAYS_INLINE bool sprawl_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 2>& sol,
                                              Fixed& miss_mm) {
-  // The aggregate caches nothing: working units per call. Lengths of 2^14 mm
-  // and more take the general path (their raw sum could overflow).
+  // Lengths of 2^14 mm and more take the general path (their raw sum could overflow).
   const uint32_t ra1 = uint32_t(leg.a1_mm.raw()), ra2 = uint32_t(leg.a2_mm.raw());
   if (ra1 >= 0x40000000UL || ra2 >= 0x40000000UL) return false;
   const int8_t n = units::unit_shift(Fixed::from_raw(int32_t(ra1 + ra2)));
@@ -87,7 +72,6 @@ struct SprawlLeg {
   S a2_mm;  //!< leg (shank), knee axis to foot [mm]
   JointLimits<S, kDof> limits;
 
-  //! Same as the aggregate {a1, a2, limits}; for symmetry with the other legs.
   static constexpr SprawlLeg make(S a1, S a2, const JointLimits<S, kDof>& limits) {
     return SprawlLeg{a1, a2, limits};
   }
@@ -124,15 +108,13 @@ struct SprawlLeg {
     return status;
   }
 
-  // Every case the fast path leaves; out of line, so that ik()'s common case
-  // does not pay for this path's registers and stack frame.
+  // Every case the fast path leaves, out of line (ik()'s prologue stays small).
   STRIDER_NOINLINE IkStatus ik_general(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
                                        const IkOptions<S>& opt) const {
     const S bound_xy = a1_mm + a2_mm + opt.max_clamp_mm;
     if (!leg_ik::within(target.x, bound_xy) || !leg_ik::within(target.y, bound_xy) ||
         !leg_ik::within(target.z, a2_mm + opt.max_clamp_mm))
       return IkStatus::kUnreachable;  // farther than max_clamp from the torus
-    // Working units per call (leg_ik_common.h), so the aggregate needs no cache.
     const int8_t n = units::unit_shift(a1_mm + a2_mm);
     const S x = units::to_unit(target.x, n), y = units::to_unit(target.y, n), z = units::to_unit(target.z, n);
     const S a1 = units::to_unit(a1_mm, n), a2 = units::to_unit(a2_mm, n);

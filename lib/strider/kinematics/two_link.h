@@ -1,9 +1,8 @@
 //! TwoLink: the planar two-link problem every analytic leg reduces to
 //! (seed 003 eqs 3-5; the femur and tibia of seed 002 eqs 8-11 and of seed
 //! 001 eqs 4.12-4.21), and KneeBranch, the choice between its two solutions.
-//!
-//! Inputs are in working units (math/working_units.h), so Fixed can square them;
-//! Fixed's integer fast path (solve_wide) works in wide units (wide_units.h).
+//! Inputs are in working units (math/working_units.h), solve_wide's in wide
+//! units (wide_units.h).
 #ifndef STRIDER_KINEMATICS_TWO_LINK_H
 #define STRIDER_KINEMATICS_TWO_LINK_H
 
@@ -89,9 +88,7 @@ struct TwoLink {
 //! annulus, with the identities of TwoLink::solve in 16/32-bit integers.
 //! Returns false, leaving ta and tb alone, when the point is not strictly
 //! inside or the links are 8 units or longer: then use solve().
-//! Always inlined: solve_wide() below is the shared out-of-line copy.
-//! kSharedAtan2 calls the one out-of-line lean atan2 instead of inlining
-//! its three copies (~0.4 KB each, for ~45 cycles a call).
+//! kSharedAtan2 calls the out-of-line lean atan2 instead of inlining it.
 template <bool kSharedAtan2 = false>
 STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch,
                                              Fixed& ta, Fixed& tb) {
@@ -103,20 +100,12 @@ STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t
   int32_t s = int32_t(wide::sqrt_product(outer2 - d2, d2 - inner2));  // 2 a1 a2 |sin tb|
   if (branch == KneeBranch::kNegative) s = -s;
   const int32_t k1 = int32_t(d2) + wide::from_sq(link.diff_sq);  // 2 a1 (a1 + a2 cos tb); diff_sq < 0 for a1 < a2
-  // tb = atan2(s, c); ta = atan2(v, h) - atan2(s, k1), two lean atan2s
-  // being cheaper on the AVR than scaling both pairs to 16 bits for the
-  // angle-difference identity; their errors (< 1.2e-4 rad together) stay far
-  // inside the bounds.
+  // tb = atan2(s, c); ta = atan2(v, h) - atan2(s, k1): two lean atan2s are
+  // cheaper on the AVR than the angle-difference identity in 16 bits.
   tb = Fixed::from_raw(kSharedAtan2 ? detail::atan2_lean_call(s, c) : detail::atan2_lean_raw(s, c));
   int32_t a = kSharedAtan2 ? detail::atan2_lean_call(v, h) - detail::atan2_lean_call(s, k1)
                            : detail::atan2_lean_raw(v, h) - detail::atan2_lean_raw(s, k1);
-  const int32_t pi_raw = int32_t((detail::kPiQ24 + 128) >> 8);
-  if (a > pi_raw) {
-    a -= 2 * pi_raw;
-  } else if (a <= -pi_raw) {
-    a += 2 * pi_raw;
-  }
-  ta = Fixed::from_raw(a);
+  ta = Fixed::from_raw(detail::wrap_pi_once_raw(a));
   return true;
 }
 

@@ -11,11 +11,10 @@ namespace wide {
 
 //! Shift that brings u (!= 0) into [2^31, 2^32): whole bytes, then bits.
 STRIDER_ALWAYS_INLINE uint8_t normalize_top(uint32_t& u) {
-  uint8_t k = 0;
-  if (u < 0x10000UL) { u <<= 16; k = 16; }
-  if (u < 0x1000000UL) { u <<= 8; k = uint8_t(k + 8); }
-  while (u < 0x80000000UL) { u <<= 1; ++k; }
-  return k;
+  const uint8_t k = detail::normalize_even(u);
+  if (u >= 0x80000000UL) return k;
+  u <<= 1;
+  return uint8_t(k + 1);
 }
 
 //! round(root 2^e) for e in [-31, 7] (a signed shift of an isqrt result).
@@ -23,16 +22,13 @@ STRIDER_ALWAYS_INLINE uint32_t shift_signed(uint32_t root, int8_t e) {
   return e >= 0 ? shl(root, uint8_t(e)) : detail::shr_round(root, uint8_t(-e));
 }
 
-//! sqrt(x) for x in Q6.24 (0 < x < 2^30): wide units. Inline: one call
-//! site per solver, where a call costs more in register saves.
-//! kSharedRoot calls the shared root kernel (isqrt_q22_call) instead of
-//! inlining it.
+//! sqrt(x) for x in Q6.24 (0 < x < 2^30): wide units. kSharedRoot calls the
+//! shared root kernel (isqrt_q22_call) instead of inlining it.
 template <bool kSharedRoot = false>
 STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
-  // normalize_even() and shift_signed() around the root in AVR assembly
-  // (gcc loops over the bits of each shift; ~80 -> ~50 cycles), with
-  // h = s / 2. test_avr_exact (wide_sqrt_sq) checks it against the C.
+  // normalize_even() and shift_signed() around the root in AVR assembly,
+  // with h = s / 2 (test_avr_exact: wide_sqrt_sq).
   uint8_t h;
   __asm__(
       "clr %[h]\n\t"
@@ -95,17 +91,14 @@ STRIDER_ALWAYS_INLINE int32_t sqrt_sq(uint32_t x) {
 STRIDER_NOINLINE inline int32_t sqrt_sq_call(uint32_t x) { return sqrt_sq<true>(x); }
 
 //! sqrt(p q) for p, q > 0 in Q6.24 (a product of up to 60 bits), relative
-//! error < 2^-14: both are normalised to 16 significant bits, multiplied,
-//! and the root comes from the interpolated table alone. Q6.24.
-//! Inline for the same reason as sqrt_sq().
+//! error < 2^-14: both normalised to 16 significant bits, multiplied, and
+//! the root from the interpolated table alone. Q6.24.
 STRIDER_ALWAYS_INLINE uint32_t sqrt_product(uint32_t p, uint32_t q) {
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
-  // The C below in AVR assembly, step for step (~240 -> ~150 cycles): gcc
-  // loops over every bit of its shifts. Only hi16 of the normalised p and q
-  // is used, so their bit steps shift the top three bytes. The estimate has
-  // at most 17 bits, so the final left shift moves its bits within three
-  // bytes first and then whole bytes (the same bits modulo 2^32).
-  // test_avr_exact (wide_sqrt_product) checks it against the C bit for bit.
+  // The C below in AVR assembly, bit for bit (test_avr_exact:
+  // wide_sqrt_product). Only hi16 of the normalised p and q is used, so their
+  // bit steps shift the top three bytes; the estimate has at most 17 bits,
+  // so the final left shift moves bits within three bytes, then whole bytes.
   uint32_t m;
   uint8_t k;
   __asm__(
@@ -148,17 +141,9 @@ STRIDER_ALWAYS_INLINE uint32_t sqrt_product(uint32_t p, uint32_t q) {
       "4:\n\t"
       // isqrt_table_estimate(m) into p's low three bytes: t0, t1 = kSqrt[j],
       // [j + 1] for j = (m >> 24) - 64; 32768 + t0 + hi16((t1 - t0) (m >> 8)).
-      "mov r30, %D[m]\n\t" "subi r30, 64\n\t" "clr r31\n\t" "lsl r30\n\t" "rol r31\n\t"
-      "subi r30, lo8(-(%[sqrt_table]))\n\t" "sbci r31, hi8(-(%[sqrt_table]))\n\t"
-      "lpm %A[p], Z+\n\t" "lpm %B[p], Z+\n\t"
-      "lpm %A[q], Z+\n\t" "lpm %B[q], Z\n\t"
+      "mov r30, %D[m]\n\t" "subi r30, 64\n\t" STRIDER_ASM_TABLE_PAIR("sqrt_table", "p", "q")
       "sub %A[q], %A[p]\n\t" "sbc %B[q], %B[p]\n\t"
-      "mul %A[q], %B[m]\n\t" "mov %C[p], r1\n\t"
-      "mul %B[q], %C[m]\n\t" "movw %C[q], r0\n\t"
-      "mul %B[q], %B[m]\n\t" "add %C[p], r0\n\t" "adc %C[q], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %D[q], __zero_reg__\n\t"
-      "mul %A[q], %C[m]\n\t" "add %C[p], r0\n\t" "adc %C[q], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %D[q], __zero_reg__\n\t"
+      STRIDER_ASM_MUL16_HI("%A[q]", "%B[q]", "%B[m]", "%C[m]", "%C[p]", "%C[q]", "%D[q]")
       "add %A[p], %C[q]\n\t" "adc %B[p], %D[q]\n\t" "clr %C[p]\n\t" "rol %C[p]\n\t"
       "ldi r31, 0x80\n\t" "add %B[p], r31\n\t" "adc %C[p], __zero_reg__\n\t"
       // shift_signed(estimate, e), e = 16 - k / 2 in [-15, 16].

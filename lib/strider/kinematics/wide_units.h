@@ -1,6 +1,6 @@
-//! Wide working units: the 32-bit integers of Fixed's leg IK fast paths
-//! (two_link.h's solve_wide and the legs' own fast paths), their conversions
-//! from and to Fixed millimetres and their squares. Roots: wide_sqrt.h.
+//! Wide working units: the 32-bit integers of Fixed's leg IK fast paths, their
+//! conversions from and to Fixed millimetres and their squares. Roots:
+//! wide_sqrt.h. Why and how: docs/fixed-point.md, "Leg IK fast path".
 #ifndef STRIDER_KINEMATICS_WIDE_UNITS_H
 #define STRIDER_KINEMATICS_WIDE_UNITS_H
 
@@ -9,14 +9,11 @@
 namespace strider {
 namespace leg_ik {
 
-//! Fixed's integer fast path (docs/fixed-point.md, "Leg IK"). Lengths are
-//! "wide" working units: int32 Q3.28 (|v| < 8 units), so a length's top 16
-//! bits are Q3.12 and its square needs two 16x16 products; squares are Q6.24,
-//! which is a Fixed square in units [unit^2] shifted left by 8 (whole bytes).
+//! Lengths in int32 Q3.28 working units (|v| < 8 units); squares in Q6.24,
+//! a Fixed square [unit^2] shifted left by 8.
 namespace wide {
 
-//! u << k for k in [0, 31]: whole bytes, then single bits (avr-gcc loops
-//! over every bit of a variable 32-bit shift).
+//! u << k for k in [0, 31]: whole bytes, then single bits.
 STRIDER_ALWAYS_INLINE uint32_t shl(uint32_t u, uint8_t k) {
   if (k & 16) u <<= 16;
   if (k & 8) u <<= 8;
@@ -24,8 +21,7 @@ STRIDER_ALWAYS_INLINE uint32_t shl(uint32_t u, uint8_t k) {
   return u;
 }
 
-//! from_mm() for any shift: out of line, as only short legs (below 128 mm),
-//! very long ones and coordinates of 256 mm or more need it.
+//! from_mm() for any shift: out of line, the rare case.
 inline bool from_mm_general(Fixed v_mm, int8_t shift, int32_t& out) {
   uint32_t m = Fixed::abs_raw(v_mm.raw());
   const int8_t k = int8_t(12 - shift);  // wide = raw 2^(12 - n)
@@ -49,8 +45,7 @@ STRIDER_ALWAYS_INLINE bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
   const uint8_t down = uint8_t(shift - 4);  // 8 - k for wide = raw 2^k, k = 12 - n
   uint32_t m = Fixed::abs_raw(v_mm.raw());
   // The common case, inline: |v| < 256 mm and k in [1, 7] (legs of 128 mm
-  // and more). raw 2^k is a whole-byte shift, then 8 - k single-bit steps
-  // back (one for a 128-255 mm leg), instead of k steps; it stays below 2^31.
+  // and more): raw 2^k as a whole-byte shift and 8 - k single-bit steps back.
   if (uint8_t(down - 1U) < 7U && m < 0x1000000UL) {
     m <<= 8;
     for (uint8_t r = down; r != 0; --r) m >>= 1;
@@ -60,12 +55,12 @@ STRIDER_ALWAYS_INLINE bool from_mm(Fixed v_mm, int8_t shift, int32_t& out) {
   return from_mm_general(v_mm, shift, out);
 }
 
-//! |v| of from_mm(), for a coordinate that is only squared: no sign to put
-//! back and take off again.
+//! |v| of from_mm(), for a coordinate that is only squared (the same steps:
+//! a shared helper costs the hexapod leg's fast path cycles).
 STRIDER_ALWAYS_INLINE bool from_mm_abs(Fixed v_mm, int8_t shift, uint32_t& out) {
   const uint8_t down = uint8_t(shift - 4);
   uint32_t m = Fixed::abs_raw(v_mm.raw());
-  if (uint8_t(down - 1U) < 7U && m < 0x1000000UL) {  // as in from_mm()
+  if (uint8_t(down - 1U) < 7U && m < 0x1000000UL) {
     m <<= 8;
     for (uint8_t r = down; r != 0; --r) m >>= 1;
     out = m;
@@ -78,19 +73,15 @@ STRIDER_ALWAYS_INLINE bool from_mm_abs(Fixed v_mm, int8_t shift, uint32_t& out) 
 }
 
 //! A Fixed length [unit] below 8 units in wide units (exact): raw 2^12,
-//! modulo 2^32, from one 16x16 product and a 16-bit shift (avr-gcc loops
-//! 12 times for a 32-bit shift by 12).
+//! modulo 2^32, from one 16x16 product and a 16-bit shift.
 STRIDER_ALWAYS_INLINE int32_t from_unit(Fixed v) {
   const uint32_t u = uint32_t(v.raw());
   return detail::to_signed(detail::mul_u16(uint16_t(u), 0x1000U) + (uint32_t(uint16_t(detail::hi16(u) << 12)) << 16));
 }
 
 //! A Fixed square or difference of squares [unit^2] below 64 in magnitude
-//! (a TwoLink constant of links shorter than 8 units; a1^2 - a2^2 is
-//! negative when a1 < a2) in Q6.24: raw 2^8, exact. A product, not
-//! raw << 8: shifting a negative value left is undefined in C++14, and
-//! |raw| < 2^22 keeps the product inside int32. avr-gcc emits the same
-//! byte moves for both.
+//! in Q6.24: raw 2^8, exact (a product: a negative value shifted left is
+//! undefined in C++14).
 STRIDER_ALWAYS_INLINE int32_t from_sq(Fixed sq) { return sq.raw() * 256; }
 
 //! A wide length w >= 0 as Fixed [mm] for a leg with unit shift n:
@@ -109,9 +100,8 @@ inline bool to_mm(uint32_t w, int8_t shift, Fixed& out) {
   return true;
 }
 
-//! The raw difference a - b of two Fixed values below 2^14 in magnitude
-//! (16384 mm), without the saturation test of Fixed's operator- (an
-//! out-of-line call on the AVR); false when either is larger.
+//! The raw difference a - b of two Fixed values below 2^14 in magnitude,
+//! without Fixed's saturation test; false when either is larger.
 STRIDER_ALWAYS_INLINE bool sub_raw(Fixed a, Fixed b, Fixed& out) {
   const uint32_t ua = uint32_t(a.raw()), ub = uint32_t(b.raw());
   // uint32_t casts: unsigned long is 64 bits on some hosts.
@@ -136,9 +126,7 @@ STRIDER_ALWAYS_INLINE uint32_t sq(int32_t w) { return sq_abs(detail::abs_u32(w))
 // hi16(X)^2 and hi16(2 hi16(X) lo16(X)); X is clobbered.
 #define STRIDER_WIDE_SQ_ADD(X)                                                                             \
   "sbrs %D[" X "], 7\n\t" "rjmp 1f\n\t"                                                                  \
-  "com %A[" X "]\n\t" "com %B[" X "]\n\t" "com %C[" X "]\n\t" "com %D[" X "]\n\t" "sec\n\t"            \
-  "adc %A[" X "], __zero_reg__\n\t" "adc %B[" X "], __zero_reg__\n\t"                                     \
-  "adc %C[" X "], __zero_reg__\n\t" "adc %D[" X "], __zero_reg__\n\t"                                     \
+  STRIDER_ASM_NEG32(X)                                                                                    \
   "1:\n\t"                                                                                                \
   "mul %C[" X "], %C[" X "]\n\t" "movw %A[t], r0\n\t"                                                    \
   "mul %D[" X "], %D[" X "]\n\t" "movw %C[t], r0\n\t"                                                    \
@@ -157,9 +145,8 @@ STRIDER_ALWAYS_INLINE uint32_t sq(int32_t w) { return sq_abs(detail::abs_u32(w))
   "add %A[s], %C[t]\n\t" "adc %B[s], %D[t]\n\t" "adc %C[s], __zero_reg__\n\t" "adc %D[s], __zero_reg__\n\t"
 #endif
 
-//! sq(a) + sq(b) (modulo 2^32). On the AVR in assembly, the same bits: gcc
-//! spills the two squares' temporaries around the solvers' live values.
-//! test_avr_exact (wide_sq_sum) checks it against the C.
+//! sq(a) + sq(b) (modulo 2^32); on the AVR in assembly, bit for bit
+//! (test_avr_exact: wide_sq_sum).
 STRIDER_ALWAYS_INLINE uint32_t sq_sum(int32_t a, int32_t b) {
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
   uint32_t s, t;
@@ -173,8 +160,7 @@ STRIDER_ALWAYS_INLINE uint32_t sq_sum(int32_t a, int32_t b) {
 }
 #undef STRIDER_WIDE_SQ_ADD
 
-//! from_mm() as one shared out-of-line copy (the sprawl leg converts five
-//! values per solve).
+//! from_mm() as one shared out-of-line copy.
 STRIDER_NOINLINE inline bool from_mm_call(Fixed v_mm, int8_t shift, int32_t& out) { return from_mm(v_mm, shift, out); }
 
 }  // namespace wide

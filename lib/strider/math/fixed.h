@@ -1,15 +1,7 @@
-//! Fixed: Strider's fixed-point scalar, signed Q16.16 in an int32_t.
-//!
-//! Range [-32768, 32768) with a resolution of 2^-16 (1.5e-5): millimetres up to
-//! +-32 m at 0.015 um and radians at 0.00087 deg. Designed for the ATmega2560:
-//! - no 64-bit arithmetic anywhere (avr-gcc 5.4 miscompiles int64 shifts, see
-//!   docs/kinematics.md), products are built from four 16x16->32 partial
-//!   products, which the AVR does with its 8x8 hardware multiplier;
-//! - multiplication rounds to nearest and saturates instead of wrapping;
-//! - division is exact long division on 32-bit words: correct but slow, so hot
-//!   paths multiply by precomputed reciprocals instead.
-//! All operations use unsigned or well-defined signed arithmetic, so host and
-//! AVR builds give bit-identical results (tested on the simulated Mega).
+//! Fixed: Strider's fixed-point scalar, signed Q16.16 in an int32_t: range
+//! [-32768, 32768), resolution 2^-16. Saturating, rounding arithmetic without
+//! 64-bit types (avr-gcc 5.4 miscompiles int64 shifts, docs/benchmarks.md),
+//! bit-identical on the host and the AVR (docs/fixed-point.md).
 #ifndef STRIDER_MATH_FIXED_H
 #define STRIDER_MATH_FIXED_H
 
@@ -48,10 +40,9 @@ class Fixed {
   static constexpr Fixed max() { return from_raw(kMaxRaw); }
   static constexpr Fixed min() { return from_raw(kMinRaw); }
 
-  // Addition and subtraction saturate: a wrapped coordinate would jump a leg.
-  // Constant operands fold through the constexpr path; at run time the AVR
-  // adds in registers and tests the overflow flag (an out-of-line call of
-  // ~80 cycles in C, 6 inline; the same result, bit for bit).
+  // The operators saturate (a wrapped coordinate would jump a leg). Constant
+  // operands fold through the constexpr raw helpers, run-time ones take the
+  // *_fast kernels (the same results, bit for bit).
   friend constexpr Fixed operator+(Fixed a, Fixed b) {
     return from_raw((__builtin_constant_p(a.raw_) && __builtin_constant_p(b.raw_)) ? sat_add(a.raw_, b.raw_)
                                                                                   : sat_add_fast(a.raw_, b.raw_));
@@ -62,8 +53,6 @@ class Fixed {
   }
   constexpr Fixed operator-() const { return from_raw(neg_raw(raw_)); }
   constexpr Fixed operator+() const { return *this; }
-  // Constant operands fold through the constexpr path; run-time products on
-  // the AVR take the hand-scheduled multiply (same result, bit for bit).
   friend constexpr Fixed operator*(Fixed a, Fixed b) {
     return from_raw((__builtin_constant_p(a.raw_) && __builtin_constant_p(b.raw_)) ? mul_raw(a.raw_, b.raw_)
                                                                                   : mul_raw_fast(a.raw_, b.raw_));
@@ -90,7 +79,7 @@ class Fixed {
     return n >= 0 ? from_raw(shl_sat(raw_, n)) : from_raw(asr_round(raw_, -n));
   }
 
-  // ---- raw helpers, public so the math functions can share them ----------
+  // Raw helpers, public so the math functions can share them.
   static constexpr int32_t sat_add(int32_t a, int32_t b) {
     return (b > 0 && a > kMaxRaw - b) ? kMaxRaw : (b < 0 && a < kMinRaw - b) ? kMinRaw : a + b;
   }
@@ -101,9 +90,8 @@ class Fixed {
   static constexpr int32_t neg_raw(int32_t a) { return a == kMinRaw ? kMaxRaw : -a; }
   static constexpr uint32_t abs_raw(int32_t a) { return a < 0 ? uint32_t(0) - uint32_t(a) : uint32_t(a); }
 
-  //! round((a * b) / 2^16), saturated, with no 64-bit type: |a| = ah:al and
-  //! |b| = bh:bl in 16-bit halves, and
-  //! |a*b| / 2^16 = ah*bh*2^16 + ah*bl + al*bh + (al*bl + 2^15) / 2^16.
+  //! round((a * b) / 2^16), saturated, from the 16-bit halves of |a|, |b|:
+  //! ah*bh*2^16 + ah*bl + al*bh + (al*bl + 2^15) / 2^16.
   static constexpr int32_t mul_raw(int32_t a, int32_t b) {
     return apply_sign(mul_mag(abs_raw(a), abs_raw(b)), (a < 0) != (b < 0));
   }
@@ -118,11 +106,8 @@ class Fixed {
                   : apply_sign(div_mag(abs_raw(a), abs_raw(b)), (a < 0) != (b < 0));
   }
 
-  //! sat_add, sat_sub, mul_raw and div_raw for run time: the same results; on
-  //! the AVR the kernels of fixed_avr.h (an add and a branch on the overflow
-  //! flag; 16 x 16-bit hardware products instead of four 32-bit multiply
-  //! calls, 582 cycles in C; a 31-step restoring loop, ~880 cycles, instead
-  //! of a 32-bit library division and 17 steps in C, ~1,600).
+  //! sat_add, sat_sub, mul_raw and div_raw for run time: on the AVR the
+  //! kernels of fixed_avr.h (docs/fixed-point.md, "Design for the ATmega2560").
 #if defined(__AVR__)
   STRIDER_ALWAYS_INLINE static int32_t sat_add_fast(int32_t a, int32_t b) { return fixed_avr::sat_add(a, b); }
   STRIDER_ALWAYS_INLINE static int32_t sat_sub_fast(int32_t a, int32_t b) { return fixed_avr::sat_sub(a, b); }
@@ -131,8 +116,7 @@ class Fixed {
     return b == 0 ? (a < 0 ? kMinRaw : kMaxRaw)
                   : apply_sign(fixed_avr::div_mag(abs_raw(a), abs_raw(b)), (a < 0) != (b < 0));
   }
-  //! mul_raw with both factors 1 or more in magnitude (the target of
-  //! strider_fixed_mul_full_avr()).
+  //! mul_raw with both factors 1 or more in magnitude.
   static int32_t mul_raw_full_avr(int32_t a, int32_t b) {
     return apply_sign(fixed_avr::mul_mag_full(abs_raw(a), abs_raw(b)), (a < 0) != (b < 0));
   }
@@ -198,8 +182,7 @@ class Fixed {
 }  // namespace strider
 
 #if defined(__AVR__)
-// The full product, under a plain name for the jump in fixed_avr::mul_raw();
-// `used` keeps it although only assembly refers to it.
+// The full product under a plain name for fixed_avr::mul_raw()'s jump.
 extern "C" __attribute__((used, noinline)) inline int32_t strider_fixed_mul_full_avr(int32_t a, int32_t b) {
   return strider::Fixed::mul_raw_full_avr(a, b);
 }

@@ -1,12 +1,7 @@
-//! atan2, asin and acos for Fixed (Q16.16), integer-only and division-free.
-//!
-//! Method (docs/fixed-point.md): fold (x, y) into the first octant, so that
-//! t = lo / hi is in [0, 1]; normalise hi to [2^31, 2^32) and form t from a
-//! table reciprocal, refined to 2^-24 by one exact residual (a Markstein-style
-//! correction). atan t = t - D(t) with D = t - atan t interpolated in a
-//! 258-node table of 2^-18 units. asin and acos go through
-//! acos|x| = atan2(sqrt((1 - |x|)(1 + |x|)), |x|), so they stay accurate
-//! near +-1 where 1 - x^2 loses all its bits.
+//! atan2, asin and acos for Fixed (Q16.16), integer-only and division-free:
+//! the octant fold, a table reciprocal refined by an exact residual and the
+//! atan table; asin and acos through atan2 (docs/fixed-point.md, "atan2,
+//! asin, acos").
 #ifndef STRIDER_MATH_FIXED_ATAN_H
 #define STRIDER_MATH_FIXED_ATAN_H
 

@@ -1,7 +1,6 @@
-//! The leg solvers' atan2 for Fixed raws: ~1e-4 rad instead of 1 LSB, for
-//! about half the cycles of atan2() (fixed_atan.h). The ratio of the folded
-//! pair comes from 16 significant bits and the table reciprocal, with no
-//! residual step; atan t = t - D(t) from the same atan table.
+//! The leg solvers' atan2 for Fixed raws: atan2() (fixed_atan.h) without
+//! the residual step, error < 6e-5 rad for about half the cycles
+//! (docs/fixed-point.md, "Leg IK fast path").
 #ifndef STRIDER_MATH_FIXED_ATAN_LEAN_H
 #define STRIDER_MATH_FIXED_ATAN_LEAN_H
 
@@ -13,35 +12,13 @@
 namespace strider {
 namespace detail {
 
-//! The core of atan2_lean_raw() in C: atan(lo / hi) in Q0.16 [rad] for
-//! 2^24 <= hi, lo <= hi.
-STRIDER_ALWAYS_INLINE uint16_t atan_lean_octant(uint32_t hi, uint32_t lo) {
-  while (!(hi & 0x80000000UL)) { hi <<= 1; lo <<= 1; }
-  const uint16_t hh = hi16(hi);
-  const uint16_t r = recip_q30(hh, uint8_t(uint16_t(hi) >> 8));  // 2^46 / hi
-  uint32_t p = mul_u16(hi16(lo), r);  // ~ (lo / hi) 2^30
-  if (p > 0x3FFFFFFFUL) p = 0x3FFFFFFFUL;
-  const uint16_t t = uint16_t(hi16(p) << 2) | uint16_t(uint16_t(p) >> 14);  // lo / hi in Q0.16
-  // atan t = t - D(t), D in units of 2^-18: Q16.16 is t - D / 4.
-  const uint8_t i = uint8_t(t >> 8);
-  const uint16_t d0 = flash_u16(FixedTables<>::kAtan, i);
-  const uint16_t d1 = flash_u16(FixedTables<>::kAtan, uint16_t(i + 1U));
-  const uint32_t d = (uint32_t(d0) << 8) + mul_u16(uint16_t(d1 - d0), uint8_t(t));  // D 2^26
-  return uint16_t(t - uint16_t(uint16_t((d + 512U) >> 8) >> 2));
-}
-
-//! The octant fold of atan2_lean_raw(): |x|, |y| in the first octant (hi =
-//! the larger, lo), and the flags kLeanXNeg, kLeanYNeg, kLeanSwapped.
+//! The octant fold's flags.
 constexpr uint8_t kLeanXNeg = 1, kLeanYNeg = 2, kLeanSwapped = 4;
 
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
-//! atan2_lean_raw()'s C path in AVR assembly, instruction for instruction
-//! where it matters: with 16-bit temporaries that gcc would spill to the
-//! stack, ~300 -> ~170 cycles per call. test_avr_exact checks its results
-//! against the host's C bit for bit. Only the bytes that reach the result
-//! are shifted and multiplied (hi's top 24 and lo's top 16 bits after the
-//! normalisation). x and y are clobbered. Returns the octant angle in Q0.16
-//! and the fold flags in flags.
+//! atan2_lean_raw()'s C path in AVR assembly, bit for bit (test_avr_exact);
+//! only the bytes that reach the result are shifted and multiplied. Returns
+//! the octant angle in Q0.16 and the fold flags.
 STRIDER_ALWAYS_INLINE uint16_t atan2_lean_avr(uint32_t hi, uint32_t lo, uint8_t& flags) {
   uint16_t a, u, w, t;
   uint8_t f;
@@ -51,18 +28,12 @@ STRIDER_ALWAYS_INLINE uint16_t atan2_lean_avr(uint32_t hi, uint32_t lo, uint8_t&
       "sbrs %D[hi], 7\n\t"
       "rjmp 5f\n\t"
       "ori %[f], 1\n\t"
-      "com %A[hi]\n\t" "com %B[hi]\n\t" "com %C[hi]\n\t" "com %D[hi]\n\t"
-      "sec\n\t"
-      "adc %A[hi], __zero_reg__\n\t" "adc %B[hi], __zero_reg__\n\t"
-      "adc %C[hi], __zero_reg__\n\t" "adc %D[hi], __zero_reg__\n\t"
+      STRIDER_ASM_NEG32("hi")
       "5:\n\t"
       "sbrs %D[lo], 7\n\t"
       "rjmp 6f\n\t"
       "ori %[f], 2\n\t"
-      "com %A[lo]\n\t" "com %B[lo]\n\t" "com %C[lo]\n\t" "com %D[lo]\n\t"
-      "sec\n\t"
-      "adc %A[lo], __zero_reg__\n\t" "adc %B[lo], __zero_reg__\n\t"
-      "adc %C[lo], __zero_reg__\n\t" "adc %D[lo], __zero_reg__\n\t"
+      STRIDER_ASM_NEG32("lo")
       "6:\n\t"
       // Fold: hi >= lo.
       "cp %A[hi], %A[lo]\n\t" "cpc %B[hi], %B[lo]\n\t"
@@ -102,29 +73,13 @@ STRIDER_ALWAYS_INLINE uint16_t atan2_lean_avr(uint32_t hi, uint32_t lo, uint8_t&
       // f = (hh & 0xFF) << 8 | f8, r = r0 - hi16((r0 - r1) f).
       "mov r30, %D[hi]\n\t"
       "subi r30, 128\n\t"
-      "clr r31\n\t"
-      "lsl r30\n\t"
-      "rol r31\n\t"
-      "subi r30, lo8(-(%[recip]))\n\t"
-      "sbci r31, hi8(-(%[recip]))\n\t"
-      "lpm %A[u], Z+\n\t" "lpm %B[u], Z+\n\t"
-      "lpm %A[w], Z+\n\t" "lpm %B[w], Z\n\t"
+      STRIDER_ASM_TABLE_PAIR("recip", "u", "w")
       "movw %[t], %[u]\n\t"
       "sub %A[t], %A[w]\n\t" "sbc %B[t], %B[w]\n\t"
-      "mul %A[t], %B[hi]\n\t" "mov %A[w], r1\n\t"
-      "mul %B[t], %C[hi]\n\t" "movw %[a], r0\n\t"
-      "mul %B[t], %B[hi]\n\t" "add %A[w], r0\n\t" "adc %A[a], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %B[a], __zero_reg__\n\t"
-      "mul %A[t], %C[hi]\n\t" "add %A[w], r0\n\t" "adc %A[a], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %B[a], __zero_reg__\n\t"
+      STRIDER_ASM_MUL16_HI("%A[t]", "%B[t]", "%B[hi]", "%C[hi]", "%A[w]", "%A[a]", "%B[a]")
       "sub %A[u], %A[a]\n\t" "sbc %B[u], %B[a]\n\t"
       // p = hi16(lo) r; t = p >> 14 (bits 14..29), 0xFFFF when p >= 2^30.
-      "mul %C[lo], %A[u]\n\t" "mov %A[w], r1\n\t"
-      "mul %D[lo], %B[u]\n\t" "movw %[a], r0\n\t"
-      "mul %D[lo], %A[u]\n\t" "add %A[w], r0\n\t" "adc %A[a], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %B[a], __zero_reg__\n\t"
-      "mul %C[lo], %B[u]\n\t" "add %A[w], r0\n\t" "adc %A[a], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %B[a], __zero_reg__\n\t"
+      STRIDER_ASM_MUL16_HI("%C[lo]", "%D[lo]", "%A[u]", "%B[u]", "%A[w]", "%A[a]", "%B[a]")
       "lsl %A[w]\n\t" "rol %A[a]\n\t" "rol %B[a]\n\t" "brcs 3f\n\t"
       "lsl %A[w]\n\t" "rol %A[a]\n\t" "rol %B[a]\n\t" "brcc 4f\n\t"
       "3:\n\t"
@@ -134,13 +89,7 @@ STRIDER_ALWAYS_INLINE uint16_t atan2_lean_avr(uint32_t hi, uint32_t lo, uint8_t&
       // (t & 0xFF) / 2^8 (the low byte of the product drops out), then
       // a = t - ((D 2^-8 + 2) >> 2) in 16 bits.
       "mov r30, %B[a]\n\t"
-      "clr r31\n\t"
-      "lsl r30\n\t"
-      "rol r31\n\t"
-      "subi r30, lo8(-(%[atan]))\n\t"
-      "sbci r31, hi8(-(%[atan]))\n\t"
-      "lpm %A[u], Z+\n\t" "lpm %B[u], Z+\n\t"
-      "lpm %A[w], Z+\n\t" "lpm %B[w], Z\n\t"
+      STRIDER_ASM_TABLE_PAIR("atan", "u", "w")
       "sub %A[w], %A[u]\n\t" "sbc %B[w], %B[u]\n\t"
       "mul %A[w], %A[a]\n\t" "mov %A[t], r1\n\t"
       "mul %B[w], %A[a]\n\t" "add %A[t], r0\n\t" "mov %B[t], r1\n\t"
@@ -158,27 +107,22 @@ STRIDER_ALWAYS_INLINE uint16_t atan2_lean_avr(uint32_t hi, uint32_t lo, uint8_t&
 }
 #endif
 
-//! atan2(y, x) in Q16.16 [rad], (-pi, pi]; 0 for (0, 0). Error below 6e-5
-//! rad (measured 5.5e-5 over 2 million random pairs of every magnitude).
-//! Always inlined: a call in the solvers' hot paths costs ~100 cycles.
+//! atan2(y, x) in Q16.16 [rad], (-pi, pi]; 0 for (0, 0); error < 6e-5 rad:
+//! the octant fold, lo / hi from 16 bits and the table reciprocal, then
+//! atan t = t - D(t) from the atan table.
 STRIDER_ALWAYS_INLINE int32_t atan2_lean_raw(int32_t y, int32_t x) {
   uint8_t flags;
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
   const uint16_t octant = atan2_lean_avr(uint32_t(x), uint32_t(y), flags);
-  // The C's unfolding (below) in assembly too (~30 -> ~15 cycles): c - a
-  // as ~a + (c + 1), -a as ~a + 1.
+  // The C's unfolding (below) in assembly too: c - a as ~a + (c + 1).
   int32_t a;
   __asm__(
       "movw %A[a], %[o]\n\t" "clr %C[a]\n\t" "clr %D[a]\n\t"
       "sbrs %[f], 2\n\t" "rjmp 1f\n\t"
-      "com %A[a]\n\t" "com %B[a]\n\t" "com %C[a]\n\t" "com %D[a]\n\t"
-      "subi %A[a], lo8(-(%[half] + 1))\n\t" "sbci %B[a], hi8(-(%[half] + 1))\n\t"
-      "sbci %C[a], hlo8(-(%[half] + 1))\n\t" "sbci %D[a], hhi8(-(%[half] + 1))\n\t"
+      STRIDER_ASM_RSUB32("a", "%[half]")
       "1:\n\t"
       "sbrs %[f], 0\n\t" "rjmp 2f\n\t"
-      "com %A[a]\n\t" "com %B[a]\n\t" "com %C[a]\n\t" "com %D[a]\n\t"
-      "subi %A[a], lo8(-(%[pi] + 1))\n\t" "sbci %B[a], hi8(-(%[pi] + 1))\n\t"
-      "sbci %C[a], hlo8(-(%[pi] + 1))\n\t" "sbci %D[a], hhi8(-(%[pi] + 1))\n\t"
+      STRIDER_ASM_RSUB32("a", "%[pi]")
       "2:\n\t"
       "sbrs %[f], 1\n\t" "rjmp 3f\n\t"
       "com %A[a]\n\t" "com %B[a]\n\t" "com %C[a]\n\t" "com %D[a]\n\t"
@@ -188,8 +132,6 @@ STRIDER_ALWAYS_INLINE int32_t atan2_lean_raw(int32_t y, int32_t x) {
       : [o] "r"(octant), [f] "r"(flags), [half] "i"(int32_t(kHalfPiQ24 >> 8)), [pi] "i"(int32_t((kPiQ24 + 128) >> 8)));
   return a;
 #else
-  // Only the signs of x and y are needed at the end: one flag byte keeps
-  // two 32-bit values from staying live in registers to the end.
   flags = uint8_t((x < 0 ? kLeanXNeg : 0) | (y < 0 ? kLeanYNeg : 0));
   uint32_t hi = abs_u32(x), lo = abs_u32(y);
   if (lo > hi) {
@@ -199,17 +141,36 @@ STRIDER_ALWAYS_INLINE int32_t atan2_lean_raw(int32_t y, int32_t x) {
     flags = uint8_t(flags | kLeanSwapped);
   }
   if (hi == 0) return 0;
-  if (hi < 0x10000UL) { hi <<= 16; lo <<= 16; }
-  if (hi < 0x1000000UL) { hi <<= 8; lo <<= 8; }
-  int32_t a = int32_t(atan_lean_octant(hi, lo));
+  normalize_pair(hi, lo);
+  const uint16_t r = recip_q30(hi16(hi), uint8_t(uint16_t(hi) >> 8));  // 2^46 / hi
+  uint32_t p = mul_u16(hi16(lo), r);  // ~ (lo / hi) 2^30
+  if (p > 0x3FFFFFFFUL) p = 0x3FFFFFFFUL;
+  const uint16_t t = uint16_t(hi16(p) << 2) | uint16_t(uint16_t(p) >> 14);  // lo / hi in Q0.16
+  // atan t = t - D(t), D in units of 2^-18: Q16.16 is t - D / 4.
+  const uint16_t d0 = flash_u16(FixedTables<>::kAtan, uint8_t(t >> 8));
+  const uint16_t d1 = flash_u16(FixedTables<>::kAtan, uint16_t(uint8_t(t >> 8) + 1U));
+  const uint32_t d = (uint32_t(d0) << 8) + mul_u16(uint16_t(d1 - d0), uint8_t(t));  // D 2^26
+  int32_t a = int32_t(uint16_t(t - uint16_t(uint16_t((d + 512U) >> 8) >> 2)));
   if (flags & kLeanSwapped) a = int32_t(kHalfPiQ24 >> 8) - a;
   if (flags & kLeanXNeg) a = int32_t((kPiQ24 + 128) >> 8) - a;
   return (flags & kLeanYNeg) ? -a : a;
 #endif
 }
 
-//! atan2_lean_raw() as one shared out-of-line copy (~0.3 KB each inlined
-//! copy saves), for the solvers whose every cycle counts less than flash.
+//! A difference a of two angles in (-pi, pi] [Q16.16 raw], wrapped back
+//! into (-pi, pi].
+STRIDER_ALWAYS_INLINE int32_t wrap_pi_once_raw(int32_t a) {
+  constexpr int32_t pi_raw = int32_t((kPiQ24 + 128) >> 8);
+  if (a > pi_raw) {
+    a -= 2 * pi_raw;
+  } else if (a <= -pi_raw) {
+    a += 2 * pi_raw;
+  }
+  return a;
+}
+
+//! atan2_lean_raw() as one shared out-of-line copy, for the solvers whose
+//! every cycle counts less than flash.
 STRIDER_NOINLINE inline int32_t atan2_lean_call(int32_t y, int32_t x) { return atan2_lean_raw(y, x); }
 
 }  // namespace detail

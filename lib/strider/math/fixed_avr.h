@@ -1,7 +1,6 @@
 //! The AVR kernels of Fixed's run-time arithmetic (fixed.h): saturating add
-//! and subtract on the overflow flag, products from the 8x8 hardware MUL and
-//! the restoring division loop. Each returns what Fixed's portable C returns,
-//! bit for bit (test_avr_exact checks them on the simulated Mega).
+//! and subtract, products from the hardware MUL and the restoring division,
+//! each bit for bit Fixed's portable C (test_avr_exact).
 #ifndef STRIDER_MATH_FIXED_AVR_H
 #define STRIDER_MATH_FIXED_AVR_H
 
@@ -13,38 +12,32 @@
 namespace strider {
 namespace fixed_avr {
 
-//! Fixed::sat_add and sat_sub: a 32-bit add or subtract and a branch on the
-//! overflow flag, which saturates toward the true result's sign (b's for a
-//! sum, the opposite of b's for a difference).
+//! Fixed::sat_add and sat_sub: a 32-bit add or subtract, saturated on the
+//! overflow flag toward the true result's sign (b's for a sum, the opposite
+//! for a difference: skip is sbrs or sbrc).
+#define STRIDER_FX_SAT(op, opc, skip)                                                                          \
+  asm(op " %A0, %A1"     "\n\t" opc " %B0, %B1"   "\n\t" opc " %C0, %C1"   "\n\t" opc " %D0, %D1" "\n\t"   \
+      "brvc 1f"          "\n\t"                                                                               \
+      "ldi %A0, 0xFF"    "\n\t" "ldi %B0, 0xFF"    "\n\t" "ldi %C0, 0xFF"    "\n\t" "ldi %D0, 0x7F" "\n\t"  \
+      skip " %D1, 7"     "\n\t" "rjmp 1f"          "\n\t"                                                    \
+      "ldi %A0, 0x00"    "\n\t" "ldi %B0, 0x00"    "\n\t" "ldi %C0, 0x00"    "\n\t" "ldi %D0, 0x80" "\n"     \
+      "1:"                                                                                                    \
+      : "+&d"(a)                                                                                              \
+      : "r"(b))
 STRIDER_ALWAYS_INLINE int32_t sat_add(int32_t a, int32_t b) {
-  asm("add %A0, %A1"     "\n\t" "adc %B0, %B1"     "\n\t" "adc %C0, %C1"     "\n\t" "adc %D0, %D1" "\n\t"
-      "brvc 1f"          "\n\t"
-      "ldi %A0, 0xFF"    "\n\t" "ldi %B0, 0xFF"    "\n\t" "ldi %C0, 0xFF"    "\n\t" "ldi %D0, 0x7F" "\n\t"
-      "sbrs %D1, 7"      "\n\t" "rjmp 1f"          "\n\t"
-      "ldi %A0, 0x00"    "\n\t" "ldi %B0, 0x00"    "\n\t" "ldi %C0, 0x00"    "\n\t" "ldi %D0, 0x80" "\n"
-      "1:"
-      : "+&d"(a)
-      : "r"(b));
+  STRIDER_FX_SAT("add", "adc", "sbrs");
   return a;
 }
 STRIDER_ALWAYS_INLINE int32_t sat_sub(int32_t a, int32_t b) {
-  asm("sub %A0, %A1"     "\n\t" "sbc %B0, %B1"     "\n\t" "sbc %C0, %C1"     "\n\t" "sbc %D0, %D1" "\n\t"
-      "brvc 1f"          "\n\t"
-      "ldi %A0, 0xFF"    "\n\t" "ldi %B0, 0xFF"    "\n\t" "ldi %C0, 0xFF"    "\n\t" "ldi %D0, 0x7F" "\n\t"
-      "sbrc %D1, 7"      "\n\t" "rjmp 1f"          "\n\t"
-      "ldi %A0, 0x00"    "\n\t" "ldi %B0, 0x00"    "\n\t" "ldi %C0, 0x00"    "\n\t" "ldi %D0, 0x80" "\n"
-      "1:"
-      : "+&d"(a)
-      : "r"(b));
+  STRIDER_FX_SAT("sub", "sbc", "sbrc");
   return a;
 }
+#undef STRIDER_FX_SAT
 
-// div_mag(ua, ub) for ub != 0: the integer part ua / ub saturates at 2^15
-// (ua >> 15 >= ub). Otherwise the top 17 bits of ua 2^16 leave the
-// remainder ua >> 15 and a zero quotient, and 31 steps of restoring
-// division take the other 31 bits (ua << 17, shifted out of q as the
-// quotient bits shift in). The remainder stays below ub <= 2^31, so its
-// doubling fits 32 bits. Then div_frac's rounding step.
+// div_mag(ua, ub) for ub != 0: saturated when ua >> 15 >= ub; else the
+// remainder ua >> 15 and 31 restoring steps over the bits of ua << 17
+// (shifted out of q as the quotient bits shift in), then div_frac's
+// rounding step. The remainder stays below ub <= 2^31.
 __attribute__((noinline)) inline uint32_t div_mag(uint32_t ua, uint32_t ub) {
   uint32_t rem = (ua >> 16) << 1 | uint32_t((uint16_t(ua) >> 15) & 1u);
   if (rem >= ub) return 0xFFFFFFFFu;
@@ -66,17 +59,13 @@ __attribute__((noinline)) inline uint32_t div_mag(uint32_t ua, uint32_t ub) {
   return q + ((rem >= ub - rem) ? 1u : 0u);
 }
 
-//! mul_raw for the AVR: a factor below 1.0 in magnitude (sines,
-//! fractions, reciprocals, every Q0.16 ratio) takes a 32 x 16-bit product
-//! of 8 MULs (~50 cycles), the others the full 16-MUL product.
-// mul_raw(a, b) in the call-clobbered registers (a in r22..r25, b in
-// r18..r21, result in r22..r25), no register saves. Both factors 1 or
-// more in magnitude: a jump to strider_fixed_mul_full_avr(). Else, with
-// |b| < 2^16 raw (a and b swapped if only |a| is): the sign into T,
-// |a| and |b| in place, the product P5..P0 of |a| and |b| (8 MULs) by byte
-// column into r27:r26:r21:r20 (P0 never carries: only a0 b0 reaches it;
-// bit 7 of P1, in r30, rounds), then apply_sign(). Below 2^32 always, so
-// mul_mag_parts' saturation cannot occur.
+//! mul_raw for the AVR: a factor below 1.0 in magnitude takes a 32 x 16-bit
+//! product of 8 MULs, the others the full product
+//! (strider_fixed_mul_full_avr()).
+// In the call-clobbered registers (a in r22..r25, b in r18..r21, result in
+// r22..r25). With |b| < 2^16 raw (a and b swapped if only |a| is): the sign
+// into T, the product P5..P0 of |a| and |b| by byte column into
+// r27:r26:r21:r20 (bit 7 of P1, in r30, rounds), then apply_sign().
 __attribute__((naked, noinline)) inline int32_t mul_raw(int32_t, int32_t) {
   asm volatile(
       // |b| < 2^16: its top half 0, or 0xFFFF above a non-zero low half.
@@ -136,8 +125,8 @@ __attribute__((naked, noinline)) inline int32_t mul_raw(int32_t, int32_t) {
       "ret");
 }
 
-// The 64-bit product P7..P0 of two magnitudes from 16 8x8 MULs, summed by
-// byte column; returns round(P / 2^16) saturated like mul_mag.
+// round(P / 2^16) of the 64-bit product P of two magnitudes (16 MULs by
+// byte column), saturated like mul_mag.
 STRIDER_ALWAYS_INLINE uint32_t mul_mag_full(uint32_t a, uint32_t b) {
   uint32_t lo, hi;  // P3..P0, P7..P4
   uint8_t zero;

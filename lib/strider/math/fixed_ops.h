@@ -1,16 +1,8 @@
-//! Integer building blocks shared by the Fixed elementary functions.
-//!
-//! Everything here is unsigned 16/32-bit arithmetic, whose wrap-around is
-//! defined by the language, so the host and the AVR give bit-identical
-//! results. Two facts of avr-gcc 5.4 at -Os shape the code:
-//! - it computes a 32-bit shift by n (other than 8, 16, 24) with an n-step
-//!   loop (~6 cycles per bit), so shifts here are whole bytes plus at most a
-//!   few bits, and variable shifts go through shr_var();
-//! - it often turns (uint32_t)a * b of 16-bit values into a 32x32 library
-//!   call (~100 cycles), so mul_u16() (mul16.h) is four MUL instructions
-//!   (~20 cycles).
-//! Note that `int` is 16 bits on the AVR: every intermediate above 0xFFFF is
-//! a uint32_t.
+//! Integer building blocks shared by the Fixed elementary functions: unsigned
+//! 16/32-bit arithmetic only (bit-identical on host and AVR), shifts in whole
+//! bytes plus a few bits, as avr-gcc 5.4 loops over every bit of a 32-bit
+//! shift (docs/fixed-point.md, "Design for the ATmega2560"). `int` is 16 bits
+//! on the AVR: every intermediate above 0xFFFF is a uint32_t.
 #ifndef STRIDER_MATH_FIXED_OPS_H
 #define STRIDER_MATH_FIXED_OPS_H
 
@@ -18,6 +10,32 @@
 
 #include "fixed_tables.h"
 #include "mul16.h"
+
+#if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
+// Steps shared by the assembly kernels (macros: an asm template is one string
+// literal). STRIDER_ASM_TABLE_PAIR: a = table[i], b = table[i + 1] for the
+// index i in r30, with Z left past them. STRIDER_ASM_MUL16_HI: rb:ra:w =
+// (x1:x0) (y1:y0) / 2^8, the low byte of the product dropped (byte operands).
+// STRIDER_ASM_NEG32: x = -x; STRIDER_ASM_RSUB32: x = c - x as ~x + (c + 1).
+#define STRIDER_ASM_TABLE_PAIR(table, a, b)                                                             \
+  "clr r31\n\t" "lsl r30\n\t" "rol r31\n\t"                                                             \
+  "subi r30, lo8(-(%[" table "]))\n\t" "sbci r31, hi8(-(%[" table "]))\n\t"                             \
+  "lpm %A[" a "], Z+\n\t" "lpm %B[" a "], Z+\n\t" "lpm %A[" b "], Z+\n\t" "lpm %B[" b "], Z\n\t"
+#define STRIDER_ASM_MUL16_HI(x0, x1, y0, y1, w, ra, rb)                                                 \
+  "mul " x0 ", " y0 "\n\t" "mov " w ", r1\n\t" "mul " x1 ", " y1 "\n\t" "movw " ra ", r0\n\t"           \
+  "mul " x1 ", " y0 "\n\t" "add " w ", r0\n\t" "adc " ra ", r1\n\t"                                     \
+  "clr __zero_reg__\n\t" "adc " rb ", __zero_reg__\n\t"                                                 \
+  "mul " x0 ", " y1 "\n\t" "add " w ", r0\n\t" "adc " ra ", r1\n\t"                                     \
+  "clr __zero_reg__\n\t" "adc " rb ", __zero_reg__\n\t"
+#define STRIDER_ASM_NEG32(x)                                                                                 \
+  "com %A[" x "]\n\t" "com %B[" x "]\n\t" "com %C[" x "]\n\t" "com %D[" x "]\n\t" "sec\n\t"               \
+  "adc %A[" x "], __zero_reg__\n\t" "adc %B[" x "], __zero_reg__\n\t" "adc %C[" x "], __zero_reg__\n\t"     \
+  "adc %D[" x "], __zero_reg__\n\t"
+#define STRIDER_ASM_RSUB32(x, c)                                                                             \
+  "com %A[" x "]\n\t" "com %B[" x "]\n\t" "com %C[" x "]\n\t" "com %D[" x "]\n\t"                          \
+  "subi %A[" x "], lo8(-(" c " + 1))\n\t" "sbci %B[" x "], hi8(-(" c " + 1))\n\t"                           \
+  "sbci %C[" x "], hlo8(-(" c " + 1))\n\t" "sbci %D[" x "], hhi8(-(" c " + 1))\n\t"
+#endif
 
 namespace strider {
 namespace detail {

@@ -1,12 +1,6 @@
-//! Square root and hypot for Fixed (Q16.16), integer-only and division-free.
-//!
-//! Method (docs/fixed-point.md): normalise the radicand by an even shift into
-//! m in [2^30, 2^32); a 193-node table of sqrt with linear interpolation gives
-//! q within 1 of floor(sqrt(m)); an exact residual m - q^2 (computed modulo
-//! 2^32) fixes q = floor(sqrt(m)); one Newton step with a table reciprocal
-//! adds 11 fraction bits (within 1 of the floor of sqrt(m 2^22)), and hypot
-//! of large values alone pays for a second exact residual. The root is then
-//! shifted back and rounded.
+//! Square root and hypot for Fixed (Q16.16), integer-only and division-free:
+//! normalise, table estimate, exact residual, one Newton step with a table
+//! reciprocal (docs/fixed-point.md, "sqrt" and "hypot").
 #ifndef STRIDER_MATH_FIXED_SQRT_H
 #define STRIDER_MATH_FIXED_SQRT_H
 
@@ -28,38 +22,13 @@ STRIDER_ALWAYS_INLINE uint32_t isqrt_table_estimate(uint32_t m) {
   return uint32_t(32768) + t0 + hi16(mul_u16(uint16_t(t1 - t0), uint16_t(m >> 8)));
 }
 
-//! One Newton step from the exact integer root: root ~ sqrt(m 2^22) within
-//! +-1 of its floor, for m in [2^30, 2^32), as q 2^11 + frac with
-//! q = floor(sqrt(m)) and frac in [0, 2047].
-STRIDER_ALWAYS_INLINE uint32_t isqrt_newton(uint32_t m) {
-  // q = 2^16 squares to 0 modulo 2^32, as uint16_t(q) does: rem stays right.
-  uint32_t q = isqrt_table_estimate(m);
-  int32_t rem = to_signed(m - mul_u16(uint16_t(q), uint16_t(q)));
-  // q is within +-1 of floor(sqrt(m)): one conditional step fixes it.
-  if (rem < 0) {
-    --q;
-    rem += int32_t(2 * q + 1);
-  } else if (rem > int32_t(2 * q)) {
-    rem -= int32_t(2 * q + 1);
-    ++q;
-  }
-  // Now q = floor(sqrt(m)) < 2^16 and 0 <= rem <= 2q. One Newton step:
-  // sqrt(m) - q ~ rem / (2q), in units of 2^-11: rem 2^10 / q.
-  const uint16_t q16 = uint16_t(q);
-  const uint16_t rq = recip_q30(q16, 0);  // 2^30 / q
-  uint16_t frac = uint16_t(hi16(mul_u16(uint16_t(uint32_t(rem) >> 1), rq)) >> 3);
-  if (frac > 2047) frac = 2047;
-  return mul_u16(q16, 2048) + frac;
-}
-
-//! sqrt(m 2^22) for m in [2^30, 2^32): a 27-bit result within +-1 of the
-//! floor (the Newton estimate).
+//! sqrt(m 2^22) for m in [2^30, 2^32) within +-1 of its floor, as q 2^11 +
+//! frac: q = floor(sqrt(m)) from the table estimate and its exact residual,
+//! frac in [0, 2047] from one Newton step.
 STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
-  // isqrt_newton(m) in AVR assembly, step for step: gcc spills the C's
-  // 32-bit temporaries to the stack (~260 -> ~130 cycles). test_avr_exact
-  // checks it against the host's C bit for bit (fixed_isqrt and every
-  // function built on it).
+  // The C (#else) in AVR assembly, bit for bit (test_avr_exact: fixed_isqrt
+  // and every function built on it).
   uint32_t root;
   uint16_t q, u, w, x;
   uint8_t e;
@@ -68,20 +37,9 @@ STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
       // for k = (m >> 24) - 64; q = 65536 wraps to 0 in 16 bits, as in C.
       "mov r30, %D[m]\n\t"
       "subi r30, 64\n\t"
-      "clr r31\n\t"
-      "lsl r30\n\t"
-      "rol r31\n\t"
-      "subi r30, lo8(-(%[sqrt_table]))\n\t"
-      "sbci r31, hi8(-(%[sqrt_table]))\n\t"
-      "lpm %A[q], Z+\n\t" "lpm %B[q], Z+\n\t"
-      "lpm %A[u], Z+\n\t" "lpm %B[u], Z\n\t"
+      STRIDER_ASM_TABLE_PAIR("sqrt_table", "q", "u")
       "sub %A[u], %A[q]\n\t" "sbc %B[u], %B[q]\n\t"
-      "mul %A[u], %B[m]\n\t" "mov %A[w], r1\n\t"
-      "mul %B[u], %C[m]\n\t" "movw %[x], r0\n\t"
-      "mul %B[u], %B[m]\n\t" "add %A[w], r0\n\t" "adc %A[x], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %B[x], __zero_reg__\n\t"
-      "mul %A[u], %C[m]\n\t" "add %A[w], r0\n\t" "adc %A[x], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %B[x], __zero_reg__\n\t"
+      STRIDER_ASM_MUL16_HI("%A[u]", "%B[u]", "%B[m]", "%C[m]", "%A[w]", "%A[x]", "%B[x]")
       "add %A[q], %A[x]\n\t" "adc %B[q], %B[x]\n\t"
       "subi %B[q], 0x80\n\t"
       // rem = m - q^2 modulo 2^32, in m.
@@ -112,13 +70,7 @@ STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
       // rq = recip_q30(q, 0) = r0 - hi16((r0 - r1) (q & 0xFF) 2^8).
       "mov r30, %B[q]\n\t"
       "subi r30, 128\n\t"
-      "clr r31\n\t"
-      "lsl r30\n\t"
-      "rol r31\n\t"
-      "subi r30, lo8(-(%[recip]))\n\t"
-      "sbci r31, hi8(-(%[recip]))\n\t"
-      "lpm %A[u], Z+\n\t" "lpm %B[u], Z+\n\t"
-      "lpm %A[w], Z+\n\t" "lpm %B[w], Z\n\t"
+      STRIDER_ASM_TABLE_PAIR("recip", "u", "w")
       "movw %[x], %[u]\n\t"
       "sub %A[x], %A[w]\n\t" "sbc %B[x], %B[w]\n\t"
       "mul %A[x], %A[q]\n\t" "mov %A[w], r1\n\t"
@@ -127,12 +79,7 @@ STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
       "sub %A[u], %A[w]\n\t" "sbc %B[u], %B[w]\n\t"
       // frac = min(hi16((rem >> 1) rq) >> 3, 2047).
       "lsr %C[m]\n\t" "ror %B[m]\n\t" "ror %A[m]\n\t"
-      "mul %A[m], %A[u]\n\t" "mov %A[w], r1\n\t"
-      "mul %B[m], %B[u]\n\t" "movw %[x], r0\n\t"
-      "mul %B[m], %A[u]\n\t" "add %A[w], r0\n\t" "adc %A[x], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %B[x], __zero_reg__\n\t"
-      "mul %A[m], %B[u]\n\t" "add %A[w], r0\n\t" "adc %A[x], r1\n\t"
-      "clr __zero_reg__\n\t" "adc %B[x], __zero_reg__\n\t"
+      STRIDER_ASM_MUL16_HI("%A[m]", "%B[m]", "%A[u]", "%B[u]", "%A[w]", "%A[x]", "%B[x]")
       "lsr %B[x]\n\t" "ror %A[x]\n\t" "lsr %B[x]\n\t" "ror %A[x]\n\t" "lsr %B[x]\n\t" "ror %A[x]\n\t"
       "cpi %B[x], 8\n\t"
       "brlo 3f\n\t"
@@ -151,7 +98,24 @@ STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
       : "r30", "r31");
   return root;
 #else
-  return isqrt_newton(m);
+  // q = 2^16 squares to 0 modulo 2^32, as uint16_t(q) does: rem stays right.
+  uint32_t q = isqrt_table_estimate(m);
+  int32_t rem = to_signed(m - mul_u16(uint16_t(q), uint16_t(q)));
+  // q is within +-1 of floor(sqrt(m)): one conditional step fixes it.
+  if (rem < 0) {
+    --q;
+    rem += int32_t(2 * q + 1);
+  } else if (rem > int32_t(2 * q)) {
+    rem -= int32_t(2 * q + 1);
+    ++q;
+  }
+  // Now q = floor(sqrt(m)) < 2^16 and 0 <= rem <= 2q. One Newton step:
+  // sqrt(m) - q ~ rem / (2q), in units of 2^-11: rem 2^10 / q.
+  const uint16_t q16 = uint16_t(q);
+  const uint16_t rq = recip_q30(q16, 0);  // 2^30 / q
+  uint16_t frac = uint16_t(hi16(mul_u16(uint16_t(uint32_t(rem) >> 1), rq)) >> 3);
+  if (frac > 2047) frac = 2047;
+  return mul_u16(q16, 2048) + frac;
 #endif
 }
 
@@ -160,9 +124,7 @@ STRIDER_ALWAYS_INLINE uint32_t isqrt_q22(uint32_t m) {
 STRIDER_NOINLINE inline uint32_t isqrt_q22_call(uint32_t m) { return isqrt_q22(m); }
 
 //! floor(sqrt(m 2^24)) for m in [2^30, 2^32) from root = isqrt_q22(m),
-//! exact: the Newton estimate fixed by the residual, plus the next bit
-//! (~85 cycles on the AVR). The root's parts are q = floor(sqrt(m)) and
-//! frac (isqrt_newton()), so only q's residual m - q^2 is computed again.
+//! exact: the Newton estimate fixed by the residual, plus the next bit.
 inline uint32_t isqrt_q24_floor_from(uint32_t m, uint32_t root) {
   const uint16_t q = uint16_t(root >> 11), frac = uint16_t(uint16_t(root) & 0x7FFU);
   const uint32_t rem = m - mul_u16(q, q);
@@ -213,7 +175,7 @@ inline Fixed hypot(Fixed a, Fixed b) {
   if (hi >= 0x80000000UL) return Fixed::max();  // |a| = 32768 already overflows
   if (lo == 0) return Fixed::from_raw(int32_t(hi));
   // Scale by 2^s so that hi lies in [2^30, 2^31); then (H^2 + L^2) / 2^32
-  // from 16-bit halves: Hh^2 + Lh^2 + (Hh Hl + Lh Ll) / 2^15 + (Hl^2 + Ll^2) / 2^32.
+  // from 16-bit halves (docs/fixed-point.md, "hypot").
   uint8_t s = 0;
   if (hi < 0x8000UL) { hi <<= 16; lo <<= 16; s = 16; }
   if (hi < 0x800000UL) { hi <<= 8; lo <<= 8; s = uint8_t(s + 8); }

@@ -1,11 +1,7 @@
 //! sin and cos for Fixed (Q16.16 radians), and the exact angle reduction that
-//! they share with wrap_pi / wrap_two_pi.
-//!
-//! Method (docs/fixed-point.md): reduce the angle to [-pi, pi] in Q8.24
-//! (2^-24 rad) with a two-part 2 pi (Cody-Waite), fold into [0, pi/2], then
-//! interpolate linearly in a 404-node table of sin at steps of 2^-8 rad.
-//! Integer-only, no division, bounded time; sin(-x) = -sin(x) and
-//! cos(-x) = cos(x) bit for bit.
+//! they share with wrap_pi / wrap_two_pi: Cody-Waite reduction in Q8.24 and a
+//! 404-node sin table (docs/fixed-point.md, "sin and cos"). sin(-x) = -sin(x)
+//! and cos(-x) = cos(x) bit for bit.
 #ifndef STRIDER_MATH_FIXED_TRIG_H
 #define STRIDER_MATH_FIXED_TRIG_H
 
@@ -52,18 +48,6 @@ STRIDER_ALWAYS_INLINE int32_t reduce_angle_q24(int32_t raw) {
   return raw < 0 ? -s : s;
 }
 
-//! sin(x) for x in [0, pi/2 + 2^-24] (Q8.24) as Q16.16 in [0, 2^16].
-//! The table holds 65535 sin; v += v >> 16 rescales it to 65536 sin.
-STRIDER_ALWAYS_INLINE int32_t sin_first_quadrant(uint32_t x) {
-  const uint16_t i = uint16_t(x >> 16);
-  const uint16_t f = uint16_t(x);
-  const uint16_t t0 = flash_u16(FixedTables<>::kSin, i);
-  const uint16_t t1 = flash_u16(FixedTables<>::kSin, uint16_t(i + 1U));
-  uint32_t v = (uint32_t(t0) << 8) + (mul_u16(uint16_t(t1 - t0), f) >> 8);
-  v += v >> 16;
-  return int32_t((v + 128U) >> 8);
-}
-
 //! Rounds a Q8.24 angle to Q16.16, half away from zero (odd).
 STRIDER_ALWAYS_INLINE int32_t q24_to_raw(int32_t a) {
   const int32_t m = int32_t((abs_u32(a) + 128U) >> 8);
@@ -72,7 +56,7 @@ STRIDER_ALWAYS_INLINE int32_t q24_to_raw(int32_t a) {
 
 //! wrap_pi for Fixed: the result r has -pi < r <= pi in Fixed comparisons
 //! (pi = pi<Fixed>()) and is within 1 LSB of the exact wrapped angle.
-inline Fixed wrap_pi_impl(Fixed a) {
+inline Fixed wrap_pi(Fixed a) {
   const int32_t q = reduce_angle_q24(a.raw());
   int32_t r = q24_to_raw(q);
   // -kPiRaw is outside the interval: an angle that rounds to it goes to the
@@ -83,34 +67,25 @@ inline Fixed wrap_pi_impl(Fixed a) {
 }
 
 //! wrap_two_pi for Fixed: 0 <= r < two_pi<Fixed>(), within 1 LSB.
-inline Fixed wrap_two_pi_impl(Fixed a) {
+inline Fixed wrap_two_pi(Fixed a) {
   const int32_t r = q24_to_raw(reduce_angle_q24(a.raw()));
   return Fixed::from_raw(r < 0 ? r + kTwoPiRaw : r);
 }
 
-}  // namespace detail
-
-namespace detail {
-
-//! sin (cosine false) or cos (true) of raw / 2^16 [rad] as a raw value:
-//! the one out-of-line body of sin() and cos(). |raw| is reduced to s in
-//! [-pi, pi] (reduce_angle_q24() without its final sign), so that
-//! sin(raw) = +-sin|s|, negative when the signs of raw and s differ, and
-//! cos(raw) = sin(pi/2 - |s|), with pi/2 - |s| in [-pi/2 - 2^-24, pi/2]:
-//! the table's domain, so cos needs no fold. The same bits as
-//! reduce_angle_q24() and sin_first_quadrant() give (test_avr_exact:
-//! fixed_sin, fixed_cos).
+//! sin (cosine false) or cos (true) of raw / 2^16 [rad] as a raw value, the
+//! one out-of-line body of both: |raw| reduced to s in [-pi, pi], sin(raw) =
+//! +-sin|s| (negative when the signs of raw and s differ) and cos(raw) =
+//! sin(pi/2 - |s|), inside the table's domain without a fold.
 STRIDER_NOINLINE inline int32_t sin_cos_raw(int32_t raw, bool cosine) {
-  const uint32_t ua = abs_u32(raw);
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
+  const uint32_t ua = abs_u32(raw);
   // Flags: bit 7 the sign of raw, bit 0 cosine.
   const uint8_t flags = uint8_t(uint8_t(uint8_t(uint32_t(raw) >> 24) & 0x80U) | (cosine ? 1U : 0U));
   uint32_t s = ua < 0x80000UL ? ua << 8 : reduce_large_angle_q24(ua);
   int32_t r;
   uint16_t d;
   uint8_t k;
-  // The C below in assembly (~170 -> ~110 cycles a call; gcc moves the
-  // table interpolation's bytes through the stack).
+  // The C below in assembly, bit for bit (test_avr_exact: fixed_sin, fixed_cos).
   __asm__(
       // s > pi: s -= 2 pi; s < -pi: s += 2 pi (signed).
       "ldi %[k], lo8(%[pi1])\n\t" "cp %A[s], %[k]\n\t" "ldi %[k], hi8(%[pi1])\n\t" "cpc %B[s], %[k]\n\t"
@@ -133,9 +108,7 @@ STRIDER_NOINLINE inline int32_t sin_cos_raw(int32_t raw, bool cosine) {
       "3:\n\t"
       "sbrs %[f], 0\n\t" "rjmp 4f\n\t"
       // cos: c = pi/2 - m = ~m + (pi/2 + 1); T = c < 0; m = |c|.
-      "com %A[s]\n\t" "com %B[s]\n\t" "com %C[s]\n\t" "com %D[s]\n\t"
-      "subi %A[s], lo8(-(%[half] + 1))\n\t" "sbci %B[s], hi8(-(%[half] + 1))\n\t"
-      "sbci %C[s], hlo8(-(%[half] + 1))\n\t" "sbci %D[s], hhi8(-(%[half] + 1))\n\t"
+      STRIDER_ASM_RSUB32("s", "%[half]")
       "bst %D[s], 7\n\t"
       "sbrs %D[s], 7\n\t" "rjmp 5f\n\t"
       "com %D[s]\n\t" "com %C[s]\n\t" "com %B[s]\n\t" "neg %A[s]\n\t"
@@ -146,11 +119,9 @@ STRIDER_NOINLINE inline int32_t sin_cos_raw(int32_t raw, bool cosine) {
       "ldi %[k], lo8(%[half] + 1)\n\t" "cp %A[s], %[k]\n\t" "ldi %[k], hi8(%[half] + 1)\n\t" "cpc %B[s], %[k]\n\t"
       "ldi %[k], hlo8(%[half] + 1)\n\t" "cpc %C[s], %[k]\n\t" "ldi %[k], hhi8(%[half] + 1)\n\t" "cpc %D[s], %[k]\n\t"
       "brlo 5f\n\t"
-      "com %A[s]\n\t" "com %B[s]\n\t" "com %C[s]\n\t" "com %D[s]\n\t"
-      "subi %A[s], lo8(-(%[pi] + 1))\n\t" "sbci %B[s], hi8(-(%[pi] + 1))\n\t"
-      "sbci %C[s], hlo8(-(%[pi] + 1))\n\t" "sbci %D[s], hhi8(-(%[pi] + 1))\n\t"
+      STRIDER_ASM_RSUB32("s", "%[pi]")
       "5:\n\t"
-      // sin_first_quadrant(m): t0, t1 = kSin[i], [i + 1] for i = m >> 16,
+      // sin m: t0, t1 = kSin[i], [i + 1] for i = m >> 16,
       // f = m & 0xFFFF; v = t0 2^8 + ((t1 - t0) f >> 8) in k:r (bytes 0..2:
       // k, B, C of r), then v += v >> 16 and (v + 128) >> 8 into r.
       "movw r30, %C[s]\n\t" "lsl r30\n\t" "rol r31\n\t"
@@ -169,9 +140,7 @@ STRIDER_NOINLINE inline int32_t sin_cos_raw(int32_t raw, bool cosine) {
       "mov %A[r], %B[r]\n\t" "mov %B[r], %C[r]\n\t" "mov %C[r], %D[r]\n\t" "clr %D[r]\n\t"
       // The sign: -r = ~r + 1.
       "brtc 6f\n\t"
-      "com %A[r]\n\t" "com %B[r]\n\t" "com %C[r]\n\t" "com %D[r]\n\t"
-      "sec\n\t" "adc %A[r], __zero_reg__\n\t" "adc %B[r], __zero_reg__\n\t"
-      "adc %C[r], __zero_reg__\n\t" "adc %D[r], __zero_reg__\n\t"
+      STRIDER_ASM_NEG32("r")
       "6:"
       : [r] "=&r"(r), [d] "=&r"(d), [k] "=&d"(k), [s] "+d"(s)
       : [f] "r"(flags), [pi] "i"(kPiQ24), [pi1] "i"(kPiQ24 + 1), [tp] "i"(kTwoPiQ24), [half] "i"(kHalfPiQ24),
@@ -179,13 +148,8 @@ STRIDER_NOINLINE inline int32_t sin_cos_raw(int32_t raw, bool cosine) {
       : "r30", "r31");
   return r;
 #else
-  int32_t s = to_signed(ua < 0x80000UL ? ua << 8 : reduce_large_angle_q24(ua));
-  if (s > kPiQ24) {
-    s -= kTwoPiQ24;
-  } else if (s < -kPiQ24) {
-    s += kTwoPiQ24;
-  }
-  bool negative = (raw < 0) != (s < 0);
+  const int32_t s = reduce_angle_q24(raw);
+  bool negative = s < 0;
   uint32_t m = abs_u32(s);
   if (cosine) {
     const int32_t c = kHalfPiQ24 - int32_t(m);
@@ -194,8 +158,15 @@ STRIDER_NOINLINE inline int32_t sin_cos_raw(int32_t raw, bool cosine) {
   } else if (m > uint32_t(kHalfPiQ24)) {
     m = uint32_t(kPiQ24) - m;
   }
-  const int32_t v = sin_first_quadrant(m);
-  return negative ? -v : v;
+  // sin m from the table of 65535 sin, interpolated; v += v >> 16 rescales
+  // it to 65536 sin.
+  const uint16_t i = uint16_t(m >> 16);
+  const uint16_t t0 = flash_u16(FixedTables<>::kSin, i);
+  const uint16_t t1 = flash_u16(FixedTables<>::kSin, uint16_t(i + 1U));
+  uint32_t v = (uint32_t(t0) << 8) + (mul_u16(uint16_t(t1 - t0), uint16_t(m)) >> 8);
+  v += v >> 16;
+  const int32_t r = int32_t((v + 128U) >> 8);
+  return negative ? -r : r;
 #endif
 }
 

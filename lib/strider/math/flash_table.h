@@ -1,47 +1,37 @@
-//! Constant tables that live in flash on the AVR and in ordinary read-only
-//! memory on the host.
-//!
-//! The ATmega2560 has 8 KB of RAM and 256 KB of flash: a table declared
-//! `const` alone is copied into RAM at start-up, so tables carry
-//! STRIDER_PROGMEM and are read through flash_u16(), which is pgm_read_word
-//! on the AVR and a plain load on the host. PROGMEM data is placed in the
-//! first 64 KB of flash by avr-libc's linker script, which is what the 16-bit
-//! pgm_read_word can address.
+//! Constant tables in flash on the AVR (a `const` table alone is copied into
+//! its 8 KB of RAM at start-up) and in ordinary read-only memory on the host,
+//! read through flash_u16() and flash_u8(); and the inlining attributes the
+//! library shares.
 #ifndef STRIDER_MATH_FLASH_TABLE_H
 #define STRIDER_MATH_FLASH_TABLE_H
 
 #include <stdint.h>
 
-// lib/ includes no hardware header, so this is what avr-libc's PROGMEM and
-// pgm_read_byte/word expand to: gcc's progmem attribute and the LPM
-// instruction (with post-increment, which every ATmega with a multiplier has).
+// avr-libc's PROGMEM and pgm_read_byte/word without its header: gcc's
+// progmem attribute (the first 64 KB of flash) and the LPM instruction.
 #if defined(__AVR__)
 #define STRIDER_PROGMEM __attribute__((__progmem__))
 #else
 #define STRIDER_PROGMEM
 #endif
 
-// Small helpers that must be inlined even at -Os, where avr-gcc would
-// otherwise call them (a call costs more than their body on the AVR).
+// Small helpers that avr-gcc at -Os would otherwise call.
 #if defined(__GNUC__)
 #define STRIDER_ALWAYS_INLINE inline __attribute__((always_inline))
 #else
 #define STRIDER_ALWAYS_INLINE inline
 #endif
 
-// Rare, large paths kept out of a hot caller, so that the caller's
-// prologue saves only the registers its common case needs.
+// Rare, large paths kept out of a hot caller's prologue.
 #if defined(__GNUC__)
 #define STRIDER_NOINLINE __attribute__((noinline))
 #else
 #define STRIDER_NOINLINE
 #endif
 
-// The same for a function whose inline assembly takes most of the AVR's
-// registers, and never cloned either: under -flto (the Arduino IDE's build)
-// avr-gcc 5.4 specialises such a function for a constant argument (a global
-// leg) and then finds no registers for the assembly ("impossible
-// constraints"). clang has no noclone.
+// The same, never cloned, for a function whose inline assembly takes most
+// registers: under -flto avr-gcc 5.4 specialises it for a constant argument
+// and then finds no registers ("impossible constraints"). clang has no noclone.
 #if defined(__GNUC__) && !defined(__clang__)
 #define STRIDER_NOINLINE_NOCLONE __attribute__((noinline, noclone))
 #elif defined(__GNUC__)

@@ -1,14 +1,8 @@
-//! atan2, asin and acos for float: short minimax polynomials instead of
-//! avr-libc's atan2f / asinf / acosf (~3000 / 2270 / 2600 cycles on the
-//! ATmega2560; these take ~2270 / 1740 / 1780).
-//!
-//! Forms of Cephes' atanf / asinf (S. L. Moshier, Cephes Math Library,
-//! 1989-1992) with coefficients refitted for absolute error by
-//! tools/fit_float_poly.py (Remez exchange), which prints them and their
-//! errors. Absolute error, float arithmetic included, is below 5e-7 rad
-//! (measured 3.5e-7 atan2, 2.0e-7 asin, 3.6e-7 acos; docs/fixed-point.md).
-//! All three are total: NaN in gives 0 (acos: pi/2), infinities are handled,
-//! asin/acos clamp their input to [-1, 1].
+//! atan2, asin and acos for float: short minimax polynomials in the forms of
+//! Cephes' atanf / asinf (S. L. Moshier, 1989-1992), refitted by
+//! tools/fit_float_poly.py, instead of avr-libc's slower ones; error below
+//! 5e-7 rad (docs/fixed-point.md, "float atan2, asin, acos"). Total: NaN in
+//! gives 0 (acos: pi/2), asin/acos clamp their input to [-1, 1].
 #ifndef STRIDER_MATH_FLOAT_ATAN_H
 #define STRIDER_MATH_FLOAT_ATAN_H
 

@@ -1,11 +1,7 @@
 //! IEEE-754 bit access for float: sign, magnitude, NaN and ordering tests as
-//! integer operations.
-//!
-//! On the AVR every float comparison is a library call (~50 cycles) while a
-//! 32-bit integer comparison takes 4; the float functions of Strider make
-//! their branch decisions on the bits. For non-negative floats (and +inf)
-//! the order of the bit patterns is the order of the values; NaN patterns
-//! lie above +inf.
+//! integer operations (on the AVR a float comparison is a ~50-cycle library
+//! call). For non-negative floats (and +inf) the order of the bit patterns is
+//! the order of the values; NaN patterns lie above +inf.
 #ifndef STRIDER_MATH_FLOAT_BITS_H
 #define STRIDER_MATH_FLOAT_BITS_H
 
@@ -54,9 +50,9 @@ inline float ratio_float(uint32_t num, uint32_t den) {
 inline uint32_t magnitude_bits(float f) { return float_bits(f) & kFloatMagMask; }
 
 inline bool is_nan_bits(uint32_t mag) { return mag > kFloatInfBits; }
+inline bool is_finite(float v) { return magnitude_bits(v) < kFloatInfBits; }
 
-//! a < b for non-NaN floats, from the bits: a float comparison is a
-//! ~50-cycle library call on the AVR. -0 == +0, as with <.
+//! a < b for non-NaN floats, from the bits; -0 == +0, as with <.
 inline __attribute__((always_inline)) bool float_less(float a, float b) {
   const uint32_t ua = float_bits(a), ub = float_bits(b);
   if ((ua ^ ub) & kFloatSignBit) return (ua & kFloatSignBit) != 0 && ((ua | ub) << 1) != 0;  // not -0 < +0

@@ -1,8 +1,6 @@
-//! Elementary functions for float, named like <cmath> so scalar-generic code
-//! calls strider::sqrt / sin / cos / atan2 / asin / acos / hypot for float and
-//! Fixed alike. sqrt, sin and cos are libm's; atan2, asin and acos are the
-//! polynomials of float_atan.h. All are total: no NaN comes out for any input
-//! (NaN in gives 0, sin/cos of an infinity give 0).
+//! Elementary functions for float, named like <cmath> as fixed_math.h's for
+//! Fixed: sqrt, sin and cos are libm's, atan2, asin and acos the polynomials
+//! of float_atan.h. All are total: NaN in gives 0, sin/cos of an infinity 0.
 #ifndef STRIDER_MATH_FLOAT_MATH_H
 #define STRIDER_MATH_FLOAT_MATH_H
 
@@ -14,9 +12,6 @@
 
 namespace strider {
 
-// Sign, NaN and ordering tests work on the float bits (float_bits.h): a
-// float comparison is a ~50-cycle library call on the AVR.
-
 //! |v| (clears the sign bit).
 inline float abs(float v) { return detail::bits_float(detail::magnitude_bits(v)); }
 
@@ -25,10 +20,6 @@ inline float sqrt(float v) {
   // bits - 1 < inf bits <=> v in (0, +inf]: positive, not NaN.
   return detail::float_bits(v) - 1U < detail::kFloatInfBits ? ::sqrtf(v) : 0.0f;
 }
-
-namespace detail {
-inline bool is_finite(float v) { return magnitude_bits(v) < kFloatInfBits; }
-}  // namespace detail
 
 //! sin(a) [a in rad]; 0 for NaN and infinities.
 inline float sin(float a) { return detail::is_finite(a) ? ::sinf(a) : 0.0f; }
@@ -61,11 +52,9 @@ constexpr float kInvTwoPiF = 0.159154943091895f;
 constexpr float kTwoPiHiF = 6.28125f;
 constexpr float kTwoPiLoF = 1.9353071795864769e-3f;
 
-//! wrap_pi for float: (-pi, pi] with pi = pi<float>(); bounded time (no
-//! loop); NaN and infinities give 0. Within 1e-6 rad for |a| <= 1e4; the
-//! reduction keeps ~1e-6 relative accuracy up to |a| = 4e5 and is only as
-//! good as the float input beyond.
-inline float wrap_pi_impl(float a) {
+//! wrap_pi for float: (-pi, pi] with pi = pi<float>(), no loop; NaN and
+//! infinities give 0 (docs/fixed-point.md, "wrap_pi and wrap_two_pi").
+inline float wrap_pi(float a) {
   const uint32_t mag = magnitude_bits(a);
   if (mag >= kFloatInfBits) return 0.0f;  // NaN or infinite
   float r = a;
@@ -90,8 +79,8 @@ inline float wrap_pi_impl(float a) {
 }
 
 //! wrap_two_pi for float: [0, 2 pi) with 2 pi = two_pi<float>().
-inline float wrap_two_pi_impl(float a) {
-  float r = wrap_pi_impl(a);
+inline float wrap_two_pi(float a) {
+  float r = wrap_pi(a);
   if (float_bits(r) & kFloatSignBit) {
     r += kTwoPiF;
     if (float_bits(r) >= float_bits(kTwoPiF)) r = 0.0f;  // -tiny + 2 pi rounds up to 2 pi

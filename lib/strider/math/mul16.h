@@ -1,7 +1,6 @@
 //! mul_u16: the exact 16 x 16 -> 32-bit unsigned product, on the AVR four
-//! MUL instructions (~20 cycles) where avr-gcc 5.4 often calls a 32 x 32-bit
-//! library multiply (~100 cycles). Shared by Fixed's product (fixed.h) and
-//! the integer kernels of its elementary functions (fixed_ops.h).
+//! MUL instructions where avr-gcc 5.4 often calls a 32 x 32-bit library
+//! multiply. Shared by Fixed's product and its elementary functions.
 #ifndef STRIDER_MATH_MUL16_H
 #define STRIDER_MATH_MUL16_H
 

@@ -1,21 +1,9 @@
 //! Rotation matrices about the coordinate axes (seed 001 eqs 5.1-5.3) and
-//! body rotations from roll, pitch and yaw in any of the six Tait-Bryan
-//! orders (seed 001 algorithm 2).
-//!
-//! Angles: roll about x, pitch about y, yaw about z [rad], right-handed.
-//!
-//! RotationOrder names the factors of the product left to right:
-//!   kXYZ: R = Rx(roll) * Ry(pitch) * Rz(yaw)
-//!   kZYX: R = Rz(yaw) * Ry(pitch) * Rx(roll)   (Strider's default)
-//! and likewise for the other four. Applied to a vector, the rightmost factor
-//! acts first, so kZYX rolls first, then pitches, then yaws about the fixed
-//! axes; read from the left it is the intrinsic yaw-pitch-roll sequence.
-//!
-//! Seed 001's listing keys its table by the application order instead, i.e.
-//! its key is the Strider name reversed ('zyx' lists [rotX, rotY, rotZ] =
-//! kXYZ). The listing repeats the key 'xzy' three times and has a typo 'yzy'
-//! (its matrices make it 'yzx'), and it lacks its own default 'xyz' =
-//! Rz Ry Rx. Strider takes the six distinct orders; kZYX is that default.
+//! body rotations from roll (about x), pitch (y) and yaw (z) [rad],
+//! right-handed, in any of the six Tait-Bryan orders (seed 001 algorithm 2).
+//! RotationOrder names the factors left to right as multiplied: kZYX, the
+//! default, is R = Rz(yaw) Ry(pitch) Rx(roll). How the seed's listing names
+//! them: docs/kinematics.md, "Frames".
 #ifndef STRIDER_MATH_ROTATION_H
 #define STRIDER_MATH_ROTATION_H
 
@@ -23,35 +11,26 @@
 
 namespace strider {
 
-//! The order of the three elementary rotations, named left to right as they
-//! are multiplied (see the file comment).
+//! The order of the three elementary rotations, left to right as multiplied.
 enum class RotationOrder : uint8_t { kXYZ, kXZY, kYXZ, kYZX, kZXY, kZYX };
 
-//! Rotation about x from its cosine and sine (seed 001 eq 5.1).
+//! Rotations about x, y and z by an angle [rad] (seed 001 eqs 5.1-5.3).
+
 template <typename S>
-constexpr Mat3<S> rot_x_cs(S c, S s) {
+Mat3<S> rot_x(S roll) {
+  const S c = cos(roll), s = sin(roll);
   return Mat3<S>{{{S(1), S(0), S(0)}, {S(0), c, -s}, {S(0), s, c}}};
 }
-//! Rotation about y from its cosine and sine (seed 001 eq 5.2).
 template <typename S>
-constexpr Mat3<S> rot_y_cs(S c, S s) {
+Mat3<S> rot_y(S pitch) {
+  const S c = cos(pitch), s = sin(pitch);
   return Mat3<S>{{{c, S(0), s}, {S(0), S(1), S(0)}, {-s, S(0), c}}};
 }
-//! Rotation about z from its cosine and sine (seed 001 eq 5.3).
 template <typename S>
-constexpr Mat3<S> rot_z_cs(S c, S s) {
+Mat3<S> rot_z(S yaw) {
+  const S c = cos(yaw), s = sin(yaw);
   return Mat3<S>{{{c, -s, S(0)}, {s, c, S(0)}, {S(0), S(0), S(1)}}};
 }
-
-//! Rotation by roll about x [rad] (seed 001 eq 5.1).
-template <typename S>
-Mat3<S> rot_x(S roll) { return rot_x_cs(cos(roll), sin(roll)); }
-//! Rotation by pitch about y [rad] (seed 001 eq 5.2).
-template <typename S>
-Mat3<S> rot_y(S pitch) { return rot_y_cs(cos(pitch), sin(pitch)); }
-//! Rotation by yaw about z [rad] (seed 001 eq 5.3).
-template <typename S>
-Mat3<S> rot_z(S yaw) { return rot_z_cs(cos(yaw), sin(yaw)); }
 
 namespace rotation_detail {
 
@@ -66,14 +45,12 @@ constexpr uint8_t factors(RotationOrder order) {
                                         : uint8_t(2 | 1 << 2 | 0 << 4);
 }
 
-//! The three elementary matrices and their product (float, double: the
-//! operators' own zero terms and their signs kept).
+//! The three elementary matrices and their product (float, double).
 template <typename S>
 Mat3<S> product(S roll, S pitch, S yaw, RotationOrder order) {
   const Mat3<S> x = rot_x(roll);
   const Mat3<S> y = rot_y(pitch);
   const Mat3<S> z = rot_z(yaw);
-  // The factors left to right; one product for all orders.
   const Mat3<S>* a = &z;
   const Mat3<S>* b = &y;
   const Mat3<S>* c = &x;
@@ -89,12 +66,9 @@ Mat3<S> product(S roll, S pitch, S yaw, RotationOrder order) {
 }
 
 //! Fixed: the same product without the zero and unit terms, which are
-//! exact in Fixed (a product by 0 or 1 is exact, a sum with 0 too, and a
-//! sum of two terms does not depend on their order), so the bits are those
-//! of product(): from the identity, each factor turns two columns of the
-//! product so far in place (12 products a factor, not 27, and one matrix
-//! on the stack instead of five). test/chain's
-//! RotationRpy.FixedIsTheMatrixProduct checks it bit for bit.
+//! exact in Fixed, so the bits are those of product(): from the identity,
+//! each factor turns two columns of the product so far in place (12
+//! products a factor, not 27; RotationRpy.FixedIsTheMatrixProduct).
 inline Mat3<Fixed> product(Fixed roll, Fixed pitch, Fixed yaw, RotationOrder order) {
   const Fixed angle[3] = {roll, pitch, yaw};
   uint8_t axes = factors(order);

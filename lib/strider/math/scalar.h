@@ -49,12 +49,9 @@ constexpr double kDegToRad = 0.017453292519943295;
 template <typename S> constexpr S min_of(S a, S b) { return b < a ? b : a; }
 template <typename S> constexpr S max_of(S a, S b) { return a < b ? b : a; }
 template <typename S> constexpr S clamp(S v, S lo, S hi) { return v < lo ? lo : (hi < v ? hi : v); }
-template <typename S> constexpr S square(S v) { return v * v; }
 
 //! a + b, a - b, -a and |a|, Fixed's saturating results bit for bit, always
-//! in place: avr-gcc keeps Fixed's operators out of line in a large firmware
-//! (a call and its register moves each, ~25 cycles), which the per-tick
-//! paths (walker, gait engine, servo frame) avoid this way.
+//! in place (avr-gcc keeps Fixed's operators out of line in a large firmware).
 STRIDER_ALWAYS_INLINE float add_inline(float a, float b) { return a + b; }
 STRIDER_ALWAYS_INLINE Fixed add_inline(Fixed a, Fixed b) { return Fixed::from_raw(Fixed::sat_add_fast(a.raw(), b.raw())); }
 STRIDER_ALWAYS_INLINE float sub_inline(float a, float b) { return a - b; }
@@ -64,20 +61,11 @@ STRIDER_ALWAYS_INLINE Fixed neg_inline(Fixed a) { return Fixed::from_raw(Fixed::
 STRIDER_ALWAYS_INLINE float abs_inline(float a) { return abs(a); }
 STRIDER_ALWAYS_INLINE Fixed abs_inline(Fixed a) { return a.raw() < 0 ? neg_inline(a) : a; }
 
-//! Wraps an angle to (-pi, pi] [rad]: -pi<S>() < result <= pi<S>(). Bounded
-//! time for any input (no loop over turns); NaN or an infinity gives 0.
-//! Fixed: within 1 LSB of the exact wrapped angle, for every input.
-template <typename S>
-S wrap_pi(S a) {
-  return detail::wrap_pi_impl(a);
-}
-
-//! Wraps an angle to [0, 2 pi) [rad] (seed 001's angle_range_limiter):
-//! 0 <= result < two_pi<S>(). Bounded time; NaN or an infinity gives 0.
-template <typename S>
-S wrap_two_pi(S a) {
-  return detail::wrap_two_pi_impl(a);
-}
+//! Wrap an angle [rad] to (-pi, pi], -pi<S>() < result <= pi<S>(), and to
+//! [0, 2 pi) (seed 001's angle_range_limiter), 0 <= result < two_pi<S>():
+//! bounded time, NaN or an infinity gives 0; Fixed within 1 LSB.
+using detail::wrap_pi;
+using detail::wrap_two_pi;
 
 }  // namespace strider
 

@@ -36,8 +36,6 @@ template <typename S> constexpr S dot(const Vec3<S>& a, const Vec3<S>& b) { retu
 template <typename S> constexpr Vec3<S> cross(const Vec3<S>& a, const Vec3<S>& b) {
   return Vec3<S>(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-template <typename S> S norm(const Vec3<S>& a) { return sqrt(dot(a, a)); }
-template <typename S> S distance(const Vec3<S>& a, const Vec3<S>& b) { return norm(a - b); }
 
 }  // namespace strider
 
