@@ -45,6 +45,12 @@ constexpr bool sides_consistent(const RobotModel& m) {
 
 constexpr bool near(float a, float b, float tol) { return a - b <= tol && b - a <= tol; }
 
+//! Two names equal (strcmp at compile time).
+constexpr bool same_name(const char* a, const char* b) {
+  while (*a != '\0' && *a == *b) ++a, ++b;
+  return *a == *b;
+}
+
 //! Every leg has a mirror twin across the body's x-z plane: mount (x, -y, z),
 //! yaw -yaw, standing foot (x, -y, z). Legs on the x axis are their own twin.
 constexpr bool mirror_symmetric(const RobotModel& m) {
@@ -128,8 +134,7 @@ constexpr bool unused_slots_empty(const RobotModel& m) {
 
 }  // namespace model_checks
 
-//! All invariants; robot files static_assert each one separately so the
-//! message names the one that failed.
+//! All invariants: each robot file static_asserts them.
 constexpr bool model_valid(const RobotModel& m) {
   return model_checks::links_valid(m) && model_checks::joint_ranges_valid(m) &&
          model_checks::sides_consistent(m) && model_checks::mirror_symmetric(m) &&
