@@ -1,7 +1,6 @@
 //! SpeedRamp: the command, its plan (velocity_limits.h) and the ramp to it
-//! in stride per cycle (a foot's travel over a stance then depends on the
-//! phase only): the velocity walked, its body step, and the stride a foot
-//! landing now is placed for.
+//! in stride per cycle: the velocity walked, its body step, and the stride a
+//! foot landing now is placed for (docs/gaits.md, "Starting, stopping").
 #ifndef STRIDER_GAIT_SPEED_RAMP_H
 #define STRIDER_GAIT_SPEED_RAMP_H
 
@@ -96,11 +95,9 @@ struct SpeedRamp {
       land_fresh = false;
     }
     if (vel_fresh) return;  // a steady command: the products of the last tick hold
-    // Products into locals first, then the stores: written member by member,
-    // avr-gcc 5.4 -Os clobbered the address register between two of them.
+    // Products into locals, then the stores (member by member, avr-gcc 5.4
+    // clobbered the address register); a zero part needs no product.
     const S rate = now.hz;
-    // A zero part (a straight or forward walk's) needs no product: the
-    // rate is positive, so the product would be that zero, its sign included.
     const S x = now.x * rate;
     const S y = now.y == S(0) ? now.y : now.y * rate;
     const S yaw = now.yaw == S(0) ? now.yaw : now.yaw * rate;
@@ -131,9 +128,8 @@ struct SpeedRamp {
     return !(land.x == was_x && land.y == was_y && land.yaw == was_yaw);
   }
 
-  //! out = from + (to - from) t, field by field into place (a returned
-  //! Stride is copied with a byte loop by avr-gcc, twice per ramp tick):
-  //! the four parts (x, y, yaw, hz) at their byte offsets (no padding).
+  //! out = from + (to - from) t, the four parts at their byte offsets into
+  //! place (avr-gcc copies a returned Stride with a byte loop).
   STRIDER_NOINLINE void mix_into(Stride<S>& out, S at) const {
     const unsigned char* a = reinterpret_cast<const unsigned char*>(&from);
     const unsigned char* b = reinterpret_cast<const unsigned char*>(&to);
@@ -141,8 +137,7 @@ struct SpeedRamp {
     for (uint8_t k = 0; k < 4; ++k, a += sizeof(S), b += sizeof(S), o += sizeof(S))
       *reinterpret_cast<S*>(o) = mix(*reinterpret_cast<const S*>(a), *reinterpret_cast<const S*>(b), at);
   }
-  //! a + (b - a) t; a itself when b has a's bits (a ramp's unchanged parts:
-  //! the yaw of a straight walk, a rate kept), the formula's value then.
+  //! a + (b - a) t; a itself when b has a's bits (the formula's value then).
   STRIDER_ALWAYS_INLINE static S mix(S a, S b, S at) {
     return leg_ik::same_bits(a, b) ? a : add_inline(a, sub_inline(b, a) * at);
   }
