@@ -28,7 +28,6 @@ struct GaitChoice {
 
 constexpr uint8_t kGaitChoiceCount = 1;
 
-//! In flash on the AVR: read through gait_choice_for().
 constexpr GaitChoice kGaitChoices[kGaitChoiceCount] STRIDER_PROGMEM = {
     {"sprawl8", "crawl", "trot", 250, 180, 250, 180},
 };

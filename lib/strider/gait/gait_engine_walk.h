@@ -74,8 +74,7 @@ void GaitEngine<S, kLegs>::start_walking() {
 
 template <typename S, uint8_t kLegs>
 void GaitEngine<S, kLegs>::step_walk(S dt) {
-  // A steady command (the ramp over, the products known) and its landing
-  // stride known: nothing to ramp or place.
+  // A steady command and its landing stride known: nothing to ramp or place.
   if (ramp_.t < S(1) || !ramp_.vel_fresh) ramp_.step(dt);
   if (!ramp_.land_fresh && ramp_.update_landing(phases_.duty, phases_.inv_stance)) invalidate_touchdown();
   typename SpeedRamp<S>::StepCache& sc = ramp_.step_cache;
@@ -83,7 +82,7 @@ void GaitEngine<S, kLegs>::step_walk(S dt) {
   // Field by field: avr-gcc copies the whole struct with a byte loop.
   BodyStep<S> step{sc.step.dx_mm, sc.step.dy_mm, sc.step.dyaw, sc.step.cos_yaw, sc.step.sin_yaw};
   // A foot on the ground at the edge of its reach that this step would take
-  // farther out holds the body for this tick (it lifts as soon as it can).
+  // farther out holds the body for this tick.
   held_ = false;
   bool edge[kLegs];  // legs 0 to leg_count - 1, all set here
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
@@ -161,9 +160,8 @@ bool GaitEngine<S, kLegs>::step_lift(const bool* edge) {
   for (uint8_t i = 0; i < n; ++i) {
     if (!contact_[i]) continue;
     const bool crossed = clock_.crossed(phases_.offset[i]);
-    // Lift at the offset; or, after a gait change that made a foot miss its
-    // offset, as soon as its stance is a sixteenth of a cycle overdue; or
-    // when the foot reaches the edge of its stride (a command change).
+    // Lift at the offset, when the stance is a sixteenth of a cycle overdue
+    // (a gait change), or at the edge of the stride (a command change).
     if (crossed || stance_elapsed_[i] >= int32_t(kPhaseOne - phases_.swing_len + kPhaseOne / 16) ||
         (edge[i] && at_edge(i)))
       pending_[i] = true;

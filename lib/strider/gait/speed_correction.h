@@ -24,20 +24,16 @@ struct SpeedCorrection {
   uint16_t linear_per10k;      //!< achieved / commanded forward speed [1/10000]
   uint16_t turn_per10k;        //!< achieved / commanded turn rate [1/10000]
   //! The body speed the gait's steps lose at any speed [0.1 mm/s]: achieved
-  //! = ratio x the gait's speed - this (each step slides back a little, and
-  //! at low speeds the gait steps at its slowest rate, so the loss is one
-  //! speed rather than a share of it).
+  //! = ratio x the gait's speed - this.
   uint16_t linear_offset;
-  //! The fastest body speed the gait makes as commanded [0.1 mm/s] and turn
-  //! rate [0.1 deg/s]: the RC pad's 100 % in this gait (RcLimits); 0: the
-  //! pad's default (155 mm/s, 60 deg/s), which the gait makes.
+  //! The RC pad's 100 % in this gait (RcLimits) [0.1 mm/s], [0.1 deg/s]; 0:
+  //! the pad's default (155 mm/s, 60 deg/s), which the gait makes.
   uint16_t top_linear;
   uint16_t top_turn;
 };
 
 constexpr uint8_t kSpeedCorrectionCount = 6;
 
-//! In flash on the AVR: read through speed_correction_of().
 constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGMEM = {
     // sprawl8 trot: walk 155 -> 76.6 mm/s uncorrected (0.494); 0.4697 keeps
     // the pad's 155 mm/s a few % over (the gait at 330 mm/s). turn 60 -> 52.7 deg/s.

@@ -44,9 +44,9 @@ struct SpeedRamp {
   bool command_zero() const { return plan.vx_mm_s == S(0) && plan.vy_mm_s == S(0) && plan.wz_rad_s == S(0); }
   bool at_rest() const { return t >= S(1) && vx == S(0) && vy == S(0) && wz == S(0); }
 
-  //! Plans the command and starts the ramp to it. The ramp runs in phase,
-  //! linearly in the stride per cycle and the rate: at least one cycle, and
-  //! no faster than the acceleration limits at the faster of the two rates.
+  //! Plans the command and starts the ramp to it: in phase, linear in the
+  //! stride per cycle and the rate, at least one cycle and within the
+  //! acceleration limits.
   template <uint8_t kL>
   void replan(const GaitConfig<S, kL>& cfg, S duty, S budget, bool shift_body) {
     plan = cfg.limits.plan(cfg.home, cmd_vx, cmd_vy, cmd_wz, duty, budget, shift_body);
@@ -70,8 +70,7 @@ struct SpeedRamp {
     return max_of(time * max_of(rest_hz, hz), S(1));
   }
 
-  //! A gait change from duty `was` to `duty`: each stance keeps its travel
-  //! (stride x duty): the body slows, or the step rate drops.
+  //! A gait change from duty `was` to `duty`: each stance keeps its travel.
   void keep_travel(S was, S duty) {
     const S r = was / duty;
     now.x = now.x * r;
@@ -112,7 +111,6 @@ struct SpeedRamp {
   //! The mean stride per cycle over the next stance (duty cycles) along the
   //! ramp, which a foot landing now is placed for; true when it changed.
   bool update_landing(S duty, S inv_stance) {
-    // The old stride's three parts, not the whole Stride (a byte loop).
     const S was_x = land.x, was_y = land.y, was_yaw = land.yaw;
     if (t >= S(1)) {
       land = now;

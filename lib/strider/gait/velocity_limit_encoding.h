@@ -66,15 +66,14 @@ constexpr uint8_t kFingerprintWords = 8;
 //! mount and standing foot in 1/16 mm): a stored table entry is used only
 //! for a model that matches it.
 inline void geometry_fingerprint(const RobotModel& m, uint16_t* out) {
-  const auto q16 = [](float mm) { return sixteenths(mm); };
   out[0] = uint16_t(uint8_t(m.kind) | (uint16_t(m.leg_count) << 8));
-  out[1] = q16(m.links.l1_mm);
-  out[2] = q16(m.links.l2_mm);
-  out[3] = q16(m.links.l3_mm);
-  out[4] = q16(m.links.d1_mm);
-  out[5] = q16(m.legs[0].mount_mm.x);
-  out[6] = q16(m.legs[0].stand_mm.x);
-  out[7] = q16(m.legs[0].stand_mm.z);
+  out[1] = sixteenths(m.links.l1_mm);
+  out[2] = sixteenths(m.links.l2_mm);
+  out[3] = sixteenths(m.links.l3_mm);
+  out[4] = sixteenths(m.links.d1_mm);
+  out[5] = sixteenths(m.legs[0].mount_mm.x);
+  out[6] = sixteenths(m.legs[0].stand_mm.x);
+  out[7] = sixteenths(m.legs[0].stand_mm.z);
 }
 
 }  // namespace velocity_limit_encoding

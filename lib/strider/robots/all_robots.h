@@ -15,7 +15,6 @@ namespace strider {
 
 constexpr uint8_t kRobotCount = 5;
 
-//! Every model, in the order of docs/robots.md.
 constexpr const RobotModel* kAllRobots[kRobotCount] = {&kSprawl8, &kMammal8, &kDog12, &kHexapod18, &kSpider12};
 
 //! The model called `name`, or nullptr.

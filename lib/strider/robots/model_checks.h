@@ -1,7 +1,6 @@
-//! Compile-time invariants of a RobotModel. Each robot file static_asserts
+//! Compile-time invariants of a RobotModel: each robot file static_asserts
 //! them, so a typo in a model fails the build (host and AVR) instead of a
-//! walk. The run-time checks that need the solvers (standing pose solved
-//! with status ok and margin from the limits) are in test/robots.
+//! walk; what needs the solvers is tested in test/robots.
 #ifndef STRIDER_ROBOTS_MODEL_CHECKS_H
 #define STRIDER_ROBOTS_MODEL_CHECKS_H
 
@@ -75,8 +74,6 @@ constexpr bool mirror_symmetric(const RobotModel& m) {
 //! Legs numbered counter-clockwise seen from above (the mount bearing from
 //! the body centre increases with the index, one turn in all).
 constexpr bool numbered_counter_clockwise(const RobotModel& m) {
-  // Count how often the cross product of consecutive mounts turns clockwise:
-  // a convex counter-clockwise polygon never does.
   for (uint8_t i = 0; i < m.leg_count; ++i) {
     const Vec3<float>& a = m.legs[i].mount_mm;
     const Vec3<float>& b = m.legs[(i + 1) % m.leg_count].mount_mm;
