@@ -68,15 +68,13 @@ constexpr const GaitTable* const* list_items(uint8_t leg_count) {
   return leg_count == 4 ? kQuadruped : leg_count == 6 ? kHexapod : nullptr;
 }
 constexpr uint8_t list_count(uint8_t leg_count) { return leg_count == 4 ? 4 : leg_count == 6 ? 3 : 0; }
-//! Gait i of a leg count's list into *out (copied out of flash on the AVR).
-inline void copy_gait(uint8_t leg_count, uint8_t i, GaitTable* out) {
-#if defined(__AVR__)
-  static_assert(sizeof(const GaitTable*) == 2, "AVR data pointers are 16-bit");
-  const GaitTable* const* items = list_items(leg_count);
-  flash_copy(out, reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i)), sizeof *out);
-#else
-  *out = *list_items(leg_count)[i];
-#endif
+//! A name in RAM equal to one in flash (strcmp_P, without avr/pgmspace.h).
+inline bool same_as_flash(const char* name, const char* flash_name) {
+  for (uint8_t i = 0;; ++i) {
+    const char c = char(flash_u8(flash_name + i));
+    if (c != name[i]) return false;
+    if (c == 0) return true;
+  }
 }
 }  // namespace gait_library_detail
 
@@ -90,6 +88,28 @@ constexpr const char* gait_names(uint8_t leg_count) {
   return leg_count == 4 ? kQuadrupedGaitNames : leg_count == 6 ? kHexapodGaitNames : kNoGaitNames;
 }
 
+//! The gait called `name` with `leg_count` legs into *out (copied out of
+//! flash on the AVR); false (out untouched) when there is none.
+inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
+  if (name == nullptr) return false;
+  const GaitTable* const* items = gait_library_detail::list_items(leg_count);
+  const uint8_t count = gait_library_detail::list_count(leg_count);
+  for (uint8_t i = 0; i < count; ++i) {
+#if defined(__AVR__)
+    static_assert(sizeof(const GaitTable*) == 2, "AVR data pointers are 16-bit");
+    const GaitTable* g = reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i));
+    if (!gait_library_detail::same_as_flash(name, g->name)) continue;
+    flash_copy(out, g, sizeof *out);
+#else
+    const GaitTable* g = items[i];
+    if (strcmp(g->name, name) != 0) continue;
+    *out = *g;
+#endif
+    return true;
+  }
+  return false;
+}
+
 //! Where gait `name` is in the list of a robot with leg_count legs (the
 //! order of gait_names()); kNoGaitIndex: not there.
 constexpr uint8_t kNoGaitIndex = 0xFF;
@@ -97,20 +117,17 @@ inline uint8_t gait_index(uint8_t leg_count, const char* name) {
   const uint8_t count = gait_library_detail::list_count(leg_count);
   for (uint8_t i = 0; i < count; ++i) {
     GaitTable g;
-    gait_library_detail::copy_gait(leg_count, i, &g);
+#if defined(__AVR__)
+    const GaitTable* const* items = gait_library_detail::list_items(leg_count);
+    flash_copy(&g, reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i)), sizeof g);
+#else
+    g = *gait_library_detail::list_items(leg_count)[i];
+#endif
     if (strcmp(g.name, name) == 0) return i;
   }
   return kNoGaitIndex;
 }
 
-//! The gait called `name` with `leg_count` legs into *out; false (out
-//! untouched) when there is none.
-inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
-  const uint8_t i = name == nullptr ? kNoGaitIndex : gait_index(leg_count, name);
-  if (i == kNoGaitIndex) return false;
-  gait_library_detail::copy_gait(leg_count, i, out);
-  return true;
-}
 inline bool load_gait(const RobotModel& model, const char* name, GaitTable* out) {
   return load_gait(model.leg_count, name, out);
 }

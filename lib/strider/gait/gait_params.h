@@ -80,9 +80,15 @@ static_assert(gait_params_detail::values_sane(), "kGaitParams: positive sizes an
 
 //! Entry r (< kRobotCount) of kGaitParams, copied out of flash on the AVR.
 inline GaitParams gait_params_at(uint8_t r) {
+#if defined(__AVR__)
   GaitParams p;
-  flash_copy(&p, &kGaitParams[r], sizeof p);
+  uint8_t* to = reinterpret_cast<uint8_t*>(&p);
+  const uint8_t* from = reinterpret_cast<const uint8_t*>(&kGaitParams[r]);
+  for (uint8_t i = 0; i < sizeof p; ++i) to[i] = flash_u8(from + i);
   return p;
+#else
+  return kGaitParams[r];
+#endif
 }
 
 //! The index of `model`'s gait defaults in kGaitParams (by name), or

@@ -21,14 +21,11 @@ struct TablePhases {
 
   GaitTable table() const { return relabel ? gait_table::relabeled(base, quarter) : base; }
 
-  //! The table's fractions from the float's bits, integers only (test/gait:
-  //! the same values as phase16() and phase_span() of the double values).
   void load(const GaitTable& t, uint8_t leg_count) {
-    swing_len = table_fraction::swing_span(t.duty);
     set_fractions(t, S());
     uint32_t latest_end = 0;
     for (uint8_t i = 0; i < leg_count; ++i) {
-      offset[i] = Phase16(table_fraction::q16(t.offset[i]) & 0xFFFFu);
+      offset[i] = table_phase(t.offset[i], S());
       const uint32_t end = uint32_t(offset[i]) + swing_len;
       if (end <= kPhaseOne && end > latest_end) latest_end = end;
     }
@@ -37,18 +34,22 @@ struct TablePhases {
     start_phase = t.shift_body && latest_end > 0 && latest_end < kPhaseOne ? Phase16(latest_end) : Phase16(0xFFFF);
   }
 
-  //! The duty and its inverses: float through double, Fixed from the
-  //! float's bits (the same values).
+  //! The table's duty in the engine's units: float through double (the
+  //! host), Fixed from the float's bits (integers only: the same values).
   void set_fractions(const GaitTable& t, float) {
+    swing_len = phase_span(1.0 - double(t.duty));
     duty = scalar<S>(double(t.duty));
     inv_swing = scalar<S>(1.0 / (1.0 - double(t.duty)));
     inv_stance = scalar<S>(1.0 / double(t.duty));
   }
   void set_fractions(const GaitTable& t, Fixed) {
+    swing_len = table_fraction::swing_span(t.duty);
     duty = Fixed::from_raw(int32_t(table_fraction::q16(t.duty)));
     inv_swing = table_fraction::inverse_of_rest(t.duty);
     inv_stance = table_fraction::inverse(t.duty);
   }
+  static Phase16 table_phase(float offset, float) { return phase16(double(offset)); }
+  static Phase16 table_phase(float offset, Fixed) { return Phase16(table_fraction::q16(offset) & 0xFFFFu); }
 };
 
 }  // namespace strider

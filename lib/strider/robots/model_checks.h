@@ -96,24 +96,21 @@ constexpr bool stand_in_workspace(const RobotModel& m, const LegModel& leg) {
     const double d = sqrt((rho - l.l1_mm) * (rho - l.l1_mm) + double(p.z) * p.z);
     return d - l.l2_mm <= tol && l.l2_mm - d <= tol;
   }
-  double r = 0.0, lo = 0.0, hi = 0.0;
+  double r = 0.0;
   if (m.kind == LegKind::kPlanar) {
     if (p.y > tol || -p.y > tol) return false;  // a planar leg cannot leave its plane
     r = sqrt(double(p.x) * p.x + double(p.z) * p.z);
-    lo = l.l1_mm > l.l2_mm ? l.l1_mm - l.l2_mm : l.l2_mm - l.l1_mm;
-    hi = double(l.l1_mm) + l.l2_mm;
   } else if (m.kind == LegKind::kCoxaFemurTibia) {
     r = sqrt((rho - l.l1_mm) * (rho - l.l1_mm) + (double(p.z) - l.d1_mm) * (double(p.z) - l.d1_mm));
-    lo = l.l2_mm > l.l3_mm ? l.l2_mm - l.l3_mm : l.l3_mm - l.l2_mm;
-    hi = double(l.l2_mm) + l.l3_mm;
   } else {
     const double a2 = double(p.y) * p.y + double(p.z) * p.z;
     if (a2 <= double(l.l1_mm) * l.l1_mm) return false;
     r = sqrt(double(p.x) * p.x + a2 - double(l.l1_mm) * l.l1_mm);
-    lo = l.l2_mm > l.l3_mm ? l.l2_mm - l.l3_mm : l.l3_mm - l.l2_mm;
-    hi = double(l.l2_mm) + l.l3_mm;
   }
-  return r > lo + 1.0 && r < hi - 1.0;  // 1 mm clear of a straight or folded leg
+  // r spans the two links that fold (a1, a2 of a planar leg; else l2, l3).
+  const double a = m.kind == LegKind::kPlanar ? l.l1_mm : l.l2_mm;
+  const double b = m.kind == LegKind::kPlanar ? l.l2_mm : l.l3_mm;
+  return r > (a > b ? a - b : b - a) + 1.0 && r < a + b - 1.0;  // 1 mm clear of a straight or folded leg
 }
 
 constexpr bool stands_in_workspace(const RobotModel& m) {
