@@ -1,16 +1,26 @@
 //! BodyPosture: the body's height between sitting and standing, the user's
-//! pose offsets moving to their goal at a limited rate, and the body pose
-//! they and the body shift make.
+//! pose offsets (BodyOffsets) moving to their goal at a limited rate, and
+//! the body pose they and the body shift make.
 #ifndef STRIDER_GAIT_BODY_POSTURE_H
 #define STRIDER_GAIT_BODY_POSTURE_H
 
 #include "../kinematics/body_pose.h"
 #include "../kinematics/leg_ik_common.h"
-#include "body_offsets.h"
 #include "body_shift.h"
 #include "gait_config.h"
 
 namespace strider {
+
+//! The user's body pose offsets (applied while standing and walking).
+template <typename S>
+struct BodyOffsets {
+  Vec3<S> translation_mm;  //!< body shift x, y and height change z [mm]
+  S roll_rad, pitch_rad, yaw_rad;
+  static BodyOffsets zero() { return BodyOffsets{Vec3<S>(), S(0), S(0), S(0)}; }
+};
+// BodyPosture::step_pose() walks the six offsets as an array.
+static_assert(sizeof(BodyOffsets<float>) == 6 * sizeof(float) && sizeof(BodyOffsets<Fixed>) == 6 * sizeof(Fixed),
+              "BodyOffsets: six scalars, no padding");
 
 template <typename S>
 struct BodyPosture {
@@ -24,10 +34,9 @@ struct BodyPosture {
     at_goal = true;
   }
 
-  //! How far the body is below standing height [mm].
+  //! How far the body is below standing height [mm] (standing: no products).
   template <uint8_t kL, bool kSr>
   S drop_mm(const GaitConfig<S, kL, kSr>& cfg) const {
-    // Standing (progress 1): no drop, and no products for it.
     return progress >= S(1) ? S(0) : cfg.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress));
   }
 
@@ -65,12 +74,10 @@ struct BodyPosture {
   //! already (none moved), the pose is there.
   template <uint8_t kL, bool kSr>
   void step_pose(const GaitConfig<S, kL, kSr>& cfg, S dt) {
-    // At its goal (the usual case): nothing to move, no products.
     if (at_goal) return;
     const S dp = cfg.pose_speed_mm_s * dt, da = cfg.pose_rate_rad_s * dt;
-    // The six offsets in their order (x, y, z, roll, pitch, yaw) at their
-    // byte offsets in BodyOffsets (six scalars, no padding), one call site:
-    // the lengths at dp, the angles at da.
+    // The six offsets (x, y, z, roll, pitch, yaw) at their byte offsets, one
+    // call site: the lengths at dp, the angles at da.
     unsigned char* v = reinterpret_cast<unsigned char*>(&pose);
     const unsigned char* g = reinterpret_cast<const unsigned char*>(&goal);
     bool there = true;

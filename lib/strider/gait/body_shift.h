@@ -1,23 +1,10 @@
 //! BodyShift: how a statically stable gait (walk, crawl) moves the body over
 //! its feet so that the CoM stays inside the support polygon with a margin
-//! (seed 003 section 3; seed 000 section 3.3: "the body moves forward, which
-//! keeps the robot balanced").
-//!
-//! The shift s is a horizontal offset of the body [mm] added to its pose;
-//! the CoM's ground point is ref + s (ref: the CoM with no shift).
-//! - While legs are in the air: s = c(P) - ref, where P is the support
-//!   polygon of the feet down and c() moves ref into P's region with at
-//!   least the wanted margin (SupportPolygon::constrain: the smallest move,
-//!   so the body still travels at the commanded velocity along the edge that
-//!   binds: on a crawl's support diagonal it moves diagonally, as the seed
-//!   describes).
-//! - While every foot is down (the window before the next swing group lifts):
-//!   s blends from its value at the window's start to the shift the next
-//!   swing will need, evaluated for the support polygon that will remain and
-//!   for the CoM reference where it will be at lift-off (ref + v dt), with a
-//!   smoothstep of the window's phase. Both ends match the swing formula, so
-//!   s is continuous.
-//! - Every tick s moves at most max_step toward that target (per axis).
+//! (seed 003 section 3): a horizontal offset [mm] added to the body's pose.
+//! While legs are in the air it is the smallest move of the CoM into the
+//! support region of the feet down; while every foot is down it blends
+//! (smoothstep) toward what the next swing group will need at its lift-off;
+//! every tick it moves at most max_step per axis (docs/gaits.md).
 #ifndef STRIDER_GAIT_BODY_SHIFT_H
 #define STRIDER_GAIT_BODY_SHIFT_H
 
@@ -29,8 +16,7 @@
 namespace strider {
 
 //! Moves v toward goal by at most max_step either way (a rate limit); true
-//! when v was at the goal already. One call for each value limited so (the
-//! body shift's axes, the body offsets): not inlined, it is written once.
+//! when v was at the goal already. Not inlined: written once for every value.
 template <typename S>
 STRIDER_NOINLINE bool move_toward(S& v, S goal, S max_step) {
   const bool there = v == goal;
@@ -71,9 +57,8 @@ class BodyShift {
     ty = from_y_ + (to_y - from_y_) * k;
   }
 
-  //! Moves toward (tx, ty) by at most max_step_mm per axis. Not inlined: in
-  //! step_shift() it changed the registers step_walk() keeps across its call
-  //! (hexapod18 Fixed control tick +3 cycles).
+  //! Moves toward (tx, ty) by at most max_step_mm per axis (not inlined: it
+  //! would change the registers step_walk() keeps across step_shift()).
   STRIDER_NOINLINE void step_toward(S tx, S ty, S max_step_mm) {
     move_toward(x_, tx, max_step_mm);
     move_toward(y_, ty, max_step_mm);

@@ -1,24 +1,10 @@
-//! GaitChoice: the RC pad's speed-dependent gait, per model. Animals walk
-//! slowly and trot fast, and switch at different speeds going up and coming
-//! down (hysteresis), so that a speed near the switch does not flip between
-//! gaits. A model listed here has a slow gait whose top body speed is below
-//! the pad's 100 % (control/robot_mode.h's RcLimits) and a fast gait that
-//! makes it; pressing a pad button at a forward (or backward) speed or a
-//! turn rate over `up` switches slow -> fast, one under `down` on both
-//! switches back. Sideways speed does not count: sprawl8 trotting sideways
-//! at 155 mm/s drifts 13 % forward and turns 6 deg (sprawl8_strafe), its
-//! crawl strafes straight (at its top speed, ~37 mm/s), so the pad's
-//! sideways buttons walk the slow gait. A model not listed,
-//! or a gait that is neither of its pair (one the user chose with `gait`),
-//! keeps its gait.
-//!
-//! Thresholds are body speeds (after speed_correction.h), measured in the
-//! simulator, firmware mode (steady speeds): sprawl8's crawl makes ~33 mm/s
-//! and ~29 deg/s at its limits, and its feet slip more the faster it goes
-//! (0.49 of its gait speed at 15 mm/s, 0.40 at 27 mm/s), so its one speed
-//! correction holds to ~25 mm/s: the pad changes up above 25 mm/s or
-//! 25 deg/s (the slider's 20 % and 50 %) and back below 18 mm/s and
-//! 18 deg/s (10 %, 30 %).
+//! GaitChoice: the RC pad's speed-dependent gait, per model (docs/protocol.md,
+//! "The pad picks sprawl8's gait by speed"): a pad button at a forward or
+//! backward speed or a turn rate over `up` switches the slow gait to the
+//! fast one, one under `down` on both switches back (hysteresis); sideways
+//! speed does not count. A model not listed, or a gait that is neither of
+//! its pair, keeps its gait. Thresholds are body speeds (after
+//! speed_correction.h): sprawl8's crawl correction holds to ~25 mm/s.
 #ifndef STRIDER_GAIT_GAIT_CHOICE_H
 #define STRIDER_GAIT_GAIT_CHOICE_H
 
@@ -42,7 +28,6 @@ struct GaitChoice {
 
 constexpr uint8_t kGaitChoiceCount = 1;
 
-//! In flash on the AVR: read through gait_choice_for().
 constexpr GaitChoice kGaitChoices[kGaitChoiceCount] STRIDER_PROGMEM = {
     {"sprawl8", "crawl", "trot", 250, 180, 250, 180},
 };

@@ -23,9 +23,8 @@ void GaitEngine<S, kLegs, kSearch>::step_shift(S dt) {
   for (uint8_t i = 0; i < n; ++i)
     if (!contact_[i]) any_swing = true;
   if (support_dirty_) build_support();
-  // One correction call: the support now while feet swing; in a window, the
-  // support of the next swing (if a foot is still to step) for the CoM
-  // where it will be at lift-off, blended in below.
+  // The support now while feet swing; in a window, that of the next swing
+  // for the CoM where it will be at lift-off, blended in below.
   const SupportPolygon<S, kLegs>* poly = &support_;
   S t = S(0);
   ShiftWindow<S, kLegs>& w = window_;
@@ -74,8 +73,7 @@ void GaitEngine<S, kLegs, kSearch>::step_shift(S dt) {
   if (poly != nullptr) BodyShift<S>::correction(*poly, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, cx, cy);
   S tx = cx, ty = cy;
   if (!any_swing) shift_.window_target(t, cx, cy, tx, ty);
-  // Never beyond the reach kept for it (the walk and crawl stay within it,
-  // test/gait; a switch from another gait mid-stride may ask for more).
+  // Never beyond the reach kept for it (a gait switch mid-stride may ask more).
   const S b = cfg_.shift_budget_mm;
   shift_.step_toward(clamp(tx, -b, b), clamp(ty, -b, b), max_step);
 }
@@ -95,9 +93,8 @@ void GaitEngine<S, kLegs, kSearch>::update_margin() const {
   margin_ = support().margin(foot_, cx, cy);
 }
 
-//! The support polygon of the feet down now (stability.h), built when first
-//! needed after a lift-off or touch-down: gaits that do not shift the body
-//! need it only for margin_mm().
+//! The support polygon of the feet down now, built when first needed after a
+//! lift-off or touch-down (gaits without body shift: only for margin_mm()).
 template <typename S, uint8_t kLegs, bool kSearch>
 void GaitEngine<S, kLegs, kSearch>::build_support() const {
   support_.build(foot_, contact_, cfg_.leg_count, cfg_.foot_radius_mm, cfg_.unit_shift);

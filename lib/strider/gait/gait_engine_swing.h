@@ -31,10 +31,8 @@ void GaitEngine<S, kLegs, kSearch>::lift_foot(uint8_t i, bool crossed) {
 template <typename S, uint8_t kLegs, bool kSearch>
 void GaitEngine<S, kLegs, kSearch>::step_swing(S dt) {
   const uint8_t n = cfg_.leg_count;
-  // Touch-down points move at most max_step per tick (command and gait changes).
   const S max_step = cfg_.target_speed_mm_s * dt;
-  // Feet of one swing group (a tripod's three) share their swing phase:
-  // the swing point of the last foot is reused when the phase is the same.
+  // Feet of one swing group (a tripod's three) share their swing point.
   SwingPoint<S> sp{S(0), S(0)};
   uint32_t sp_elapsed = 0;
   S sp_inv = S(0), sp_apex = S(0), sp_lift = S(0);
@@ -57,8 +55,7 @@ void GaitEngine<S, kLegs, kSearch>::step_swing(S dt) {
       sp_lift = sp_apex * sp.w;
       lift_known = true;
     }
-    // A foot that lifted from the ground line (no stance depth) keeps its
-    // height but for the lift: no product for the zero difference.
+    // A foot that lifted from the ground line: no product for its zero dz.
     const S dz = sub_inline(cfg_.home[i].z, w.lift[i].z);
     foot_[i].x = add_inline(w.lift[i].x, sub_inline(w.target[i].x, w.lift[i].x) * sp.u);
     foot_[i].y = add_inline(w.lift[i].y, sub_inline(w.target[i].y, w.lift[i].y) * sp.u);
@@ -68,7 +65,6 @@ void GaitEngine<S, kLegs, kSearch>::step_swing(S dt) {
 
 template <typename S, uint8_t kLegs, bool kSearch>
 void GaitEngine<S, kLegs, kSearch>::settle_target(uint8_t i, S max_step) {
-  // Every tick of a ramp, for every foot in the air.
   S wx, wy;
   touchdown_xy(i, wx, wy);
   swing_.settle(i, wx, wy, max_step);

@@ -50,10 +50,8 @@ void GaitEngine<S, kLegs, kSearch>::start_walking() {
     const S ax = abs(to.vx_mm_s), ay = abs(to.vy_mm_s);
     quarter = ax >= ay ? (to.vx_mm_s >= S(0) ? 0 : 2) : (to.vy_mm_s > S(0) ? 1 : 3);
   }
-  // configure(), set_gait() and the last start loaded the table that
-  // relabel and quarter name: the same one again (the usual start) keeps
-  // its phases and fractions (the duty's conversions cost ~5,000 cycles in
-  // Fixed, in the tick that also starts the ramp and the first swings).
+  // The table loaded already (the usual start) keeps its phases and
+  // fractions (~5,000 cycles in Fixed, in the tick that starts the ramp).
   if (relabel != phases_.relabel || quarter != phases_.quarter) {
     phases_.relabel = relabel;
     phases_.quarter = quarter;
@@ -64,9 +62,8 @@ void GaitEngine<S, kLegs, kSearch>::start_walking() {
   clock_.reset(phases_.start_phase);
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
     pending_[i] = false;
-    // Each foot starts as if it had been down since its last touch-down
-    // in the table (negative for a foot the table has in the air: its
-    // first stance runs to its offset), so none looks overdue.
+    // As if down since its last touch-down in the table (negative for a
+    // foot the table has in the air), so none looks overdue.
     stance_elapsed_[i] =
         int32_t(kPhaseOne - phases_.swing_len) - int32_t(Phase16(phases_.offset[i] - phases_.start_phase));
   }
@@ -77,8 +74,7 @@ void GaitEngine<S, kLegs, kSearch>::start_walking() {
 
 template <typename S, uint8_t kLegs, bool kSearch>
 void GaitEngine<S, kLegs, kSearch>::step_walk(S dt) {
-  // A steady command (the ramp over, the products known) and its landing
-  // stride known: nothing to ramp or place.
+  // A steady command and its landing stride known: nothing to ramp or place.
   if (ramp_.t < S(1) || !ramp_.vel_fresh) ramp_.step(dt);
   if (!ramp_.land_fresh && ramp_.update_landing(phases_.duty, phases_.inv_stance)) invalidate_touchdown();
   typename SpeedRamp<S>::StepCache& sc = ramp_.step_cache;
@@ -86,7 +82,7 @@ void GaitEngine<S, kLegs, kSearch>::step_walk(S dt) {
   // Field by field: avr-gcc copies the whole struct with a byte loop.
   BodyStep<S> step{sc.step.dx_mm, sc.step.dy_mm, sc.step.dyaw, sc.step.cos_yaw, sc.step.sin_yaw};
   // A foot on the ground at the edge of its reach that this step would take
-  // farther out holds the body for this tick (it lifts as soon as it can).
+  // farther out holds the body for this tick.
   held_ = false;
   bool edge[kLegs];  // legs 0 to leg_count - 1, all set here
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) edge[i] = contact_[i] && at_edge(i);
@@ -127,13 +123,11 @@ bool GaitEngine<S, kLegs, kSearch>::step_ground(const BodyStep<S>& step, S dt) {
   const uint32_t delta = Phase16(clock_.now() - clock_.before());
   const uint8_t n = cfg_.leg_count;
   bool changed = false;
-  // Not turning (walking straight): move_ground_point()'s differences, in
-  // place and without its call.
+  // Walking straight: move_ground_point()'s differences in place, no call.
   const bool straight = step.sin_yaw == S(0) && step.cos_yaw == S(1);
   Vec3<S>* foot = foot_;
   int32_t* elapsed = stance_elapsed_;
-  // One pass: a foot landing this tick stays where it lands (the feet on
-  // the ground move on their own, so the order of the legs does not matter).
+  // One pass: a foot landing this tick stays where it lands.
   for (uint8_t i = 0; i < n; ++i, ++foot, ++elapsed) {
     if (!contact_[i]) {
       swing_.elapsed[i] += delta;
@@ -146,7 +140,6 @@ bool GaitEngine<S, kLegs, kSearch>::step_ground(const BodyStep<S>& step, S dt) {
       changed = true;
       continue;
     }
-    // Feet on the ground stay on the ground: they move by the inverse step.
     if (straight) {
       foot->x = sub_inline(foot->x, step.dx_mm);
       foot->y = sub_inline(foot->y, step.dy_mm);
@@ -167,9 +160,8 @@ bool GaitEngine<S, kLegs, kSearch>::step_lift(const bool* edge) {
   for (uint8_t i = 0; i < n; ++i) {
     if (!contact_[i]) continue;
     const bool crossed = clock_.crossed(phases_.offset[i]);
-    // Lift at the offset; or, after a gait change that made a foot miss its
-    // offset, as soon as its stance is a sixteenth of a cycle overdue; or
-    // when the foot reaches the edge of its stride (a command change).
+    // Lift at the offset, when the stance is a sixteenth of a cycle overdue
+    // (a gait change), or at the edge of the stride (a command change).
     if (crossed || stance_elapsed_[i] >= int32_t(kPhaseOne - phases_.swing_len + kPhaseOne / 16) ||
         (edge[i] && at_edge(i)))
       pending_[i] = true;
@@ -178,7 +170,6 @@ bool GaitEngine<S, kLegs, kSearch>::step_lift(const bool* edge) {
       pending_[i] = false;  // home already: this foot stays down
       continue;
     }
-    // Deferred until more than min_support feet are down.
     uint8_t down = 0;
     for (uint8_t k = 0; k < n; ++k)
       if (contact_[k]) ++down;

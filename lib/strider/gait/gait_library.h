@@ -1,9 +1,6 @@
-//! The named gaits (ARCHITECTURE.md "Gaits"): quadrupeds walk, trot, pace,
-//! crawl; hexapods tripod, ripple, wave; and which gaits a model supports.
-//!
-//! Quadruped legs: 0 front left (LF), 1 rear left (LH), 2 rear right (RH),
-//! 3 front right (RF). Hexapod legs: 0 front left, 1 middle left, 2 rear
-//! left, 3 rear right, 4 middle right, 5 front right.
+//! The named gaits: quadrupeds walk, trot, pace, crawl; hexapods tripod,
+//! ripple, wave; and which gaits a model supports. Their sources and
+//! footfall diagrams: docs/gaits.md, "Gait tables".
 #ifndef STRIDER_GAIT_GAIT_LIBRARY_H
 #define STRIDER_GAIT_GAIT_LIBRARY_H
 
@@ -19,12 +16,8 @@
 
 namespace strider {
 
-//! 4-beat walk, seed 003 section 5 (fig. 7b): "right hind leg, left front
-//! leg, right front leg, and left hind leg", one leg at a time. Duty 0.85:
-//! each swing takes 0.15 of the cycle and four-foot windows of 0.10 between
-//! swings give the body time to carry its CoM into the next support
-//! triangle (seed 003 section 3; duty >= 0.75 is the least for one leg at a
-//! time, McGhee and Frank's creeping gait).
+//! 4-beat walk, seed 003 fig. 7b: four-foot windows of 0.10 between the
+//! swings let the body carry its CoM into the next support triangle.
 constexpr GaitTable kGaitWalk STRIDER_GAIT_STORAGE = {"walk", 4, 0.85f, {0.25f, 0.75f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
 
 //! Trot, seed 003 section 4 C: diagonal pairs (LF + RH, LH + RF) alternate.
@@ -33,29 +26,18 @@ constexpr GaitTable kGaitTrot STRIDER_GAIT_STORAGE = {"trot", 4, 0.5f, {0.0f, 0.
 //! Pace, seed 003 section 4 B: lateral pairs (LF + LH, RH + RF) alternate.
 constexpr GaitTable kGaitPace STRIDER_GAIT_STORAGE = {"pace", 4, 0.5f, {0.0f, 0.0f, 0.5f, 0.5f, 0.0f, 0.0f}, false, false};
 
-//! Seed 000 section 3.3's six-step crawl (A stand, B lift one diagonal
-//! pair, C move the body on the other pair, D swap the pairs, E move the
-//! body, F all down). The seed's "lift leg 1 and 3" is the pair LF + RH
-//! (its limbs 1-4 are legs 0-3), which lifts first; the other pair follows
-//! half a cycle later. Duty 2/3: each pair is in the air for a third of the
-//! cycle (B + C, then E and the lift half of D), and the two four-foot
-//! windows of 1/6 (A + F, and the touch-down half of D) let the body move
-//! its CoM from one support diagonal to the other. With two point feet the
-//! support "polygon" is a line: the wide feet (foot_radius_mm in
-//! gait_params.h) make it a strip the CoM can stay in.
+//! Seed 000 section 3.3's six-step crawl: the diagonal pairs alternate, with
+//! four-foot windows of 1/6 between them (docs/gaits.md).
 constexpr GaitTable kGaitCrawl STRIDER_GAIT_STORAGE = {"crawl", 4, 2.0f / 3.0f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
 
-//! Tripod: alternating tripods {front left, rear left, middle right} and
-//! {middle left, rear right, front right}.
+//! Tripod: alternating tripods {0, 2, 4} and {1, 3, 5}.
 constexpr GaitTable kGaitTripod STRIDER_GAIT_STORAGE = {"tripod", 6, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.5f}, false, false};
 
-//! Ripple: a back-to-front wave on each side, the sides half a cycle
-//! apart; two legs in the air at a time, each for a third of the cycle.
+//! Ripple: a back-to-front wave on each side, the sides half a cycle apart.
 constexpr GaitTable kGaitRipple STRIDER_GAIT_STORAGE = {
     "ripple", 6, 2.0f / 3.0f, {2.0f / 3.0f, 1.0f / 3.0f, 0.0f, 0.5f, 5.0f / 6.0f, 1.0f / 6.0f}, false, false};
 
-//! Wave: one leg at a time, rear to front on the left, then rear to front
-//! on the right; five feet always down.
+//! Wave: one leg at a time, rear to front on the left, then on the right.
 constexpr GaitTable kGaitWave STRIDER_GAIT_STORAGE = {
     "wave", 6, 5.0f / 6.0f, {2.0f / 6.0f, 1.0f / 6.0f, 0.0f, 3.0f / 6.0f, 4.0f / 6.0f, 5.0f / 6.0f}, false, false};
 
@@ -81,7 +63,7 @@ struct GaitList {
 namespace gait_library_detail {
 constexpr const GaitTable* kQuadruped[] STRIDER_GAIT_STORAGE = {&kGaitWalk, &kGaitTrot, &kGaitPace, &kGaitCrawl};
 constexpr const GaitTable* kHexapod[] STRIDER_GAIT_STORAGE = {&kGaitTripod, &kGaitRipple, &kGaitWave};
-//! The list (in flash when the tables are) and its length for a leg count.
+//! The list (in flash on the AVR) and its length for a leg count.
 constexpr const GaitTable* const* list_items(uint8_t leg_count) {
   return leg_count == 4 ? kQuadruped : leg_count == 6 ? kHexapod : nullptr;
 }
@@ -107,7 +89,7 @@ constexpr const char* gait_names(uint8_t leg_count) {
 }
 
 //! The gait called `name` with `leg_count` legs into *out (copied out of
-//! flash when the tables are there); false (out untouched) when there is none.
+//! flash on the AVR); false (out untouched) when there is none.
 inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
   if (name == nullptr) return false;
   const GaitTable* const* items = gait_library_detail::list_items(leg_count);
@@ -128,7 +110,6 @@ inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
   return false;
 }
 
-//! The gait called `name` that `model` supports into *out; false when none.
 //! Where gait `name` is in the list of a robot with leg_count legs (the
 //! order of gait_names()); kNoGaitIndex: not there.
 constexpr uint8_t kNoGaitIndex = 0xFF;
@@ -152,13 +133,10 @@ inline bool load_gait(const RobotModel& model, const char* name, GaitTable* out)
 }
 
 #if !defined(__AVR__)
-//! The gaits for a body with `leg_count` legs (none for other counts).
-constexpr GaitList gaits_for_legs(uint8_t leg_count) {
-  return GaitList{gait_library_detail::list_items(leg_count), gait_library_detail::list_count(leg_count)};
-}
-
 //! The gaits a model supports: every gait of its leg count.
-constexpr GaitList gaits_for(const RobotModel& model) { return gaits_for_legs(model.leg_count); }
+constexpr GaitList gaits_for(const RobotModel& model) {
+  return GaitList{gait_library_detail::list_items(model.leg_count), gait_library_detail::list_count(model.leg_count)};
+}
 
 //! The gait called `name` that `model` supports, or nullptr.
 inline const GaitTable* find_gait(const RobotModel& model, const char* name) {

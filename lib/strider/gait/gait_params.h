@@ -1,10 +1,7 @@
-//! GaitParams: each robot model's gait defaults, in one constexpr table
-//! indexed like robots/all_robots.h (kAllRobots), one entry per robot.
-//!
-//! The robot models describe geometry; how a robot walks is kept here.
-//! Values are chosen for each robot's size and servos and checked by
-//! test/gait (every foot target reachable at these defaults over whole
-//! cycles in every direction). Float, millimetres, seconds, like the models.
+//! GaitParams: each robot model's gait defaults (how it walks; the models
+//! describe geometry), one entry per model in kAllRobots order. Float,
+//! millimetres, seconds; test/gait checks every foot target reachable at
+//! these defaults over whole cycles in every direction.
 #ifndef STRIDER_GAIT_GAIT_PARAMS_H
 #define STRIDER_GAIT_GAIT_PARAMS_H
 
@@ -17,7 +14,7 @@
 
 namespace strider {
 
-//! Longest model name in GaitParams, its terminating zero included.
+//! Longest model name, its terminating zero included.
 constexpr uint8_t kRobotNameBytes = 10;
 
 struct GaitParams {
@@ -43,45 +40,28 @@ struct GaitParams {
 //! read it there through gait_params_at().
 constexpr GaitParams kGaitParams[kRobotCount] STRIDER_PROGMEM = {
     // sprawl8 (seed 000): 20 mm steps clear a cable; 10 mm foot pads are the
-    // seed's "wide ends of the legs" (a rubber cap over the shank's tip).
-    // Seed 000 moves at 155 mm/s and turns 360 deg in 6 s; the crawl here,
-    // at the servo-speed limit, is in docs/gaits.md. Lowers 30 mm to sit.
+    // seed's "wide ends of the legs".
     {"sprawl8", "crawl", SwingShape::kEllipse, 20.0f, 40.0f, 0.8f, 0.0f, 10.0f, 0.0f, 0.0f, 6.0f, 12.0f,
      30.0f, 1.0f},
-    // mammal8 (seed 003): short 30 mm steps of a 140 mm leg under a 1.5 kg
-    // body; the seed's walk is slow (2.5 mm/s measured), so a 2 s cycle.
-    // Planar legs: the body shift can only move along x. The feet are 5 mm
-    // balls, which touch the ground at a point: the support polygon is the
-    // hull of the contact points, not of 5 mm pads, so the 11 mm margin (from
-    // the pads' hull; budget 20 mm) keeps the CoM 6 mm inside the feet. With
-    // 4 mm it sat on the support diagonal and the robot rocked onto its swing
-    // foot. A wider margin is not safer: the shift between a hind and a front
-    // swing crosses twice the margin within the 0.2 s four-foot window, at
-    // up to 0.5-0.8 g with 15 mm, near the feet's friction: they slide. In the
-    // simulator the walk makes 98.5-100 % of 10, 20 and 100 cm with 11 mm,
-    // 93-97 % with 10, 13 or 15 mm (docs/simulator.md).
+    // mammal8 (seed 003): short steps and a 2 s cycle (the seed's walk is
+    // slow). Its 5 mm ball feet touch at a point: the 11 mm margin keeps the
+    // CoM 6 mm inside them; with 4 mm it rocked onto its swing foot, with 13
+    // or 15 mm the faster shift slides the feet (docs/simulator.md).
     {"mammal8", "walk", SwingShape::kEllipse, 20.0f, 30.0f, 2.0f, 0.0f, 5.0f, 0.0f, 0.0f, 11.0f, 20.0f, 40.0f,
      1.5f},
-    // dog12 (seed 001): a 557 mm leg; seed 001's own path is a rectangle
-    // (section 3.2). 50 mm steps, 120 mm stride, 1.2 s cycle.
+    // dog12 (seed 001): seed 001's own swing path is a rectangle (section 3.2).
     {"dog12", "trot", SwingShape::kRectangle, 50.0f, 120.0f, 1.2f, 0.0f, 15.0f, 0.0f, 0.0f, 10.0f, 40.0f,
      100.0f, 2.0f},
-    // hexapod18 (seed 002): 30 mm steps, 60 mm stride, tripod at 1 Hz.
     {"hexapod18", "tripod", SwingShape::kCycloid, 30.0f, 60.0f, 1.0f, 0.0f, 5.0f, 0.0f, 0.0f, 10.0f, 0.0f,
      50.0f, 1.5f},
-    // spider12 (seed 004): the MG90S spider; 20 mm steps, 40 mm stride.
     {"spider12", "walk", SwingShape::kEllipse, 20.0f, 40.0f, 1.2f, 0.0f, 4.0f, 0.0f, 0.0f, 4.0f, 20.0f, 30.0f,
      1.0f},
 };
 
 namespace gait_params_detail {
-constexpr bool same(const char* a, const char* b) {
-  while (*a != '\0' && *a == *b) ++a, ++b;
-  return *a == *b;
-}
 constexpr bool matches_models() {
   for (uint8_t i = 0; i < kRobotCount; ++i)
-    if (!same(kGaitParams[i].robot, kAllRobots[i]->name)) return false;
+    if (!model_checks::same_name(kGaitParams[i].robot, kAllRobots[i]->name)) return false;
   return true;
 }
 constexpr bool values_sane() {

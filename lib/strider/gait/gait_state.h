@@ -18,9 +18,8 @@ enum class GaitState : uint8_t {
   kSittingDown = 5  //!< lowering the body
 };
 
-//! The states' names in GaitState's order, each ended by a NUL: the one
-//! list that to_string() and the firmware's replies (robot_app.h) read. In
-//! flash on the AVR (flash_u8()).
+//! The states' names in GaitState's order, each ended by a NUL (in flash on
+//! the AVR): what to_string() and the firmware's replies read.
 constexpr char kGaitStateNames[] STRIDER_PROGMEM = "sitting\0standing_up\0standing\0walking\0stopping\0sitting_down";
 constexpr uint8_t kGaitStateCount = 6;
 

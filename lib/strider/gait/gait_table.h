@@ -1,17 +1,9 @@
 //! GaitTable: a gait as data. Each leg lifts off once per cycle at its
-//! phase offset and stays in the air for (1 - duty) of the cycle; the rest
-//! of the cycle it supports the body (stance).
-//!
-//! Phase convention: the cycle phase runs over [0, 1); leg i's own phase is
+//! phase offset and stays in the air for (1 - duty) of the cycle. Phase
+//! convention: the cycle phase runs over [0, 1); leg i's own phase is
 //! psi_i = frac(phase - offset_i), so the leg is in swing for
-//! psi_i in [0, 1 - duty) and in stance for psi_i in [1 - duty, 1). A
-//! footfall diagram is therefore read off directly: leg i's bar is blank
-//! from offset_i to offset_i + 1 - duty.
-//!
-//! Legs are numbered as in robots/robot_model.h: counter-clockwise seen from
-//! above, starting at the front left leg (quadrupeds 0 front left, 1 rear
-//! left, 2 rear right, 3 front right; hexapods 0 front left, 1 middle left,
-//! 2 rear left, 3 rear right, 4 middle right, 5 front right).
+//! psi_i in [0, 1 - duty) and in stance for psi_i in [1 - duty, 1). Legs
+//! are numbered as the models number them (docs/robots.md).
 #ifndef STRIDER_GAIT_GAIT_TABLE_H
 #define STRIDER_GAIT_GAIT_TABLE_H
 
@@ -32,8 +24,7 @@ struct GaitTable {
   float duty;                //!< fraction of the cycle each foot is on the ground, (0, 1)
   float offset[kMaxLegs];    //!< lift-off phase of each leg, [0, 1); unused slots 0
   //! Statically stable gait: the engine shifts the body so that the CoM stays
-  //! inside the support polygon (seed 003 section 3). Needs swing groups that
-  //! never overlap and a four-foot window between them.
+  //! inside the support polygon (needs swings_separated()).
   bool shift_body;
   //! The leg sequence is meant relative to the direction of travel (seed 000
   //! section 3.3): for sideways or backward walking the engine relabels legs.
@@ -97,12 +88,9 @@ constexpr bool swings_separated(const GaitTable& t, uint16_t samples = 960) {
 }
 
 //! The table with the leg roles turned by `quarter_turns` x 90 deg
-//! counter-clockwise (4 legs only; 6-leg tables come back unchanged): the
-//! sequence meant for walking forward, used for walking in the direction
-//! quarter_turns x 90 deg to the left of forward. Leg i takes the offset of
-//! leg (i - quarter_turns) mod 4. Walking right (quarter_turns = -1) gives
-//! seed 000 section 3.3's "limb 4 will be 1, 3 will be 4, 2 will be 3 and 1
-//! will be 2" (its limbs 1-4 are legs 0-3).
+//! counter-clockwise, for walking that far left of forward (4 legs only):
+//! leg i takes the offset of leg (i - quarter_turns) mod 4 (seed 000
+//! section 3.3's direction change, docs/gaits.md).
 constexpr GaitTable relabeled(const GaitTable& t, int8_t quarter_turns) {
   if (t.leg_count != 4) return t;
   GaitTable r = t;

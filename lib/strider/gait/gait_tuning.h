@@ -1,15 +1,10 @@
 //! GaitTuning: the gait parameters a user changes live over the link
 //! (`set step_height|step_length|cycle|duty|swing V`, docs/protocol.md), in
-//! the protocol's integer units, and the rules that bound them. Integers
-//! only: the firmware checks and converts them without soft float.
-//!
-//! What bounds them is what the walker was built for. The stored velocity
-//! limits (velocity_limit_table.h) give every leg's longest stride for the
-//! model's own swing shape and step height: a lower step, or a shape whose
-//! path stays under the model's own everywhere, keeps every swing inside the
-//! reach they were searched with; a higher one might not. A duty must keep
-//! at least as many feet down as the gait's own table, and the gaits that
-//! shift the body need a moment with every foot down between two swings.
+//! the protocol's integer units (no soft float in the firmware), and the
+//! rules that bound them: a step no higher and a swing path no higher than
+//! the model's own (the stored strides were searched with them), a duty
+//! that keeps as many feet down as the gait's table, and separated swings
+//! for the gaits that shift the body.
 #ifndef STRIDER_GAIT_GAIT_TUNING_H
 #define STRIDER_GAIT_GAIT_TUNING_H
 
@@ -51,11 +46,6 @@ constexpr int32_t kMinCycleCs = 20;          //!< 0.2 s
 constexpr int32_t kMaxCycleCs = 500;         //!< 5 s
 constexpr int32_t kMaxDutyPct = 95;          //!< a swing of at least a twentieth of the cycle
 
-namespace gait_tuning_detail {
-//! A duty [0.01] as a phase span of the swing: round((1 - duty) 2^16).
-constexpr uint32_t swing_span_of(uint8_t duty_pct) { return (uint32_t(100 - duty_pct) * 65536u + 50u) / 100u; }
-}  // namespace gait_tuning_detail
-
 //! Phases this close [2^-16 of a cycle] are the same moment: the tables'
 //! fractions (sixths, thirds) rounded to 2^-16 differ by a unit or two.
 constexpr uint32_t kPhaseSlack = 2;
@@ -71,9 +61,8 @@ struct LiftPhases {
 };
 
 //! The fewest feet on the ground over a cycle of a gait lifting at `p`
-//! with a swing of `swing` [2^-16 of a cycle]: counted just after each
-//! lift-off, where the count is lowest. A foot that lands as another lifts
-//! counts as down.
+//! with a swing of `swing` [2^-16 of a cycle], counted just after each
+//! lift-off (a foot that lands as another lifts counts as down).
 inline uint8_t fewest_feet_down(const LiftPhases& p, uint32_t swing) {
   uint8_t fewest = p.count;
   for (uint8_t j = 0; j < p.count; ++j) {
@@ -102,7 +91,7 @@ inline bool swings_apart(const LiftPhases& p, uint32_t swing) {
 namespace gait_tuning_detail {
 inline bool duty_allowed(const GaitTable& t, const LiftPhases& p, uint8_t own_down, uint8_t duty_pct) {
   if (duty_pct == 0 || duty_pct > kMaxDutyPct) return false;
-  const uint32_t swing = swing_span_of(duty_pct);
+  const uint32_t swing = (uint32_t(100 - duty_pct) * 65536u + 50u) / 100u;  // round((1 - duty) 2^16)
   if (fewest_feet_down(p, swing) < own_down) return false;
   return !t.shift_body || swings_apart(p, swing);
 }
@@ -126,30 +115,20 @@ inline TuneRange duty_range(const GaitTable& t) {
   return TuneRange{lo, kMaxDutyPct};
 }
 
-//! t's duty in hundredths, rounded up (a sixth more than 0.83 is 0.84: as
-//! many feet down as the table's own) but for the table's float rounding
-//! (integer conversion of the table's float).
+//! t's duty in hundredths, rounded up (a sixth is 0.84: as many feet down as
+//! the table's own) but for the table's float rounding.
 inline uint8_t duty_pct_of(const GaitTable& t) {
   return uint8_t((table_fraction::q16(t.duty) * 100u + 65536u - 100u) >> 16);
 }
 
 //! The swing shapes whose path never rises above shape `own`'s at the same
-//! horizontal progress, at the same step height (bit = SwingShape), each
-//! its own included. test/gait checks the table against the shapes' paths
-//! (swing_trajectory.h), sampled densely.
-//! A semicircle's apex is between half the step height and all of it
-//! (swing_apex_mm()): under the others as its highest, as their bound as
-//! its lowest. The Bezier overshoots behind the lift-off point, where no
-//! other path goes.
-//!   rectangle: all but the Bezier; semicircle: itself; ellipse: the
-//!   semicircle, itself, cycloid, parabola; cycloid: itself, parabola;
-//!   parabola: itself; bezier: itself.
+//! horizontal progress and step height (bit = SwingShape, its own included;
+//! a semicircle counted at its highest under the others, at its lowest as
+//! their bound); test/gait checks it against the shapes' paths.
 constexpr uint8_t kSwingsWithin[kSwingShapeCount] STRIDER_PROGMEM = {0x1F, 0x02, 0x1E, 0x18, 0x10, 0x20};
 inline uint8_t swings_within(SwingShape own) { return flash_u8(&kSwingsWithin[uint8_t(own)]); }
 
-//! Whether every value is within its range and the shape allowed.
-//! `step_height_max` and `own_shape` are the model's defaults, `length_max`
-//! the longest stride a leg makes, `cycle_min` what the servos allow.
+//! The ranges of the parameters for one model and gait.
 struct TuneBounds {
   TuneRange step_height;
   TuneRange step_length;

@@ -1,18 +1,10 @@
 //! What the walker reports per leg each tick (LegResult): the joints, the
 //! status and the contact, and for host tools (a profile's kFeet) the
-//! target, the foot reached, the IK's own status and the clamp:
-//! - the foot target in the body frame after the body pose [mm];
-//! - what it had to clamp: a 2-DOF leg's target is first moved onto the
-//!   leg's reachable set (reach_projection.h) and clamp_mm says by how much;
-//! - the joints [rad] from IK of that target, and the IK's own status (never
-//!   hidden: kUnreachable keeps the previous joints and says so);
-//! - status = the worse of the IK status and kClamped when the projection
-//!   moved a foot on the ground by more than kClampToleranceMm (the foot
-//!   slides: a sprawling leg moving along its own direction, a planar leg
-//!   asked to move sideways) or moved a foot in the air up or down. A 2-DOF
-//!   foot in the air only keeps its height and direction: its reach follows
-//!   from its joints (a sprawling leg's foot swings outward as the knee lifts
-//!   it, seed 000 section 2.4), which is not reported as a clamp.
+//! target, the foot reached, the IK's own status and the clamp (how far
+//! reach_projection.h moved a 2-DOF leg's target). status is the worse of
+//! the IK status and kClamped when the projection moved a foot on the ground
+//! by more than kClampToleranceMm or a foot in the air up or down
+//! (docs/gaits.md, "2-DOF legs").
 #ifndef STRIDER_GAIT_LEG_RESULT_H
 #define STRIDER_GAIT_LEG_RESULT_H
 

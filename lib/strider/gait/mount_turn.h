@@ -1,10 +1,7 @@
 //! A leg mount's transforms with fewer products for the usual mounts (the
-//! walker's per-leg body <-> leg frame): turned by 0 degrees (the
-//! quadrupeds) or +-90 (a hexapod's middle legs) none, products by 0 and 1
-//! being exact (float's cos 90 deg, 4e-8, taken as 0); by +-45 or +-135
-//! degrees (cos = +-sin) two instead of four, within a rounding step of
-//! LegMount's (test/gait; float's cos 45 deg stands for both when its sine
-//! differs in the last bit).
+//! walker's per-leg body <-> leg frame): none when turned by 0 or +-90
+//! degrees (float's cos 90 deg, 4e-8, taken as 0), two instead of four by
+//! +-45 or +-135 degrees (cos = +-sin), within a rounding step of LegMount's.
 #ifndef STRIDER_GAIT_MOUNT_TURN_H
 #define STRIDER_GAIT_MOUNT_TURN_H
 
@@ -28,14 +25,12 @@ MountTurn mount_turn_of(const LegMount<S>& m) {
   return MountTurn::kTurned;
 }
 
-//! A body-frame point in the frame of the leg at m (turned by `turn`).
-//! Inline: the tick's one call site would pay ~100 cycles per leg for the
-//! call, its register saves and the returned vector.
+//! A body-frame point in the frame of the leg at m (turned by `turn`);
+//! inline: a call costs ~100 cycles per leg.
 template <typename S>
 STRIDER_ALWAYS_INLINE Vec3<S> to_leg_turned(MountTurn turn, const LegMount<S>& m, const Vec3<S>& p) {
   if (turn == MountTurn::kTurned) return m.body_to_leg(p);
-  // Scalars, not a Vec3 difference (an out-of-line call on the AVR), and
-  // Fixed's sums in place (add_inline).
+  // Scalars, not a Vec3 difference (an out-of-line call on the AVR).
   const S dx = sub_inline(p.x, m.origin_mm.x), dy = sub_inline(p.y, m.origin_mm.y), dz = sub_inline(p.z, m.origin_mm.z);
   switch (turn) {
     case MountTurn::kStraight: return Vec3<S>(dx, dy, dz);

@@ -1,12 +1,7 @@
 //! Move: walk a given distance or turn a given angle and stop there (seed
-//! 003 section 5: runs of 10, 20, 100 and 200 cm; seed 000's buttons).
-//!
-//! The move commands a velocity, integrates the body's odometry (the
-//! engine's: exact for feet that do not slip, since stance feet reproduce the
-//! command) and sets the command to zero as soon as the remaining distance
-//! is no more than what the ramp down will still cover
-//! (GaitEngine::stopping_distance_mm): the robot then stops on all feet at
-//! the target, within the travel of one tick.
+//! 003 section 5): it commands a velocity, follows the engine's odometry and
+//! sets the command to zero as soon as the rest is what the ramp down still
+//! covers (GaitEngine::stopping_distance_mm).
 #ifndef STRIDER_GAIT_MOVE_H
 #define STRIDER_GAIT_MOVE_H
 

@@ -22,7 +22,6 @@ struct Odometry {
     dx = dy = wx = wy = S(0);
   }
 
-  //! Inline in the walking tick (its one caller).
   STRIDER_ALWAYS_INLINE void add(const BodyStep<S>& step) {
     if (!(step.dyaw == S(0) && step.dx_mm == dx && step.dy_mm == dy)) {
       dx = step.dx_mm;
@@ -30,7 +29,6 @@ struct Odometry {
       wx = c * step.dx_mm - s * step.dy_mm;
       wy = s * step.dx_mm + c * step.dy_mm;
     }
-    // Sums in place (scalar.h's add_inline: the same bits as operator+).
     x = add_inline(x, wx);
     y = add_inline(y, wy);
     yaw = add_inline(yaw, step.dyaw);

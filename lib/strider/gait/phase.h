@@ -1,10 +1,7 @@
-//! The gait's phase clock: a fraction of a cycle in unsigned integers, so
-//! that wrapping around at the end of a cycle is free and exact, the same on
-//! the host and the AVR, and the same for float and Fixed.
-//!
-//! The clock keeps 32 bits (2^32 = one cycle); legs and tables use the top
-//! 16 bits (Phase16, 2^16 = one cycle, a resolution of 1.5e-5 cycle). A leg's
-//! own phase is a plain uint16_t subtraction: psi = phase - offset (mod 2^16).
+//! The gait's phase clock: a fraction of a cycle in unsigned integers (the
+//! wrap at the end of a cycle free and exact, the same on the host and the
+//! AVR, for float and Fixed): 32 bits in the clock, the top 16 (Phase16) in
+//! legs and tables; a leg's own phase is phase - offset (mod 2^16).
 #ifndef STRIDER_GAIT_PHASE_H
 #define STRIDER_GAIT_PHASE_H
 
@@ -33,10 +30,9 @@ constexpr uint32_t phase_span(double fraction) {
   return fraction <= 0.0 ? 0u : fraction >= 1.0 ? kPhaseOne : uint32_t(fraction * 65536.0 + 0.5);
 }
 
-//! A gait table's fractions (float duty and offsets, gait_table.h) in the
-//! engine's units from the float's bits: integers only (the AVR's firmware
-//! links no float library for them), and the same results as phase16(),
-//! phase_span() and Fixed's rounding of the double values (test/gait).
+//! A gait table's fractions (float duty and offsets) in the engine's units
+//! from the float's bits: integers only (no float library on the AVR), the
+//! same results as phase16(), phase_span() and Fixed(double) (test/gait).
 namespace table_fraction {
 
 //! f in [0, 1] (finite, >= 0) as m 2^-sh: m < 2^24, sh >= 23.
@@ -170,9 +166,6 @@ inline uint32_t cycles_to_q32(Fixed cycles) {
 class PhaseClock {
  public:
   PhaseClock() : phase_(0), previous_(0) {}
-  //! The current phase [2^-32 cycle].
-  uint32_t raw() const { return phase_; }
-  //! The current phase as Phase16.
   Phase16 now() const { return Phase16(phase_ >> 16); }
   //! The phase before the last advance().
   Phase16 before() const { return Phase16(previous_ >> 16); }
@@ -216,9 +209,6 @@ class PhaseClock {
   uint32_t phase_;
   uint32_t previous_;
 };
-
-//! A leg's own phase: psi = phase - offset (mod one cycle).
-constexpr Phase16 leg_phase(Phase16 phase, Phase16 offset) { return Phase16(phase - offset); }
 
 }  // namespace strider
 

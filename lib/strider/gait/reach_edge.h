@@ -1,9 +1,7 @@
 //! ReachEdge: whether a foot is at the edge of its reach, beyond kEdgeShare
-//! of the longest stride its leg may make in its direction from home
-//! (velocity limits; the IK limit is at 0.5 / kStrideShare = 0.556): a foot
-//! on the ground there lifts early, or, without the support to lift, holds
-//! the body still. Never while the command is steady (the plan keeps
-//! strides within the limits).
+//! of the longest stride its leg may make in its direction from home (the
+//! IK limit is at 0.556): a foot on the ground there lifts early, or holds
+//! the body still (docs/gaits.md, "Starting, stopping and transitions").
 #ifndef STRIDER_GAIT_REACH_EDGE_H
 #define STRIDER_GAIT_REACH_EDGE_H
 
@@ -21,8 +19,7 @@ struct ReachEdge {
 
   template <bool kSearch>
   void configure(const GaitConfig<S, kLegs, kSearch>& cfg) {
-    // kEdgeShare of the shortest stride (2 edge_mm), 1 % less for rounding,
-    // squared in working units.
+    // kEdgeShare of the shortest stride (2 edge_mm), 1 % less for rounding.
     constexpr S share = scalar<S>(kEdgeShare * 2.0 * 0.99);
     for (uint8_t i = 0; i < cfg.leg_count; ++i) {
       const S r = units::to_unit(cfg.edge_mm[i] * share, cfg.unit_shift);
@@ -43,8 +40,7 @@ struct ReachEdge {
   //! stride's diamond: apart, so that the usual answer costs no call.
   template <bool kSearch>
   STRIDER_NOINLINE bool beyond_diamond(const GaitConfig<S, kLegs, kSearch>& cfg, uint8_t i, S dx, S dy) const {
-    // Inside the shortest stride's circle (a little smaller, for rounding):
-    // two products instead of the atan2, the square root and the lookup.
+    // Inside the shortest stride's circle: two products, no atan2 or root.
     const S ux = units::to_unit(dx, cfg.unit_shift), uy = units::to_unit(dy, cfg.unit_shift);
     if (ux * ux + uy * uy <= r2[i]) return false;
     const S stride = cfg.limits.leg_stride(i, dx, dy);

@@ -1,25 +1,9 @@
 //! Where a 2-DOF leg can put its foot while walking: the projection of a foot
-//! target onto the leg's reachable set, and how far it had to be moved.
-//!
-//! A 2-DOF leg reaches a surface, not a volume, so a gait's target (a point
-//! on a straight stance line, or on a swing arc) is generally off it. The
-//! walker projects every target onto the surface before IK and reports the
-//! distance it moved the target (what was clamped), instead of letting the
-//! IK clamp silently:
-//! - planar leg (seed 003): the leg moves in its x-z plane; the projection
-//!   drops the sideways component (leg frame y = 0). x and z are kept, so
-//!   walking forward and backward is exact and sideways motion is reported
-//!   in full.
-//! - sprawling leg (seed 000): the foot lies on the torus
-//!   (rho - a1)^2 + z^2 = a2^2 (rho = horizontal distance from the yaw axis).
-//!   The projection keeps the height z (the ground contact) and the direction
-//!   from the hip (hip yaw t1, seed 000 eq 7), and moves the foot along that
-//!   direction to rho = a1 + sqrt(a2^2 - z^2) (knee outward, eq 8's branch):
-//!   on the ground this is a slide of the foot, which is what a sprawling
-//!   robot does when its body moves along a leg (seed 000 section 2.4: the
-//!   leg "will not be able to move straight toward Z axis without affecting
-//!   the X and Y coordinates").
-//! - 3-DOF legs: unchanged.
+//! target onto the leg's reachable surface, and how far it had to be moved
+//! (docs/gaits.md, "2-DOF legs"): a planar leg drops the sideways component;
+//! a sprawling leg keeps the height and the direction from the hip and moves
+//! the foot to rho = a1 + sqrt(a2^2 - z^2) (seed 000 eq 8); 3-DOF legs are
+//! unchanged.
 #ifndef STRIDER_GAIT_REACH_PROJECTION_H
 #define STRIDER_GAIT_REACH_PROJECTION_H
 

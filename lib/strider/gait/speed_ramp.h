@@ -1,7 +1,6 @@
 //! SpeedRamp: the command, its plan (velocity_limits.h) and the ramp to it
-//! in stride per cycle (a foot's travel over a stance then depends on the
-//! phase only): the velocity walked, its body step, and the stride a foot
-//! landing now is placed for.
+//! in stride per cycle: the velocity walked, its body step, and the stride a
+//! foot landing now is placed for (docs/gaits.md, "Starting, stopping").
 #ifndef STRIDER_GAIT_SPEED_RAMP_H
 #define STRIDER_GAIT_SPEED_RAMP_H
 
@@ -45,9 +44,9 @@ struct SpeedRamp {
   bool command_zero() const { return plan.vx_mm_s == S(0) && plan.vy_mm_s == S(0) && plan.wz_rad_s == S(0); }
   bool at_rest() const { return t >= S(1) && vx == S(0) && vy == S(0) && wz == S(0); }
 
-  //! Plans the command and starts the ramp to it. The ramp runs in phase,
-  //! linearly in the stride per cycle and the rate: at least one cycle, and
-  //! no faster than the acceleration limits at the faster of the two rates.
+  //! Plans the command and starts the ramp to it: in phase, linear in the
+  //! stride per cycle and the rate, at least one cycle and within the
+  //! acceleration limits.
   template <uint8_t kL, bool kSr>
   void replan(const GaitConfig<S, kL, kSr>& cfg, S duty, S budget, bool shift_body) {
     plan = cfg.limits.plan(cfg.home, cmd_vx, cmd_vy, cmd_wz, duty, budget, shift_body);
@@ -71,8 +70,7 @@ struct SpeedRamp {
     return max_of(time * max_of(rest_hz, hz), S(1));
   }
 
-  //! A gait change from duty `was` to `duty`: each stance keeps its travel
-  //! (stride x duty): the body slows, or the step rate drops.
+  //! A gait change from duty `was` to `duty`: each stance keeps its travel.
   void keep_travel(S was, S duty) {
     const S r = was / duty;
     now.x = now.x * r;
@@ -96,11 +94,9 @@ struct SpeedRamp {
       land_fresh = false;
     }
     if (vel_fresh) return;  // a steady command: the products of the last tick hold
-    // Products into locals first, then the stores: written member by member,
-    // avr-gcc 5.4 -Os clobbered the address register between two of them.
+    // Products into locals, then the stores (member by member, avr-gcc 5.4
+    // clobbered the address register); a zero part needs no product.
     const S rate = now.hz;
-    // A zero part (a straight or forward walk's) needs no product: the
-    // rate is positive, so the product would be that zero, its sign included.
     const S x = now.x * rate;
     const S y = now.y == S(0) ? now.y : now.y * rate;
     const S yaw = now.yaw == S(0) ? now.yaw : now.yaw * rate;
@@ -115,7 +111,6 @@ struct SpeedRamp {
   //! The mean stride per cycle over the next stance (duty cycles) along the
   //! ramp, which a foot landing now is placed for; true when it changed.
   bool update_landing(S duty, S inv_stance) {
-    // The old stride's three parts, not the whole Stride (a byte loop).
     const S was_x = land.x, was_y = land.y, was_yaw = land.yaw;
     if (t >= S(1)) {
       land = now;
@@ -131,9 +126,8 @@ struct SpeedRamp {
     return !(land.x == was_x && land.y == was_y && land.yaw == was_yaw);
   }
 
-  //! out = from + (to - from) t, field by field into place (a returned
-  //! Stride is copied with a byte loop by avr-gcc, twice per ramp tick):
-  //! the four parts (x, y, yaw, hz) at their byte offsets (no padding).
+  //! out = from + (to - from) t, the four parts at their byte offsets into
+  //! place (avr-gcc copies a returned Stride with a byte loop).
   STRIDER_NOINLINE void mix_into(Stride<S>& out, S at) const {
     const unsigned char* a = reinterpret_cast<const unsigned char*>(&from);
     const unsigned char* b = reinterpret_cast<const unsigned char*>(&to);
@@ -141,8 +135,7 @@ struct SpeedRamp {
     for (uint8_t k = 0; k < 4; ++k, a += sizeof(S), b += sizeof(S), o += sizeof(S))
       *reinterpret_cast<S*>(o) = mix(*reinterpret_cast<const S*>(a), *reinterpret_cast<const S*>(b), at);
   }
-  //! a + (b - a) t; a itself when b has a's bits (a ramp's unchanged parts:
-  //! the yaw of a straight walk, a rate kept), the formula's value then.
+  //! a + (b - a) t; a itself when b has a's bits (the formula's value then).
   STRIDER_ALWAYS_INLINE static S mix(S a, S b, S at) {
     return leg_ik::same_bits(a, b) ? a : add_inline(a, sub_inline(b, a) * at);
   }

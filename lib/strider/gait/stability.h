@@ -1,24 +1,10 @@
 //! Static stability (seed 003 section 3): the support polygon of the feet on
-//! the ground, and the stability margin of the CoM's ground projection.
-//!
-//! Seed 003: a robot is statically stable when its CoM lies inside the
-//! support polygon, "the polygon with the vertices described by the position
-//! of legs in contact with the ground" (fig. 2, eq 11). Feet are not points:
-//! seed 000 section 3.3 relies on "the wide ends of the legs" for support
-//! while two legs are up. So each foot is a disc of radius r (the foot pad,
-//! gait_params.h) and the support region is the convex hull of the discs,
-//! which is the hull of the foot centres grown by r. The margin is the signed
-//! distance from the CoM projection to that region's boundary: positive
-//! inside, negative outside (-(distance to the region)). Two feet down give a
-//! strip of half-width r around their segment; one foot a disc.
-//!
-//! The hull is built once per change of the feet in contact (build()), as
-//! foot indices in counter-clockwise order plus each edge's length: feet on
-//! the ground move rigidly with respect to the body, so neither changes until
-//! the next lift-off or touch-down. Per tick, margin() and constrain() cost a
-//! few products per edge and no division (except constrain() along x only,
-//! one per edge).
-//! Fixed works in units of 2^shift mm so squares of body-sized distances fit.
+//! the ground (the convex hull of foot pads of radius r), and the stability
+//! margin of the CoM's ground projection: its signed distance to the
+//! region's boundary, positive inside (docs/gaits.md, "Static stability").
+//! The hull is built once per change of the feet in contact (feet on the
+//! ground move rigidly with the body); Fixed works in units of 2^shift mm so
+//! squares of body-sized distances fit.
 #ifndef STRIDER_GAIT_STABILITY_H
 #define STRIDER_GAIT_STABILITY_H
 
@@ -81,7 +67,6 @@ class SupportPolygon {
     // s = d (1 - n_{k-1} . n_k) / (n_{k-1} . u_k), a constant of the shape.
     for (uint8_t k = 0; count_ >= 3 && k < count_; ++k) {
       const uint8_t j = k == 0 ? uint8_t(count_ - 1) : uint8_t(k - 1);
-      // The edges again (a difference each) rather than an array of them.
       const Vec3<S> uk = scaled(diff(pu[idx_[next(k)]], pu[idx_[k]]), inv_len_[k]);
       const Vec3<S> uj = scaled(diff(pu[idx_[k]], pu[idx_[j]]), inv_len_[j]);
       const S nn = dot(uj, uk);    // n_j . n_k = u_j . u_k
@@ -93,8 +78,7 @@ class SupportPolygon {
   uint8_t size() const { return count_; }        //!< hull vertices
   uint8_t vertex(uint8_t k) const { return idx_[k]; }  //!< foot index of vertex k (CCW)
 
-  //! The stability margin [mm] of the point (x, y) [mm]: signed distance to
-  //! the boundary of the hull of the contact discs, positive inside.
+  //! The stability margin [mm] of the point (x, y) [mm].
   S margin(const Vec3<S>* feet, S x_mm, S y_mm) const {
     constexpr S none = scalar<S>(kNoSupportMarginMm);
     if (count_ == 0) return none;
@@ -117,13 +101,8 @@ class SupportPolygon {
   }
 
   //! Moves the point (x, y) [mm] to the nearest point whose margin is at
-  //! least want_mm (continuous in the feet and the point). The region: the
-  //! foot-centre polygon shrunk by max(want - r, 0) for 3 or more feet (its
-  //! corners come from corner_ factors cached by build(): no division per
-  //! tick); for two feet, the rectangle between them of half-width r - want
-  //! (inside the strip of their pads); one foot: the foot. With x_only the
-  //! point moves along x only (legs that cannot step sideways), to the
-  //! nearest x the region allows on its line y (the middle if none does).
+  //! least want_mm (region()); with x_only along x only (legs that cannot
+  //! step sideways), to the nearest x the region allows on its line y.
   void constrain(const Vec3<S>* feet, S& x_mm, S& y_mm, S want_mm, bool x_only) const {
     if (count_ == 0) return;
     Vec3<S> v[kLegs], u[kLegs];
@@ -157,10 +136,8 @@ class SupportPolygon {
   uint8_t next(uint8_t k) const { return uint8_t(k + 1) == count_ ? uint8_t(0) : uint8_t(k + 1); }
   Vec3<S> at(const Vec3<S>* feet, uint8_t i) const { return Vec3<S>(unit(feet[i].x), unit(feet[i].y), S(0)); }
   Vec3<S> edge(const Vec3<S>* feet, uint8_t k) const { return diff(at(feet, idx_[next(k)]), at(feet, idx_[k])); }
-  // Vectors in the ground plane (x, y; z is 0): the hull, its region and
-  // the moves into it are made of these few operations, each written once
-  // and called (build() and the region are cold; the rest a few calls per
-  // edge). The same operations in the same order as written out in place.
+  // Vectors in the ground plane (x, y; z is 0), each operation written once
+  // and called (build() and the region are cold; the rest a few calls per edge).
   static STRIDER_NOINLINE Vec3<S> diff(const Vec3<S>& a, const Vec3<S>& b) {
     return Vec3<S>(a.x - b.x, a.y - b.y, S(0));
   }
@@ -168,7 +145,6 @@ class SupportPolygon {
     return Vec3<S>(a.x + b.x, a.y + b.y, S(0));
   }
   static STRIDER_NOINLINE Vec3<S> scaled(const Vec3<S>& a, S k) { return Vec3<S>(a.x * k, a.y * k, S(0)); }
-  //! a + u t.
   static STRIDER_NOINLINE Vec3<S> along(const Vec3<S>& a, const Vec3<S>& u, S t) {
     return Vec3<S>(a.x + u.x * t, a.y + u.y * t, S(0));
   }
@@ -193,7 +169,10 @@ class SupportPolygon {
   }
   //! The region with margin >= want [unit] as a convex polygon, counter-
   //! clockwise: vertices v, unit edge directions u, edge lengths len (a
-  //! negative length: the region is empty there). Returns the vertex count.
+  //! negative length: the region is empty there); the vertex count. 3 or
+  //! more feet: the foot-centre polygon shrunk by max(want - r, 0), by the
+  //! corner_ factors build() caches; two: the rectangle between them of
+  //! half-width r - want; one foot: the foot.
   uint8_t region(const Vec3<S>* feet, S want, Vec3<S>* v, Vec3<S>* u, S* len) const {
     const S r = unit(radius_);
     if (count_ == 1) {
@@ -261,7 +240,6 @@ class SupportPolygon {
     return S(0);
   }
 
-  // Initialised by the constructor.
   uint8_t count_;
   uint8_t idx_[kLegs];
   S inv_len_[kLegs];

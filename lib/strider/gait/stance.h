@@ -1,15 +1,8 @@
 //! Stance: a foot on the ground stays where it is on the ground while the
 //! body moves, so in the body frame it moves by the inverse of the body's
-//! motion; plus the optional stance depth (the foot pressed a little into
-//! the ground mid-stance, as CHAMP does).
-//!
-//! Per tick the body moves at a constant body-frame velocity v [mm/s] while
-//! turning at w_z [rad/s] for dt: it turns by theta = w_z dt and moves by the
-//! arc d = dt (A v + B J v) of its old frame (J: a quarter turn, A =
-//! sin(theta)/theta, B = (1 - cos theta)/theta). A ground point p of the old
-//! body frame is then at p' = Rz(-theta) (p - d) in the new one. theta is
-//! small, so every trigonometric factor comes from its Taylor series (no trig
-//! call per tick): the step is exact to below 1e-7 of its length.
+//! motion (the arc d = dt (A v + B J v), A = sin(theta)/theta, B = (1 - cos
+//! theta)/theta from their series: docs/gaits.md, "Swing trajectories");
+//! plus the optional stance depth, and where a foot touches down.
 #ifndef STRIDER_GAIT_STANCE_H
 #define STRIDER_GAIT_STANCE_H
 
@@ -21,7 +14,6 @@ namespace strider {
 //! power: error below 3e-5 for |a| <= 0.5, below 1e-7 for |a| <= 0.2.
 template <typename S>
 void small_angle_cos_sin(S a, S& c, S& s) {
-  // constexpr: the constants fold at compile time (the AVR has no double).
   constexpr S k2 = scalar<S>(0.5), k3 = scalar<S>(1.0 / 6.0), k4 = scalar<S>(1.0 / 24.0), k5 = scalar<S>(1.0 / 120.0);
   const S a2 = a * a;
   c = S(1) - a2 * (k2 - a2 * k4);
@@ -53,8 +45,7 @@ struct BodyStep {
   //! turning at wz [rad/s] for dt [s]: the arc d = dt (A v + B J v).
   static BodyStep make(S vx, S vy, S wz, S dt) {
     const S th = wz * dt;
-    // Not turning: A = 1, B = 0, cos = 1, sin = th (+-0): the same step
-    // without the series' products.
+    // Not turning: A = 1, B = 0, cos = 1, sin = th (+-0), no products.
     if (wz == S(0)) return BodyStep{vx * dt, vy * dt, th, S(1), th};
     S a, b;
     small_angle_arc(th, a, b);
@@ -74,9 +65,7 @@ struct BodyStep {
 };
 
 //! How far a stance foot sits below the ground line at stance phase
-//! sigma in [0, 1] [mm]: depth 4 sigma (1 - sigma), zero at touch-down and
-//! lift-off so the foot path stays continuous (CHAMP uses a cosine arc; a
-//! parabola costs no trig).
+//! sigma in [0, 1] [mm]: depth 4 sigma (1 - sigma), zero at both ends.
 template <typename S>
 S stance_sink_mm(S depth_mm, S sigma) {
   if (depth_mm == S(0)) return S(0);
@@ -84,12 +73,9 @@ S stance_sink_mm(S depth_mm, S sigma) {
   return depth_mm * S(4) * sigma * (S(1) - sigma);
 }
 
-//! Where a foot touches down so that its stance is centred on `home` [mm]:
-//! a stance of stance_s [s] at (vx, vy, wz) is a turn by theta = wz stance_s
-//! about the instantaneous centre c = (-vy, vx) / wz, so the foot lands at
-//! home turned about c by theta / 2: Rz(theta/2) home + (I - Rz(theta/2)) c,
-//! and (I - R) c = stance/2 (A v + B J v) with A, B of theta/2 as in
-//! BodyStep (exact for a pure translation, no division by wz).
+//! Where a foot touches down so that its stance of stance_s [s] at (vx, vy,
+//! wz) is centred on `home` [mm]: home turned by half the stance's turn about
+//! the instantaneous centre, without dividing by wz (docs/gaits.md).
 template <typename S>
 Vec3<S> touchdown_point(const Vec3<S>& home, S vx, S vy, S wz, S stance_s) {
   constexpr S kHalf = scalar<S>(0.5);
@@ -103,9 +89,7 @@ Vec3<S> touchdown_point(const Vec3<S>& home, S vx, S vy, S wz, S stance_s) {
 }
 
 //! touchdown_point() for every home at once: the offset (dx, dy) and the
-//! rotation (c, s) with touchdown_point(h) = (c h.x - s h.y + dx,
-//! s h.x + c h.y + dy, h.z), from the points of a home at the origin and at
-//! (1, 0) [mm].
+//! rotation (c, s), from the points of homes at the origin and at (1, 0).
 template <typename S>
 void touchdown_frame(S vx, S vy, S wz, S stance_s, S& dx, S& dy, S& c, S& s) {
   const Vec3<S> o = touchdown_point(Vec3<S>(), vx, vy, wz, stance_s);
@@ -115,11 +99,8 @@ void touchdown_frame(S vx, S vy, S wz, S stance_s, S& dx, S& dy, S& c, S& s) {
   c = e.x - o.x;
   s = e.y - o.y;
 }
-//! Fixed: the same bits without the two points. Its products by 0 and 1
-//! and its sums with 0 are exact, and (c + dx) - dx is c while c + dx does
-//! not saturate (offsets below 32,000 mm), so the series' c and s are the
-//! rotation and the origin's point the offset.
-//! test/gait's Stance.FixedTouchdownFrameIsTheTwoPoints checks it bit for bit.
+//! Fixed: the same bits without the two points (its products by 0 and 1 and
+//! sums with 0 are exact; test/gait checks it bit for bit).
 inline void touchdown_frame(Fixed vx, Fixed vy, Fixed wz, Fixed stance_s, Fixed& dx, Fixed& dy, Fixed& c, Fixed& s) {
   constexpr Fixed kHalf = scalar<Fixed>(0.5);
   const Fixed half = stance_s * kHalf;

@@ -1,7 +1,6 @@
-//! SwingFeet: the feet in the air, each on the swing it lifted with (its
-//! length, shape and apex; gait and parameter changes apply to the next
-//! lift), from where it lifted toward a touch-down point that moves at a
-//! limited speed when the landing stride changes.
+//! SwingFeet: the feet in the air, each on the swing it lifted with (gait
+//! and parameter changes apply to the next lift), toward a touch-down point
+//! that moves at a limited speed when the landing stride changes.
 #ifndef STRIDER_GAIT_SWING_FEET_H
 #define STRIDER_GAIT_SWING_FEET_H
 
@@ -27,8 +26,7 @@ struct SwingFeet {
     for (uint8_t i = 0; i < kLegs; ++i) settled[i] = false;
   }
 
-  //! Moves foot i's target toward (wx, wy) by at most max_step (x and y in
-  //! place, sums in place: scalar.h, the same bits as the operators).
+  //! Moves foot i's target toward (wx, wy) by at most max_step.
   STRIDER_ALWAYS_INLINE void settle(uint8_t i, S wx, S wy, S max_step) {
     Vec3<S>& t = target[i];
     const S lo = neg_inline(max_step);

@@ -1,29 +1,8 @@
 //! Swing trajectories: where a foot is while it is in the air, as a function
-//! of its swing phase s in [0, 1] (0 lift-off, 1 touch-down).
-//!
-//! Every shape is a pair (u(s), w(s)): u is the fraction of the way from the
-//! lift-off point to the touch-down point (along the straight line between
-//! them, seen from above), w the height above the ground as a fraction of the
-//! apex height. Every shape has u(0) = w(0) = 0, u(1) = 1, w(1) = 0, so the
-//! foot path is continuous at lift-off and touch-down, and max w = 1.
-//!
-//! | shape | u(s) | w(s) | apex |
-//! |---|---|---|---|
-//! | rectangle (seed 001 s. 3.2) | 0, 3s - 1, 1 on thirds | 3s, 1, 3 - 3s | h |
-//! | semicircle | (1 - cos pi s) / 2 | sin pi s | clamp(L/2, h/2, h) |
-//! | ellipse | (1 - cos pi s) / 2 | sin pi s | h |
-//! | cycloid | s - sin(2 pi s) / (2 pi) | (1 - cos 2 pi s) / 2 | h |
-//! | parabola | s | 4 s (1 - s) | h |
-//! | bezier (CHAMP, 12 points) | table | table | h |
-//!
-//! (h = step height, L = step length.) The semicircle is the foot turning at a
-//! constant rate on a circle of diameter L: exact when h/2 <= L/2 <= h; the
-//! apex is kept within [h/2, h] so a short step still clears the ground and a
-//! long one does not lift higher than asked (an ellipse then). The cycloid
-//! starts and ends with zero velocity. The 12-point Bezier swings back before
-//! it moves forward and overshoots the touch-down point (u from -0.18 to
-//! 1.15), like CHAMP's; it is tabulated at 65 phases and interpolated
-//! linearly (bezier_table.h, error below 0.004 of the step).
+//! of its swing phase s in [0, 1] (0 lift-off, 1 touch-down): u the fraction
+//! of the way from the lift-off point to the touch-down point (seen from
+//! above), w the height as a fraction of the apex. The shapes' formulas and
+//! apexes: docs/gaits.md, "Swing trajectories".
 #ifndef STRIDER_GAIT_SWING_TRAJECTORY_H
 #define STRIDER_GAIT_SWING_TRAJECTORY_H
 
@@ -37,10 +16,10 @@ namespace strider {
 
 enum class SwingShape : uint8_t {
   kRectangle = 0,   //!< lift, carry, lower (seed 001 section 3.2)
-  kSemicircle = 1,  //!< circle of diameter L (seed 001 future work)
-  kEllipse = 2,     //!< semi-axes L/2 and h (seed 001 future work)
-  kCycloid = 3,     //!< zero speed at both ends (seed 001 future work)
-  kParabola = 4,    //!< seed 001 future work
+  kSemicircle = 1,  //!< circle of diameter L
+  kEllipse = 2,     //!< semi-axes L/2 and h
+  kCycloid = 3,     //!< zero speed at both ends
+  kParabola = 4,
   kBezier = 5       //!< 12-point Bezier, CHAMP's control points
 };
 

@@ -15,11 +15,9 @@ struct Touchdown {
   S cos_yaw = S(1), sin_yaw, dx, dy;
 
   //! x and y of the point where the foot of `home` lands for stride `land`
-  //! (z is home's): into place, no point returned and copied. Inline in its
-  //! two callers: the straight case is two sums, the rest out of line.
+  //! (z is home's), into place; inline: the straight case is two sums.
   STRIDER_ALWAYS_INLINE void xy(const Vec3<S>& home, const Stride<S>& land, S duty, S& x, S& y) {
     if (!fresh) refresh(land, duty);
-    // Sums in place (scalar.h's add_inline: the same bits as operator+).
     if (sin_yaw == S(0) && cos_yaw == S(1)) {
       x = add_inline(home.x, dx);
       y = add_inline(home.y, dy);
@@ -28,9 +26,8 @@ struct Touchdown {
     }
   }
 
-  //! The terms: the point is centred on home for the travel of the coming
-  //! stance (duty cycles, stride-per-cycle units). Out of line: the
-  //! straight path's registers and member addresses stay few.
+  //! The terms for the travel of the coming stance (duty cycles); out of
+  //! line: the straight path's registers stay few.
   STRIDER_NOINLINE void refresh(const Stride<S>& land, S duty) {
     if (land.yaw == S(0)) {
       // Not turning: touchdown_point() is home + the stride x duty / 2.

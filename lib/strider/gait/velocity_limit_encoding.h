@@ -1,8 +1,6 @@
-//! How the generated velocity-limit table (velocity_limit_table.h) stores
-//! its numbers, and how VelocityLimits keeps its strides in RAM: 16-bit
-//! words that convert to float and Fixed without a division. Strides in
-//! 1/32 mm (0.03 mm, far below the search's 0.5 mm; up to 2047 mm), servo
-//! figures in Q16.16.
+//! How the generated velocity-limit table and VelocityLimits store their
+//! numbers: 16-bit words that convert to float and Fixed without a
+//! division. Strides in 1/32 mm (up to 2047 mm), servo figures in Q16.16.
 #ifndef STRIDER_GAIT_VELOCITY_LIMIT_ENCODING_H
 #define STRIDER_GAIT_VELOCITY_LIMIT_ENCODING_H
 
@@ -44,10 +42,9 @@ constexpr Fixed stride_of(uint16_t code, Fixed) { return Fixed::from_raw(int32_t
 constexpr float q16_of(uint32_t code, float) { return float(code) * (1.0f / 65536.0f); }
 constexpr Fixed q16_of(uint32_t code, Fixed) { return Fixed::from_raw(int32_t(code)); }
 
-//! mm [mm] in 1/16 mm, rounded half away from zero, as int16_t(mm * 16 +-
-//! 0.5) gives for |mm| < 2048, from the float's bits: no float arithmetic
-//! (library calls on the AVR). Beyond that range the low 16 bits of the
-//! rounded value; NaN and infinities 0.
+//! mm [mm] in 1/16 mm, rounded half away from zero, from the float's bits
+//! (no float arithmetic on the AVR); beyond |mm| < 2048 the low 16 bits,
+//! NaN and infinities 0.
 inline uint16_t sixteenths(float mm) {
   const uint32_t u = detail::float_bits(mm);
   const uint8_t e = uint8_t(u >> 23);  // biased exponent
@@ -66,19 +63,17 @@ inline uint16_t sixteenths(float mm) {
 constexpr uint8_t kFingerprintWords = 8;
 
 //! A model's geometry in a few words (kind, legs, links and the first leg's
-//! mount and standing foot in 1/16 mm): a stored table entry is used only for
-//! a model that matches it, without the firmware having to keep every
-//! built-in model in RAM to compare addresses.
+//! mount and standing foot in 1/16 mm): a stored table entry is used only
+//! for a model that matches it.
 inline void geometry_fingerprint(const RobotModel& m, uint16_t* out) {
-  const auto q16 = [](float mm) { return sixteenths(mm); };
   out[0] = uint16_t(uint8_t(m.kind) | (uint16_t(m.leg_count) << 8));
-  out[1] = q16(m.links.l1_mm);
-  out[2] = q16(m.links.l2_mm);
-  out[3] = q16(m.links.l3_mm);
-  out[4] = q16(m.links.d1_mm);
-  out[5] = q16(m.legs[0].mount_mm.x);
-  out[6] = q16(m.legs[0].stand_mm.x);
-  out[7] = q16(m.legs[0].stand_mm.z);
+  out[1] = sixteenths(m.links.l1_mm);
+  out[2] = sixteenths(m.links.l2_mm);
+  out[3] = sixteenths(m.links.l3_mm);
+  out[4] = sixteenths(m.links.d1_mm);
+  out[5] = sixteenths(m.legs[0].mount_mm.x);
+  out[6] = sixteenths(m.legs[0].stand_mm.x);
+  out[7] = sixteenths(m.legs[0].stand_mm.z);
 }
 
 }  // namespace velocity_limit_encoding

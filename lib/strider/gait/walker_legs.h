@@ -60,10 +60,8 @@ struct MakeIndices<0, I...> {
   using type = Indices<I...>;
 };
 
-//! The walker's legs: an AnyLeg per leg, or (fewer solvers than legs) one
-//! per geometry and each leg's mount and side. constant(): the legs but for
-//! the mounts' cos and sin (mount_trig()); build_legs() refuses a model that
-//! needs more.
+//! The walker's legs (see the file comment). constant(): the legs but for
+//! the mounts' cos and sin (mount_trig()).
 template <typename S, uint8_t kLegs, uint8_t kSolvers, bool kShared = (kSolvers < kLegs)>
 struct LegSolvers {
   static_assert(kSolvers >= 1 && kSolvers <= kLegs, "kSolvers: 1 to kLegs");
@@ -126,9 +124,8 @@ bool build_legs(const RobotModel& model, Legs& legs) {
 
 }  // namespace walker_detail
 
-//! A walker's legs built from a model at compile time (walker_legs()): a
-//! firmware keeps its model's in flash and converts nothing at start-up
-//! (Walker::configure_stored()).
+//! A walker's legs built from a model at compile time (walker_legs()), kept
+//! in a firmware's flash (Walker::configure_stored()).
 template <typename S, uint8_t kLegs = kMaxLegs, uint8_t kSolvers = kLegs>
 struct WalkerLegs {
   walker_detail::LegSolvers<S, kLegs, kSolvers> legs;  // the mounts without their cos and sin

@@ -15,7 +15,6 @@ namespace strider {
 
 constexpr uint8_t kRobotCount = 5;
 
-//! Every model, in the order of docs/robots.md.
 constexpr const RobotModel* kAllRobots[kRobotCount] = {&kSprawl8, &kMammal8, &kDog12, &kHexapod18, &kSpider12};
 
 //! The model called `name`, or nullptr.
@@ -30,12 +29,8 @@ namespace model_checks {
 //! Names are unique (the CLI looks models up by name).
 constexpr bool names_unique() {
   for (uint8_t i = 0; i < kRobotCount; ++i)
-    for (uint8_t k = 0; k < i; ++k) {
-      const char* a = kAllRobots[i]->name;
-      const char* b = kAllRobots[k]->name;
-      while (*a != '\0' && *a == *b) ++a, ++b;
-      if (*a == *b) return false;
-    }
+    for (uint8_t k = 0; k < i; ++k)
+      if (same_name(kAllRobots[i]->name, kAllRobots[k]->name)) return false;
   return true;
 }
 }  // namespace model_checks

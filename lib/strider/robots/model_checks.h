@@ -1,7 +1,6 @@
-//! Compile-time invariants of a RobotModel. Each robot file static_asserts
+//! Compile-time invariants of a RobotModel: each robot file static_asserts
 //! them, so a typo in a model fails the build (host and AVR) instead of a
-//! walk. The run-time checks that need the solvers (standing pose solved
-//! with status ok and margin from the limits) are in test/robots.
+//! walk; what needs the solvers is tested in test/robots.
 #ifndef STRIDER_ROBOTS_MODEL_CHECKS_H
 #define STRIDER_ROBOTS_MODEL_CHECKS_H
 
@@ -45,6 +44,12 @@ constexpr bool sides_consistent(const RobotModel& m) {
 
 constexpr bool near(float a, float b, float tol) { return a - b <= tol && b - a <= tol; }
 
+//! Two names equal (strcmp at compile time).
+constexpr bool same_name(const char* a, const char* b) {
+  while (*a != '\0' && *a == *b) ++a, ++b;
+  return *a == *b;
+}
+
 //! Every leg has a mirror twin across the body's x-z plane: mount (x, -y, z),
 //! yaw -yaw, standing foot (x, -y, z). Legs on the x axis are their own twin.
 constexpr bool mirror_symmetric(const RobotModel& m) {
@@ -69,8 +74,6 @@ constexpr bool mirror_symmetric(const RobotModel& m) {
 //! Legs numbered counter-clockwise seen from above (the mount bearing from
 //! the body centre increases with the index, one turn in all).
 constexpr bool numbered_counter_clockwise(const RobotModel& m) {
-  // Count how often the cross product of consecutive mounts turns clockwise:
-  // a convex counter-clockwise polygon never does.
   for (uint8_t i = 0; i < m.leg_count; ++i) {
     const Vec3<float>& a = m.legs[i].mount_mm;
     const Vec3<float>& b = m.legs[(i + 1) % m.leg_count].mount_mm;
@@ -93,24 +96,21 @@ constexpr bool stand_in_workspace(const RobotModel& m, const LegModel& leg) {
     const double d = sqrt((rho - l.l1_mm) * (rho - l.l1_mm) + double(p.z) * p.z);
     return d - l.l2_mm <= tol && l.l2_mm - d <= tol;
   }
-  double r = 0.0, lo = 0.0, hi = 0.0;
+  double r = 0.0;
   if (m.kind == LegKind::kPlanar) {
     if (p.y > tol || -p.y > tol) return false;  // a planar leg cannot leave its plane
     r = sqrt(double(p.x) * p.x + double(p.z) * p.z);
-    lo = l.l1_mm > l.l2_mm ? l.l1_mm - l.l2_mm : l.l2_mm - l.l1_mm;
-    hi = double(l.l1_mm) + l.l2_mm;
   } else if (m.kind == LegKind::kCoxaFemurTibia) {
     r = sqrt((rho - l.l1_mm) * (rho - l.l1_mm) + (double(p.z) - l.d1_mm) * (double(p.z) - l.d1_mm));
-    lo = l.l2_mm > l.l3_mm ? l.l2_mm - l.l3_mm : l.l3_mm - l.l2_mm;
-    hi = double(l.l2_mm) + l.l3_mm;
   } else {
     const double a2 = double(p.y) * p.y + double(p.z) * p.z;
     if (a2 <= double(l.l1_mm) * l.l1_mm) return false;
     r = sqrt(double(p.x) * p.x + a2 - double(l.l1_mm) * l.l1_mm);
-    lo = l.l2_mm > l.l3_mm ? l.l2_mm - l.l3_mm : l.l3_mm - l.l2_mm;
-    hi = double(l.l2_mm) + l.l3_mm;
   }
-  return r > lo + 1.0 && r < hi - 1.0;  // 1 mm clear of a straight or folded leg
+  // r spans the two links that fold (a1, a2 of a planar leg; else l2, l3).
+  const double a = m.kind == LegKind::kPlanar ? l.l1_mm : l.l2_mm;
+  const double b = m.kind == LegKind::kPlanar ? l.l2_mm : l.l3_mm;
+  return r > (a > b ? a - b : b - a) + 1.0 && r < a + b - 1.0;  // 1 mm clear of a straight or folded leg
 }
 
 constexpr bool stands_in_workspace(const RobotModel& m) {
@@ -128,8 +128,7 @@ constexpr bool unused_slots_empty(const RobotModel& m) {
 
 }  // namespace model_checks
 
-//! All invariants; robot files static_assert each one separately so the
-//! message names the one that failed.
+//! All invariants: each robot file static_asserts them.
 constexpr bool model_valid(const RobotModel& m) {
   return model_checks::links_valid(m) && model_checks::joint_ranges_valid(m) &&
          model_checks::sides_consistent(m) && model_checks::mirror_symmetric(m) &&

@@ -1,18 +1,9 @@
 //! RobotModel: the constant description of one robot (legs, mounts, joint
 //! limits, standing pose, body, servos). Plain constexpr data in float,
 //! millimetres and degrees, shared by the firmware, the tests and the
-//! simulator; kinematics/any_leg.h turns one leg of it into a solver.
-//!
-//! Conventions every model follows:
-//! - body frame: origin at the body centre, x forward, y left, z up;
-//! - a leg frame is its leg type's seed frame (docs/kinematics.md), placed
-//!   by the mount: origin [mm] in the body frame and yaw [deg] about body z;
-//! - joint limits are in the leg type's seed convention [deg];
-//! - legs are numbered counter-clockwise seen from above, starting at the
-//!   front left leg (seed 000 fig. 5 order); indices are 0-based.
-//!
-//! On the AVR a model read with a run-time leg index is copied to RAM
-//! (flash is not data-addressable): build the legs from it once at start-up.
+//! simulator; kinematics/any_leg.h turns one leg of it into a solver. The
+//! conventions every model follows (frames, joint limits, leg numbering):
+//! docs/robots.md, "What a model holds".
 #ifndef STRIDER_ROBOTS_ROBOT_MODEL_H
 #define STRIDER_ROBOTS_ROBOT_MODEL_H
 
@@ -49,15 +40,10 @@ enum class BodySide : uint8_t { kLeft = 0, kRight = 1 };
 
 constexpr const char* to_string(BodySide side) { return side == BodySide::kLeft ? "left" : "right"; }
 
-//! Most legs a model may have, and most joints per leg.
+//! Most legs a model (and a gait table) may have, and most joints per leg;
+//! the walking state holds its build profile's kLegs (build_profile.h).
 constexpr uint8_t kMaxLegs = 6;
 constexpr uint8_t kMaxLegDof = 3;
-
-//! The walking state (walker, gait engine, gait configuration, support
-//! polygon) holds as many legs as its build profile's kLegs
-//! (robots/build_profile.h): kMaxLegs on the host, the model's own count in
-//! a firmware, so that a quadruped's RAM carries no state for two legs it
-//! does not have. Models and gait tables keep kMaxLegs slots.
 
 //! Link lengths of a leg [mm]; the meaning of each slot depends on the kind.
 struct LinkLengths {
@@ -114,8 +100,6 @@ constexpr RobotModel without_leg_names(RobotModel m) {
   for (uint8_t i = 0; i < kMaxLegs; ++i) m.legs[i].name = nullptr;
   return m;
 }
-
-// ---- constexpr helpers for writing models ------------------------------------
 
 namespace model_math {
 

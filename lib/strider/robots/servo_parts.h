@@ -1,14 +1,11 @@
 //! ServoPart: the hobby servos the built-in robots use, with the datasheet
 //! figures a model, a gait planner or the simulator needs.
 //!
-//! Values are the makers' published figures (Tower Pro SG90, MG90S, MG995,
-//! MG996R; Hitec HS-311; DSSERVO product sheets of the DS3235SG (32 kg cm,
-//! 0.13 s/60 deg at 6 V, 40 x 20 x 40.5 mm, 65 g) and the DS5160 (58 kg cm,
-//! 0.17 s/60 deg at 6 V, 65 x 30 x 48 mm, 155 g), 180 deg versions). Where a sheet quotes two supply voltages, the 6 V
-//! figure is taken: every Strider robot runs its servos from a 5-6 V BEC.
-//! Travel: all seven turn about 180 deg with a 500-2500 us pulse; the makers'
-//! "operating angle" (often quoted as 90 or 120 deg) is for 1000-2000 us only.
-//! Pulses are nominal: per-servo calibration (trim, direction) corrects them.
+//! Values are the makers' published figures, at 6 V where a sheet quotes two
+//! supply voltages (every Strider robot runs its servos from a 5-6 V BEC).
+//! Travel: all seven turn about 180 deg with a 500-2500 us pulse (the
+//! makers' "operating angle" is for 1000-2000 us); per-servo calibration
+//! corrects the nominal pulses.
 #ifndef STRIDER_ROBOTS_SERVO_PARTS_H
 #define STRIDER_ROBOTS_SERVO_PARTS_H
 
