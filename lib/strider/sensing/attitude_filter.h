@@ -2,31 +2,13 @@
 //! gyro [rad/s], a Mahony-style complementary filter on the direction of
 //! gravity (docs/imu.md).
 //!
-//! State: u, the unit "up" vector (against gravity) in the body frame (x
-//! forward, y left, z up), and b, the gyro bias estimate [rad/s]. Yaw is not
-//! observable from gravity and is not kept. One update with accel a (the
-//! specific force an accelerometer reads: +1 g along up at rest), gyro w and
-//! the time since the last update dt:
-//!   g = |a| / 9.80665                         (in units of standard gravity)
-//!   k = clamp((reject_g - |g - 1|) / (reject_g - trust_g), 0, 1)   (trust)
-//!   r = ((w + w_prev) / 2 - b) dt             (the turn since the last sample, trapezoidal)
-//!   c = u x r
-//!   p = u + c + (c x r) / 2                   (gyro prediction to second order: a world-fixed
-//!                                             vector seen from the body turns as u' = u x w)
-//!   e = k (a / |a|) x p                       (tilt error: sin(angle) about its axis)
-//!   b <- b - ki e dt                          (the bias integral, Mahony's I term)
-//!   u <- normalise(p + (u x kp e) dt)         (the proportional correction)
-//! roll = atan2(u_y, u_z), pitch = atan2(-u_x, hypot(u_y, u_z)): the Z-Y-X
-//! Euler angles the simulator reports (pitch positive nose down, roll
-//! positive left side up). For small errors the loop is linear with
-//! characteristic polynomial s^2 + kp s + ki: the defaults (kp 1/s, ki
-//! 0.25/s^2) make it critically damped, both poles at -0.5/s (2 s).
+//! State: u, the unit "up" vector in the body frame, and b, the gyro bias
+//! [rad/s]; yaw is not kept. The update equations, the gains' poles and why
+//! the prediction comes first: docs/imu.md, "The attitude filter".
 //!
-//! Total: no NaN or infinity comes out for any input. A float input that is
-//! NaN or infinite counts as missing (accel: untrusted; gyro: 0); every input
-//! is clamped to what an MPU-6050 can report (16 g, 2000 deg/s); dt <= 0 (or
-//! NaN) changes nothing; a gap longer than kAttitudeMaxDtS is not integrated
-//! (the attitude is taken again from the accelerometer when it is trusted).
+//! Total: no NaN or infinity comes out for any input (NaN or infinite
+//! inputs count as missing, inputs are clamped to the MPU-6050's ranges,
+//! dt <= 0 changes nothing, a gap over kAttitudeMaxDtS is not integrated).
 #ifndef STRIDER_SENSING_ATTITUDE_FILTER_H
 #define STRIDER_SENSING_ATTITUDE_FILTER_H
 
@@ -51,8 +33,7 @@ enum class AttitudeStatus : uint8_t {
   kHeld = 3       //!< nothing changed: dt <= 0, or no trusted sample to start from
 };
 
-//! Gains and accelerometer trust window; attitude_gains_default() has the
-//! documented values.
+//! Gains and accelerometer trust window.
 template <typename S>
 struct AttitudeGains {
   S kp;        //!< accelerometer gain [1/s]: tilt errors decay at about this rate
@@ -80,6 +61,15 @@ inline float attitude_input(float v, float limit, bool& bad) {
   return clamp(v, -limit, limit);
 }
 inline Fixed attitude_input(Fixed v, Fixed limit, bool&) { return clamp(v, -limit, limit); }
+template <typename S>
+Vec3<S> attitude_input(const Vec3<S>& v, S limit, bool& bad) {
+  return Vec3<S>(attitude_input(v.x, limit, bad), attitude_input(v.y, limit, bad), attitude_input(v.z, limit, bad));
+}
+//! v clamped to [-limit, limit] per axis.
+template <typename S>
+Vec3<S> clamp_axes(const Vec3<S>& v, S limit) {
+  return Vec3<S>(clamp(v.x, -limit, limit), clamp(v.y, -limit, limit), clamp(v.z, -limit, limit));
+}
 }  // namespace detail
 
 template <typename S>
@@ -112,9 +102,7 @@ class AttitudeFilter {
   //! Seeds the bias estimate (e.g. the mean gyro reading while still) [rad/s].
   void set_gyro_bias(const Vec3<S>& b_rad_s) {
     bool bad = false;
-    const S lim = scalar<S>(kAttitudeMaxBiasRadS);
-    const Vec3<S> b(detail::attitude_input(b_rad_s.x, lim, bad), detail::attitude_input(b_rad_s.y, lim, bad),
-                    detail::attitude_input(b_rad_s.z, lim, bad));
+    const Vec3<S> b = detail::attitude_input(b_rad_s, scalar<S>(kAttitudeMaxBiasRadS), bad);
     bias_scaled_ = b * scalar<S>(detail::kAttitudeBiasScale);
   }
 
@@ -124,14 +112,9 @@ class AttitudeFilter {
     const S zero = S(), one = scalar<S>(1.0);
     if (!(zero < dt_s)) return AttitudeStatus::kHeld;
     bool accel_bad = false, gyro_bad = false;
-    const S inv_g = scalar<S>(1.0 / kStandardGravity), g_lim = scalar<S>(kAttitudeMaxAccelG);
-    const Vec3<S> a(detail::attitude_input(accel_m_s2.x * inv_g, g_lim, accel_bad),
-                    detail::attitude_input(accel_m_s2.y * inv_g, g_lim, accel_bad),
-                    detail::attitude_input(accel_m_s2.z * inv_g, g_lim, accel_bad));
-    const S w_lim = scalar<S>(kAttitudeMaxRateRadS);
-    const Vec3<S> w(detail::attitude_input(gyro_rad_s.x, w_lim, gyro_bad),
-                    detail::attitude_input(gyro_rad_s.y, w_lim, gyro_bad),
-                    detail::attitude_input(gyro_rad_s.z, w_lim, gyro_bad));
+    const S inv_g = scalar<S>(1.0 / kStandardGravity);
+    const Vec3<S> a = detail::attitude_input(accel_m_s2 * inv_g, scalar<S>(kAttitudeMaxAccelG), accel_bad);
+    const Vec3<S> w = detail::attitude_input(gyro_rad_s, scalar<S>(kAttitudeMaxRateRadS), gyro_bad);
     const S mag = accel_bad ? zero : sqrt(dot(a, a));
     const S dev = abs(mag - one);
     const S k = accel_bad ? zero : clamp((gains_.reject_g - dev) * inv_span_, zero, one);
@@ -139,35 +122,23 @@ class AttitudeFilter {
     // reject_g <= 0.9 keeps a trusted |a| above 0.1 g: 1 / mag stays small.
     const Vec3<S> a_unit = zero < k ? a * (one / mag) : Vec3<S>();
     if (!has_attitude_ || scalar<S>(kAttitudeMaxDtS) < dt_s || (full && dot(a_unit, up_) < zero)) {
-      // Nothing to integrate from (or the estimate lost track by more than
-      // 90 deg, where the correction would push the wrong way).
+      // Nothing to integrate from, or lost by over 90 deg.
       if (!full) return AttitudeStatus::kHeld;
       up_ = a_unit;
       last_w_ = w;
       has_attitude_ = true;
       return AttitudeStatus::kLevelled;
     }
-    // Predict with the gyro first, then compare with the accelerometer: the
-    // two samples are of the same instant (compared before the prediction,
-    // the estimate settles one sample ahead, w dt). The rate is the mean of
-    // this sample and the last (with this one alone the estimate leads by
-    // half a sample of a changing rate), the turn to second order (to first
-    // order, the normalisation tilts u away from the axis by (w dt)^2 / 2 a
-    // sample: 0.5 deg/s at 90 deg/s and 50 Hz).
-    // (Fixed: halving dt first would round 0.01 s by 5e-4 of itself.)
+    // Gyro prediction first, trapezoidal rate, turn to second order
+    // (docs/imu.md). Fixed: halving dt first would round 0.01 s by 5e-4.
     const Vec3<S> w_mean = (w + last_w_) * scalar<S>(0.5) - bias_scaled_ * scalar<S>(1.0 / detail::kAttitudeBiasScale);
     last_w_ = w;
-    const S r_lim = scalar<S>(kAttitudeMaxTurnRad);
-    const Vec3<S> r_raw = w_mean * dt_s;
-    const Vec3<S> r(clamp(r_raw.x, -r_lim, r_lim), clamp(r_raw.y, -r_lim, r_lim), clamp(r_raw.z, -r_lim, r_lim));
+    const Vec3<S> r = detail::clamp_axes(w_mean * dt_s, scalar<S>(kAttitudeMaxTurnRad));
     const Vec3<S> c = cross(up_, r);
     const Vec3<S> u_pred = up_ + c + cross(c, r) * scalar<S>(0.5);
     const Vec3<S> e = cross(a_unit, u_pred) * k;
     const S bias_lim = scalar<S>(kAttitudeMaxBiasRadS * detail::kAttitudeBiasScale);
-    const Vec3<S> db = e * (ki_scaled_ * dt_s);
-    bias_scaled_ = Vec3<S>(clamp(bias_scaled_.x - db.x, -bias_lim, bias_lim),
-                           clamp(bias_scaled_.y - db.y, -bias_lim, bias_lim),
-                           clamp(bias_scaled_.z - db.z, -bias_lim, bias_lim));
+    bias_scaled_ = detail::clamp_axes(bias_scaled_ - e * (ki_scaled_ * dt_s), bias_lim);
     const Vec3<S> u = u_pred + cross(up_, e * (gains_.kp * dt_s));
     // u is up_ (1 - |r across up_|^2 / 2) plus a part across up_, and |r|^2
     // <= 3 kAttitudeMaxTurnRad^2 = 0.75: |u| >= 5/8, the reciprocal is safe.

@@ -1,17 +1,7 @@
-//! MPU-6050 register words -> an ImuSample in SI units.
-//!
-//! The 14-byte burst read from ACCEL_XOUT_H (0x3B): accel x, y, z, TEMP,
-//! gyro x, y, z, each a big-endian two's-complement word (register map rev
-//! 4.2, sec. 4.17-4.19). Scale factors (product specification rev 3.4, tables
-//! 6.1 and 6.2): accel 16384 / 8192 / 4096 / 2048 LSB per g for +-2 / 4 / 8 /
-//! 16 g (AFS_SEL, ACCEL_CONFIG bits 4:3); gyro 131 / 65.5 / 32.8 / 16.4 LSB
-//! per deg/s for +-250 / 500 / 1000 / 2000 deg/s (FS_SEL, GYRO_CONFIG bits
-//! 4:3); temperature = word / 340 + 36.53 deg C. The same figures as the
-//! Adafruit_MPU6050 library (g = 9.80665 m/s^2).
-//!
-//! Fixed: the word is multiplied as a Q16.16 raw value by the scale times
-//! 2^16, so the result is within 1 LSB of the exact one and no float code
-//! is involved (fixed-point firmwares link none).
+//! MPU-6050 register words -> an ImuSample in SI units: the 14-byte burst
+//! from ACCEL_XOUT_H (0x3B), big-endian words, with the data sheet's scales
+//! (docs/imu.md, "MPU-6050 words to SI"). Fixed multiplies the word as a
+//! Q16.16 raw value by the scale times 2^16: no float code.
 #ifndef STRIDER_SENSING_MPU6050_SAMPLE_H
 #define STRIDER_SENSING_MPU6050_SAMPLE_H
 
@@ -41,68 +31,42 @@ constexpr double mpu6050_gyro_lsb_per_dps(Mpu6050GyroRange r) {
 constexpr int16_t mpu6050_word(const uint8_t* be) { return int16_t(uint16_t(uint16_t(be[0]) << 8 | be[1])); }
 
 namespace detail {
-//! per_lsb in the form mpu6050_times() wants: as it is for float, times
-//! 2^16 for Fixed. Only for constexpr variables (evaluated at compile
-//! time: a call left to run time would pull in soft float).
+//! per_lsb as mpu6050_times() wants it (Fixed: times 2^16); constexpr use only.
 template <typename S>
 constexpr S mpu6050_scale(double per_lsb) {
   return scalar<S>(ScalarTraits<S>::kIsFixed ? per_lsb * 65536.0 : per_lsb);
 }
 inline float mpu6050_times(int16_t word, float scale) { return float(word) * scale; }
 inline Fixed mpu6050_times(int16_t word, Fixed scale) { return Fixed::from_raw(word) * scale; }
-
-template <typename S>
-S mpu6050_accel(int16_t word, Mpu6050AccelRange r) {
-  switch (r) {
-    case Mpu6050AccelRange::k2g: {
-      constexpr S k = mpu6050_scale<S>(kStandardGravity / 16384.0);
-      return mpu6050_times(word, k);
-    }
-    case Mpu6050AccelRange::k4g: {
-      constexpr S k = mpu6050_scale<S>(kStandardGravity / 8192.0);
-      return mpu6050_times(word, k);
-    }
-    case Mpu6050AccelRange::k8g: {
-      constexpr S k = mpu6050_scale<S>(kStandardGravity / 4096.0);
-      return mpu6050_times(word, k);
-    }
-    default: {
-      constexpr S k = mpu6050_scale<S>(kStandardGravity / 2048.0);
-      return mpu6050_times(word, k);
-    }
-  }
-}
-
-template <typename S>
-S mpu6050_gyro(int16_t word, Mpu6050GyroRange r) {
-  constexpr double kRadPerDeg = 0.017453292519943295;
-  switch (r) {
-    case Mpu6050GyroRange::k250Dps: {
-      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 131.0);
-      return mpu6050_times(word, k);
-    }
-    case Mpu6050GyroRange::k500Dps: {
-      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 65.5);
-      return mpu6050_times(word, k);
-    }
-    case Mpu6050GyroRange::k1000Dps: {
-      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 32.8);
-      return mpu6050_times(word, k);
-    }
-    default: {
-      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 16.4);
-      return mpu6050_times(word, k);
-    }
-  }
-}
 }  // namespace detail
 
 //! An accel word [LSB] -> [m/s^2].
 template <typename S>
-S mpu6050_accel_m_s2(int16_t word, Mpu6050AccelRange r) { return detail::mpu6050_accel<S>(word, r); }
+S mpu6050_accel_m_s2(int16_t word, Mpu6050AccelRange r) {
+  constexpr S k2g = detail::mpu6050_scale<S>(kStandardGravity / 16384.0);
+  constexpr S k4g = detail::mpu6050_scale<S>(kStandardGravity / 8192.0);
+  constexpr S k8g = detail::mpu6050_scale<S>(kStandardGravity / 4096.0);
+  constexpr S k16g = detail::mpu6050_scale<S>(kStandardGravity / 2048.0);
+  return detail::mpu6050_times(word, r == Mpu6050AccelRange::k2g   ? k2g
+                                     : r == Mpu6050AccelRange::k4g ? k4g
+                                     : r == Mpu6050AccelRange::k8g ? k8g
+                                                                   : k16g);
+}
+
 //! A gyro word [LSB] -> [rad/s].
 template <typename S>
-S mpu6050_gyro_rad_s(int16_t word, Mpu6050GyroRange r) { return detail::mpu6050_gyro<S>(word, r); }
+S mpu6050_gyro_rad_s(int16_t word, Mpu6050GyroRange r) {
+  constexpr double kRadPerDeg = 0.017453292519943295;
+  constexpr S k250 = detail::mpu6050_scale<S>(kRadPerDeg / 131.0);
+  constexpr S k500 = detail::mpu6050_scale<S>(kRadPerDeg / 65.5);
+  constexpr S k1000 = detail::mpu6050_scale<S>(kRadPerDeg / 32.8);
+  constexpr S k2000 = detail::mpu6050_scale<S>(kRadPerDeg / 16.4);
+  return detail::mpu6050_times(word, r == Mpu6050GyroRange::k250Dps    ? k250
+                                     : r == Mpu6050GyroRange::k500Dps  ? k500
+                                     : r == Mpu6050GyroRange::k1000Dps ? k1000
+                                                                       : k2000);
+}
+
 //! The TEMP_OUT word -> [deg C].
 template <typename S>
 S mpu6050_temp_c(int16_t word) {
