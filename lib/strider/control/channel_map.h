@@ -19,7 +19,6 @@ constexpr uint8_t kPcaChannelsPerBoard = 16;
 constexpr uint8_t kPcaFirstAddress = 0x40;  //!< 7-bit address of board 0 (A0-A5 open)
 constexpr uint8_t kMaxPcaBoards = 2;
 
-//! PCA9685 boards a model needs.
 constexpr uint8_t pca_board_count(const RobotModel& m) {
   return m.joint_count() > kPcaChannelsPerBoard ? uint8_t(2) : uint8_t(1);
 }
@@ -31,7 +30,6 @@ constexpr uint8_t joint_channel(const RobotModel& m, uint8_t leg, uint8_t j) {
              : uint8_t((leg / ((m.leg_count + 1) / 2)) * kPcaChannelsPerBoard + (leg % ((m.leg_count + 1) / 2)) * m.dof() + j);
 }
 
-//! True when joint j of this leg kind turns about a vertical axis.
 constexpr bool joint_axis_vertical(LegKind kind, uint8_t j) {
   return j == 0 && (kind == LegKind::kSprawl || kind == LegKind::kCoxaFemurTibia);
 }
@@ -88,7 +86,6 @@ inline uint8_t channel_map_count(const RobotModel& m) { return channel_map_count
 //! (the firmware: STRIDER_PROGMEM, read through a copy).
 enum class ModelMemory : uint8_t { kRam = 0, kFlash = 1 };
 
-//! *to = the model at `from` in `where`.
 inline void read_model(const RobotModel& from, ModelMemory where, RobotModel* to) {
   if (where == ModelMemory::kFlash) flash_copy(to, &from, sizeof *to);
   else *to = from;

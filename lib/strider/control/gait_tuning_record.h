@@ -20,7 +20,6 @@ constexpr uint8_t kGaitTuningEntryBytes = 11;
 constexpr uint8_t kGaitTuningHeaderBytes = 6;
 constexpr uint16_t kGaitTuningRecordBytes = kGaitTuningHeaderBytes + kTunedGaits * kGaitTuningEntryBytes + 2;
 constexpr uint16_t kGaitTuningSlotBytes = 64;
-//! Where the tuning slots start: after the settings' slots.
 constexpr uint16_t kGaitTuningBase = kSettingsStoreBytes;
 constexpr uint16_t kGaitTuningStoreEnd = kGaitTuningBase + 2 * kGaitTuningSlotBytes;
 constexpr uint8_t kGaitTuningMagic0 = 'G', kGaitTuningMagic1 = 'T';
@@ -59,7 +58,6 @@ inline void entry_bytes(const GaitTuning& t, uint8_t* b) {
 }
 }  // namespace gait_tuning_record_detail
 
-//! Whether the store has room for the tuning record.
 template <typename Store>
 bool gait_tuning_fits(const Store& store) {
   return uint32_t(kGaitTuningStoreEnd) <= store.size();

@@ -54,7 +54,6 @@ class ReplyWriter {
   }
   ReplyWriter& ch(char c) { put(c); return *this; }
 
-  //! Signed decimal integer.
   ReplyWriter& integer(int32_t v) {
     uint32_t u = v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v);
     if (v < 0) put('-');
@@ -82,9 +81,7 @@ class ReplyWriter {
   ReplyWriter& hundredths(int32_t v) {
     const uint32_t u = v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v);
     if (v < 0) put('-');
-    integer(int32_t(u / 100u));
-    put('.');
-    put(char('0' + u / 10u % 10u));
+    tenths(int32_t(u / 10u));
     put(char('0' + u % 10u));
     return *this;
   }
@@ -161,7 +158,6 @@ constexpr char kParseErrorNames[] STRIDER_PROGMEM =
     "line too long\0bad byte\0incomplete line\0bad checksum\0bytes lost\0checksum required";
 constexpr uint8_t kParseErrorCount = 12;
 
-//! `err <code> <reason>` for a parser error.
 inline void write_parse_error(ReplyWriter& w, ParseError e) {
   write_error(w, uint8_t(e), flash_name(kParseErrorNames, kParseErrorCount, uint8_t(e)));
 }

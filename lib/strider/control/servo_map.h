@@ -58,7 +58,6 @@ inline int32_t round_to_int(float v) { return v >= 0.0f ? int32_t(v + 0.5f) : -i
 inline int32_t round_to_int(Fixed v) { return (v + Fixed::from_raw(Fixed::kOneRaw / 2)).raw() >> Fixed::kFracBits; }
 }  // namespace detail
 
-//! One servo command: everything the bus write needs.
 struct ServoCommand {
   uint8_t channel;      //!< PCA9685 output
   uint16_t pulse_us;    //!< pulse width [us], inside the channel's pulse range

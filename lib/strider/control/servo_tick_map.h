@@ -54,7 +54,6 @@ struct ServoTickOwn {
   uint8_t channel;        //!< PCA9685 output
   int8_t direction;       //!< +1 or -1
 };
-//! One joint of a ServoTickMap (constants of the per-frame mapping).
 template <typename S>
 struct ServoTickJoint : ServoTickRange<S>, ServoTickOwn<S> {};
 
@@ -141,7 +140,6 @@ class ServoTickMap {
     static_cast<ServoTickOwn<S>&>(j) = joints_.own(i);
     return j;
   }
-  //! Joint i's PCA9685 output.
   uint8_t channel(uint8_t i) const { return joints_.own(i).channel; }
 
   //! Joint i's command for joint_rad [rad] (pulse_us left 0).

@@ -16,7 +16,6 @@ constexpr int8_t kMaxAccelOffsetMg = 100;   //!< |accelerometer offset| <= 100 m
 //! Layout version of the stored record (settings_record.h).
 constexpr uint8_t kSettingsVersion = 3;
 
-//! Settings record (values, not bytes; see encode/decode for the layout).
 struct Settings {
   uint32_t pca_osc_hz;                   //!< measured PCA9685 oscillator [Hz], 20-30 MHz
   uint16_t pwm_hz;                       //!< servo PWM frequency [Hz], 40-400 (digital servos)

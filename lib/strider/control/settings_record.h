@@ -38,16 +38,13 @@ constexpr uint8_t kSettingsNoOffsetsVersion = 2;     //!< the slot layout before
 constexpr uint8_t kSettingsHeaderBytes = 4;          //!< magic, version, payload length
 constexpr uint8_t kSettingsSeqBytes = 2;
 constexpr uint8_t kErasedByte = 0xFF;
-//! Bytes of a record of the current layout (version kSettingsVersion).
 constexpr uint16_t kSettingsRecordBytes = kSettingsHeaderBytes + kSettingsSeqBytes + kSettingsPayloadBytes + 2;
-//! Bytes of a version-1 record.
 constexpr uint16_t kSettingsSingleRecordBytes = kSettingsHeaderBytes + kSettingsPayloadBytes + 2;
 
-//! Where a record's payload starts, by layout version.
+//! Where a record's payload starts and how long it is, by layout version.
 constexpr uint8_t settings_payload_offset(uint8_t version) {
   return version == kSettingsSingleRecordVersion ? kSettingsHeaderBytes : kSettingsHeaderBytes + kSettingsSeqBytes;
 }
-//! A record's payload length, by layout version (one this firmware reads).
 constexpr uint8_t settings_payload_bytes(uint8_t version) {
   return version == kSettingsVersion ? kSettingsPayloadBytes : kSettingsPayloadBytesV2;
 }
