@@ -81,7 +81,9 @@ class ReplyWriter {
   ReplyWriter& hundredths(int32_t v) {
     const uint32_t u = v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v);
     if (v < 0) put('-');
-    tenths(int32_t(u / 10u));
+    integer(int32_t(u / 100u));
+    put('.');
+    put(char('0' + u / 10u % 10u));
     put(char('0' + u % 10u));
     return *this;
   }

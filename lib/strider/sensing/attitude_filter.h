@@ -61,15 +61,6 @@ inline float attitude_input(float v, float limit, bool& bad) {
   return clamp(v, -limit, limit);
 }
 inline Fixed attitude_input(Fixed v, Fixed limit, bool&) { return clamp(v, -limit, limit); }
-template <typename S>
-Vec3<S> attitude_input(const Vec3<S>& v, S limit, bool& bad) {
-  return Vec3<S>(attitude_input(v.x, limit, bad), attitude_input(v.y, limit, bad), attitude_input(v.z, limit, bad));
-}
-//! v clamped to [-limit, limit] per axis.
-template <typename S>
-Vec3<S> clamp_axes(const Vec3<S>& v, S limit) {
-  return Vec3<S>(clamp(v.x, -limit, limit), clamp(v.y, -limit, limit), clamp(v.z, -limit, limit));
-}
 }  // namespace detail
 
 template <typename S>
@@ -102,7 +93,9 @@ class AttitudeFilter {
   //! Seeds the bias estimate (e.g. the mean gyro reading while still) [rad/s].
   void set_gyro_bias(const Vec3<S>& b_rad_s) {
     bool bad = false;
-    const Vec3<S> b = detail::attitude_input(b_rad_s, scalar<S>(kAttitudeMaxBiasRadS), bad);
+    const S lim = scalar<S>(kAttitudeMaxBiasRadS);
+    const Vec3<S> b(detail::attitude_input(b_rad_s.x, lim, bad), detail::attitude_input(b_rad_s.y, lim, bad),
+                    detail::attitude_input(b_rad_s.z, lim, bad));
     bias_scaled_ = b * scalar<S>(detail::kAttitudeBiasScale);
   }
 
@@ -112,9 +105,14 @@ class AttitudeFilter {
     const S zero = S(), one = scalar<S>(1.0);
     if (!(zero < dt_s)) return AttitudeStatus::kHeld;
     bool accel_bad = false, gyro_bad = false;
-    const S inv_g = scalar<S>(1.0 / kStandardGravity);
-    const Vec3<S> a = detail::attitude_input(accel_m_s2 * inv_g, scalar<S>(kAttitudeMaxAccelG), accel_bad);
-    const Vec3<S> w = detail::attitude_input(gyro_rad_s, scalar<S>(kAttitudeMaxRateRadS), gyro_bad);
+    const S inv_g = scalar<S>(1.0 / kStandardGravity), g_lim = scalar<S>(kAttitudeMaxAccelG);
+    const Vec3<S> a(detail::attitude_input(accel_m_s2.x * inv_g, g_lim, accel_bad),
+                    detail::attitude_input(accel_m_s2.y * inv_g, g_lim, accel_bad),
+                    detail::attitude_input(accel_m_s2.z * inv_g, g_lim, accel_bad));
+    const S w_lim = scalar<S>(kAttitudeMaxRateRadS);
+    const Vec3<S> w(detail::attitude_input(gyro_rad_s.x, w_lim, gyro_bad),
+                    detail::attitude_input(gyro_rad_s.y, w_lim, gyro_bad),
+                    detail::attitude_input(gyro_rad_s.z, w_lim, gyro_bad));
     const S mag = accel_bad ? zero : sqrt(dot(a, a));
     const S dev = abs(mag - one);
     const S k = accel_bad ? zero : clamp((gains_.reject_g - dev) * inv_span_, zero, one);
@@ -133,12 +131,17 @@ class AttitudeFilter {
     // (docs/imu.md). Fixed: halving dt first would round 0.01 s by 5e-4.
     const Vec3<S> w_mean = (w + last_w_) * scalar<S>(0.5) - bias_scaled_ * scalar<S>(1.0 / detail::kAttitudeBiasScale);
     last_w_ = w;
-    const Vec3<S> r = detail::clamp_axes(w_mean * dt_s, scalar<S>(kAttitudeMaxTurnRad));
+    const S r_lim = scalar<S>(kAttitudeMaxTurnRad);
+    const Vec3<S> r_raw = w_mean * dt_s;
+    const Vec3<S> r(clamp(r_raw.x, -r_lim, r_lim), clamp(r_raw.y, -r_lim, r_lim), clamp(r_raw.z, -r_lim, r_lim));
     const Vec3<S> c = cross(up_, r);
     const Vec3<S> u_pred = up_ + c + cross(c, r) * scalar<S>(0.5);
     const Vec3<S> e = cross(a_unit, u_pred) * k;
     const S bias_lim = scalar<S>(kAttitudeMaxBiasRadS * detail::kAttitudeBiasScale);
-    bias_scaled_ = detail::clamp_axes(bias_scaled_ - e * (ki_scaled_ * dt_s), bias_lim);
+    const Vec3<S> db = e * (ki_scaled_ * dt_s);
+    bias_scaled_ = Vec3<S>(clamp(bias_scaled_.x - db.x, -bias_lim, bias_lim),
+                           clamp(bias_scaled_.y - db.y, -bias_lim, bias_lim),
+                           clamp(bias_scaled_.z - db.z, -bias_lim, bias_lim));
     const Vec3<S> u = u_pred + cross(up_, e * (gains_.kp * dt_s));
     // u is up_ (1 - |r across up_|^2 / 2) plus a part across up_, and |r|^2
     // <= 3 kAttitudeMaxTurnRad^2 = 0.75: |u| >= 5/8, the reciprocal is safe.

@@ -38,35 +38,59 @@ constexpr S mpu6050_scale(double per_lsb) {
 }
 inline float mpu6050_times(int16_t word, float scale) { return float(word) * scale; }
 inline Fixed mpu6050_times(int16_t word, Fixed scale) { return Fixed::from_raw(word) * scale; }
+
+template <typename S>
+S mpu6050_accel(int16_t word, Mpu6050AccelRange r) {
+  switch (r) {
+    case Mpu6050AccelRange::k2g: {
+      constexpr S k = mpu6050_scale<S>(kStandardGravity / 16384.0);
+      return mpu6050_times(word, k);
+    }
+    case Mpu6050AccelRange::k4g: {
+      constexpr S k = mpu6050_scale<S>(kStandardGravity / 8192.0);
+      return mpu6050_times(word, k);
+    }
+    case Mpu6050AccelRange::k8g: {
+      constexpr S k = mpu6050_scale<S>(kStandardGravity / 4096.0);
+      return mpu6050_times(word, k);
+    }
+    default: {
+      constexpr S k = mpu6050_scale<S>(kStandardGravity / 2048.0);
+      return mpu6050_times(word, k);
+    }
+  }
+}
+
+template <typename S>
+S mpu6050_gyro(int16_t word, Mpu6050GyroRange r) {
+  constexpr double kRadPerDeg = 0.017453292519943295;
+  switch (r) {
+    case Mpu6050GyroRange::k250Dps: {
+      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 131.0);
+      return mpu6050_times(word, k);
+    }
+    case Mpu6050GyroRange::k500Dps: {
+      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 65.5);
+      return mpu6050_times(word, k);
+    }
+    case Mpu6050GyroRange::k1000Dps: {
+      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 32.8);
+      return mpu6050_times(word, k);
+    }
+    default: {
+      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 16.4);
+      return mpu6050_times(word, k);
+    }
+  }
+}
 }  // namespace detail
 
 //! An accel word [LSB] -> [m/s^2].
 template <typename S>
-S mpu6050_accel_m_s2(int16_t word, Mpu6050AccelRange r) {
-  constexpr S k2g = detail::mpu6050_scale<S>(kStandardGravity / 16384.0);
-  constexpr S k4g = detail::mpu6050_scale<S>(kStandardGravity / 8192.0);
-  constexpr S k8g = detail::mpu6050_scale<S>(kStandardGravity / 4096.0);
-  constexpr S k16g = detail::mpu6050_scale<S>(kStandardGravity / 2048.0);
-  return detail::mpu6050_times(word, r == Mpu6050AccelRange::k2g   ? k2g
-                                     : r == Mpu6050AccelRange::k4g ? k4g
-                                     : r == Mpu6050AccelRange::k8g ? k8g
-                                                                   : k16g);
-}
-
+S mpu6050_accel_m_s2(int16_t word, Mpu6050AccelRange r) { return detail::mpu6050_accel<S>(word, r); }
 //! A gyro word [LSB] -> [rad/s].
 template <typename S>
-S mpu6050_gyro_rad_s(int16_t word, Mpu6050GyroRange r) {
-  constexpr double kRadPerDeg = 0.017453292519943295;
-  constexpr S k250 = detail::mpu6050_scale<S>(kRadPerDeg / 131.0);
-  constexpr S k500 = detail::mpu6050_scale<S>(kRadPerDeg / 65.5);
-  constexpr S k1000 = detail::mpu6050_scale<S>(kRadPerDeg / 32.8);
-  constexpr S k2000 = detail::mpu6050_scale<S>(kRadPerDeg / 16.4);
-  return detail::mpu6050_times(word, r == Mpu6050GyroRange::k250Dps    ? k250
-                                     : r == Mpu6050GyroRange::k500Dps  ? k500
-                                     : r == Mpu6050GyroRange::k1000Dps ? k1000
-                                                                       : k2000);
-}
-
+S mpu6050_gyro_rad_s(int16_t word, Mpu6050GyroRange r) { return detail::mpu6050_gyro<S>(word, r); }
 //! The TEMP_OUT word -> [deg C].
 template <typename S>
 S mpu6050_temp_c(int16_t word) {
