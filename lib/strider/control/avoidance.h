@@ -1,12 +1,8 @@
-//! Avoidance: seed 000's obstacle behaviour (sec 4.3, results): while walking
-//! forward, an obstacle nearer than the stop distance (20 cm) ahead makes the
-//! robot walk sideways until the way is clear, then forward again.
-//! Additions: a slow-down band (forward speed falls linearly from 100 % at
-//! the slow distance to kAvoidMinSlowPct at the stop distance), hysteresis,
-//! a side switch when one side takes too long, a blocked state after both
-//! sides failed, and a sensor-failure policy: no forward motion on a failed
-//! or stale sensor (backwards, sideways and turning stay allowed).
-//! Velocities are in the Command units: [0.1 mm/s], [0.1 deg/s]. Time [ms].
+//! Avoidance: seed 000's obstacle behaviour: while walking forward, an
+//! obstacle nearer than the stop distance makes the robot walk sideways
+//! until the way is clear. Added: a slow-down band, hysteresis, a side
+//! switch, a blocked state after both sides failed, and no forward motion
+//! on a failed or stale sensor. Velocities in [0.1 mm/s], [0.1 deg/s]; [ms].
 #ifndef STRIDER_CONTROL_AVOIDANCE_H
 #define STRIDER_CONTROL_AVOIDANCE_H
 
@@ -48,31 +44,16 @@ enum class AvoidState : uint8_t {
   kSensorFault = 5   //!< sensor failed or stale: forward motion refused
 };
 
-inline const char* to_string(AvoidState s) {
-  switch (s) {
-    case AvoidState::kPassThrough: return "pass";
-    case AvoidState::kForward: return "forward";
-    case AvoidState::kSidestep: return "sidestep";
-    case AvoidState::kClearing: return "clearing";
-    case AvoidState::kBlocked: return "blocked";
-    case AvoidState::kSensorFault: return "sensor_fault";
-  }
-  return "unknown";
-}
-
 constexpr char kAvoidStateNames[] STRIDER_PROGMEM = "pass\0forward\0sidestep\0clearing\0blocked\0sensor_fault";
-//! to_string() with the text in flash (for replies on the AVR).
 inline FlashText to_flash(AvoidState s) { return flash_name(kAvoidStateNames, 6, uint8_t(s)); }
+//! The name on a host (where flash is ordinary memory).
+inline const char* to_string(AvoidState s) { return to_flash(s).p; }
 
 class Avoidance {
  public:
-  Avoidance() : since_ms_(0), extra_ms_(0), last_ms_(0), cleared_(0), state_(AvoidState::kPassThrough), switched_(false) {}
-
-  //! One control tick: the operator's command, the sonar, the time -> the
-  //! command to walk. Seed 000 only avoids while walking forward.
-  //! walked_vy: the sideways speed the body really walks [0.1 mm/s] (the
-  //! gait's, after its limits and ramp), for cfg.clear_mm; kUnknownSpeed:
-  //! taken as the commanded sidestep speed.
+  //! One tick: the operator's command and the sonar -> the command to walk.
+  //! walked_vy: the sideways speed really walked [0.1 mm/s], for
+  //! cfg.clear_mm (kUnknownSpeed: the commanded sidestep speed).
   static constexpr int32_t kUnknownSpeed = -0x7FFFFFFF - 1;
   Twist update(const Twist& cmd, const SonarReading& sonar, uint32_t now_ms, const AvoidConfig& cfg,
                int32_t walked_vy = kUnknownSpeed) {
@@ -141,17 +122,14 @@ class Avoidance {
   }
 
   //! Clearing done: held clear_hold_ms and walked clear_mm sideways (the
-  //! sensor's beam is narrow: the way is clear for the sensor before it is
-  //! for the body and its feet), or side_timeout_ms passed (a gait that
-  //! cannot walk sideways must not hold this state for ever).
+  //! beam is narrower than the body), or side_timeout_ms passed.
   bool cleared(const Twist& cmd, const AvoidConfig& cfg, uint32_t now_ms, int32_t walked_vy) {
     const uint32_t dt = elapsed(now_ms, last_ms_);
     last_ms_ = now_ms;
     int32_t v = walked_vy == kUnknownSpeed ? side_speed(cmd, cfg) : walked_vy;
     if (v < 0) v = v < -kMaxSpeed ? kMaxSpeed : -v;
     if (v > kMaxSpeed) v = kMaxSpeed;
-    // [0.1 mm/s] x [ms] = 1e-4 mm: at most 1e5 x 1e3 per tick, and the sum
-    // saturates instead of wrapping.
+    // [0.1 mm/s] x [ms] = 1e-4 mm, the sum saturating.
     const uint32_t step = uint32_t(v) * (dt > 1000u ? 1000u : dt);
     cleared_ = step >= 0xFFFFFFFFu - cleared_ ? 0xFFFFFFFFu : cleared_ + step;
     const uint32_t held = elapsed(now_ms, since_ms_);
@@ -178,21 +156,19 @@ class Avoidance {
       default: break;
     }
     if (d >= cfg.slow_mm || cfg.slow_mm <= cfg.stop_mm) return cmd;
-    // Linear from kAvoidMinSlowPct at stop_mm to 100 % at slow_mm.
     const int32_t span = int32_t(cfg.slow_mm) - int32_t(cfg.stop_mm);
     const int32_t into = d > cfg.stop_mm ? int32_t(d) - int32_t(cfg.stop_mm) : 0;
     const int32_t pct = kAvoidMinSlowPct + (100 - kAvoidMinSlowPct) * into / span;
     return Twist{cmd.vx * pct / 100, cmd.vy, cmd.wz};
   }
 
-  // Zero (but side_), by the constructors.
-  uint32_t since_ms_;
-  uint32_t extra_ms_;
-  uint32_t last_ms_;  //!< clearing: the previous tick
-  uint32_t cleared_;  //!< clearing: walked sideways since clear [1e-4 mm]
-  AvoidState state_;
+  uint32_t since_ms_ = 0;
+  uint32_t extra_ms_ = 0;
+  uint32_t last_ms_ = 0;  //!< clearing: the previous tick
+  uint32_t cleared_ = 0;  //!< clearing: walked sideways since clear [1e-4 mm]
+  AvoidState state_ = AvoidState::kPassThrough;
   int8_t side_ = 1;
-  bool switched_;
+  bool switched_ = false;
 };
 
 }  // namespace strider

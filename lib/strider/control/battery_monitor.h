@@ -1,20 +1,10 @@
 //! BatteryMonitor: the pack's voltage from an analog pin behind a divider,
-//! and what it means for the robot: absent (no divider wired: the pin reads
-//! near 0 V), ok, low (a warning) or critical (sit down before the servos'
-//! current sag browns the Mega out).
-//!
-//! Integer millivolts only (no float: the fixed-point firmwares link none).
-//! One reading per control tick. The pack sags under servo load (1.3 V at
-//! hexapod18's peaks in the simulator, docs/imu.md), so the level follows a
-//! filtered voltage (exponential average, 16 readings: 0.3 s at 50 Hz) and
-//! changes only after the new level has held for `hold_readings` readings
-//! (2 s at 50 Hz); going back up needs `recover_mv_per_cell` more than the
-//! threshold it fell below (the hysteresis), since a resting pack recovers
-//! by some tenths of a volt.
-//!
-//! The cell count is found from the first settled reading: the smallest
-//! count whose full charge (4.25 V a cell) holds the voltage, so 2S at
-//! 6.6-8.4 V reads 2 and 3S at 9.9-12.6 V reads 3.
+//! and its level: absent (no divider), ok, low or critical (sit down before
+//! the sag browns the Mega out). Integer millivolts, one reading a tick: the
+//! level follows a 16-reading average and changes only after holding for
+//! `hold_readings`, rising needs `recover_mv_per_cell` more (the sag:
+//! docs/imu.md). The cell count is the smallest whose full charge (4.25 V a
+//! cell) holds the first settled reading.
 #ifndef STRIDER_CONTROL_BATTERY_MONITOR_H
 #define STRIDER_CONTROL_BATTERY_MONITOR_H
 
@@ -47,11 +37,10 @@ class BatteryMonitor {
   bool add(uint16_t code) {
     if (code >= cfg_.adc_counts) code = uint16_t(cfg_.adc_counts - 1);
     const uint32_t mv = uint32_t(code) * cfg_.adc_ref_mv / cfg_.adc_counts * cfg_.divider_x100 / 100u;
-    // Exponential average over 16 readings, kept as 16 x mV; the first reading starts it.
+    // Exponential average, kept as 16 x mV.
     filtered_x16_ = readings_ == 0 ? mv * 16u : filtered_x16_ - filtered_x16_ / 16u + mv;
     if (readings_ < kSettleReadings) {
       if (++readings_ < kSettleReadings) return false;
-      // Settled: the first level counts at once, without the hold.
       cells_ = cells_for(this->mv());
       const BatteryLevel first = level_for(this->mv(), BatteryLevel::kOk);
       const bool changed = first != level_;
@@ -88,8 +77,7 @@ class BatteryMonitor {
     while (n < 12 && uint32_t(n) * kCellFullMv < mv) ++n;
     return n;
   }
-  //! The level for a filtered voltage, coming from `now`: falling below a
-  //! threshold counts at once, rising above one needs the recovery margin.
+  //! The level for a filtered voltage coming from `now` (rising needs the margin).
   BatteryLevel level_for(uint16_t mv, BatteryLevel now) const {
     if (mv < cfg_.absent_below_mv) return BatteryLevel::kAbsent;
     const uint8_t cells = now == BatteryLevel::kAbsent ? cells_for(mv) : cells_;

@@ -1,8 +1,6 @@
 //! Calibration: live per-joint trims and oscillator edited over Bluetooth,
-//! with save (write to the store) and abort (restore what was saved).
-//! The controller applies live() to the servo map while calibration is active.
-//! The saved values are the caller's (the controller's settings in force):
-//! start() and abort() take them, so that no second copy stays in RAM.
+//! with save and abort. The saved values are the caller's (the settings in
+//! force): start() and abort() take them, so no second copy stays in RAM.
 #ifndef STRIDER_CONTROL_CALIBRATION_H
 #define STRIDER_CONTROL_CALIBRATION_H
 
@@ -21,10 +19,8 @@ enum class CalStatus : uint8_t {
 
 class Calibration {
  public:
-  //! Starts from the settings in force (normally what load_settings gave).
   explicit Calibration(const Settings& saved) : live_(saved) {}
 
-  //! Starts editing from `saved`, the settings in force.
   void start(const Settings& saved) {
     active_ = true;
     live_ = saved;
@@ -52,10 +48,8 @@ class Calibration {
     return CalStatus::kOk;
   }
 
-  //! Writes the live values (with the other settings taken from `others`)
-  //! after *record, the record in force (save_settings()); live() is then
-  //! what was saved, for the caller to keep as its settings. On a store
-  //! failure calibration stays active.
+  //! Saves the live values with `others` after *record; live() is then what
+  //! was saved. On a store failure calibration stays active.
   template <typename Store>
   CalStatus save(Store& store, const Settings& others, SettingsRecord* record) {
     if (!active_) return CalStatus::kNotActive;
@@ -69,7 +63,6 @@ class Calibration {
     return CalStatus::kOk;
   }
 
-  //! Ends calibration and goes back to `saved`, the settings in force.
   void abort(const Settings& saved) {
     live_ = saved;
     active_ = false;

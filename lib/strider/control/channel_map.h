@@ -1,21 +1,8 @@
 //! ChannelMap: which PCA9685 output drives which joint of a robot model, and
-//! how a servo is mounted on it. One rule for every built-in model, so the
-//! wiring table in docs/wiring.md follows from it:
-//!
-//! - Joint k = leg * dof + j (legs in the model's counter-clockwise order,
-//!   joints in the leg type's seed order).
-//! - Up to 16 joints: one board (I2C 0x40), channel = k. More joints (the
-//!   hexapod): two boards, the first half of the legs (the left side) on
-//!   0x40 and the rest on 0x41; global channel = board * 16 + pin, each
-//!   board's pins numbered from 0 in the same leg/joint order.
-//! - The servo's centre (1500 us) sits at the middle of the joint's range, so
-//!   the servo's travel covers the range symmetrically; its limits are the
-//!   joint's limits (the IK enforces them first, the map again).
-//! - Direction: a right leg is the mirror image of a left one, so a servo
-//!   turning about a horizontal axis is mounted the other way round and turns
-//!   the other way (-1); vertical-axis servos (hip yaw, coxa) are mounted the
-//!   same on both sides (+1).
-//! The pulse range and travel come from the model's servo part.
+//! how its servo is mounted; one rule for every built-in model (docs/wiring.md):
+//! joint k = leg * dof + j on one board up to 16 joints, else the left legs
+//! on 0x40 and the rest on 0x41; the servo's centre at the middle of the
+//! joint's range; a right leg's horizontal-axis servos turn the other way.
 #ifndef STRIDER_CONTROL_CHANNEL_MAP_H
 #define STRIDER_CONTROL_CHANNEL_MAP_H
 
@@ -32,7 +19,6 @@ constexpr uint8_t kPcaChannelsPerBoard = 16;
 constexpr uint8_t kPcaFirstAddress = 0x40;  //!< 7-bit address of board 0 (A0-A5 open)
 constexpr uint8_t kMaxPcaBoards = 2;
 
-//! PCA9685 boards a model needs.
 constexpr uint8_t pca_board_count(const RobotModel& m) {
   return m.joint_count() > kPcaChannelsPerBoard ? uint8_t(2) : uint8_t(1);
 }
@@ -44,7 +30,6 @@ constexpr uint8_t joint_channel(const RobotModel& m, uint8_t leg, uint8_t j) {
              : uint8_t((leg / ((m.leg_count + 1) / 2)) * kPcaChannelsPerBoard + (leg % ((m.leg_count + 1) / 2)) * m.dof() + j);
 }
 
-//! True when joint j of this leg kind turns about a vertical axis.
 constexpr bool joint_axis_vertical(LegKind kind, uint8_t j) {
   return j == 0 && (kind == LegKind::kSprawl || kind == LegKind::kCoxaFemurTibia);
 }
@@ -54,32 +39,8 @@ constexpr int8_t joint_direction(const RobotModel& m, uint8_t leg, uint8_t j) {
   return m.legs[leg].side == BodySide::kRight && !joint_axis_vertical(m.kind, j) ? int8_t(-1) : int8_t(1);
 }
 
-//! The servo channel of joint j of leg `leg` in scalar S.
-template <typename S>
-ServoChannel<S> make_joint_channel(const RobotModel& m, uint8_t leg, uint8_t j) {
-  const ServoTravel spec = servo_travel(m.servo[j]);
-  const JointRange& r = m.legs[leg].joint[j];
-  const double half_range = 0.5 * (double(r.max_deg) - double(r.min_deg));
-  const double centre = 0.5 * double(spec.travel_deg);
-  ServoChannel<S> ch;
-  ch.channel = joint_channel(m, leg, j);
-  ch.direction = joint_direction(m, leg, j);
-  ch.zero_rad = scalar<S>(0.5 * (double(r.min_deg) + double(r.max_deg)) * kDegToRad);
-  ch.centre_rad = scalar<S>(centre * kDegToRad);
-  ch.min_rad = scalar<S>((centre - half_range) * kDegToRad);
-  ch.max_rad = scalar<S>((centre + half_range) * kDegToRad);
-  ch.us_per_rad = scalar<S>(double(spec.max_pulse_us - spec.min_pulse_us) / (double(spec.travel_deg) * kDegToRad));
-  ch.min_pulse_us = spec.min_pulse_us;
-  ch.max_pulse_us = spec.max_pulse_us;
-  return ch;
-}
-
-//! make_joint_channel() as a constant (servo_travel() reads flash, which a
-//! constant expression cannot: the same figures from servo_parts_detail).
-template <typename S>
-constexpr ServoChannel<S> joint_channel_constant(const RobotModel& m, uint8_t leg, uint8_t j) {
-  return joint_channel_constant<S>(m, leg, j, servo_parts_detail::travel_of(m.servo[j]));
-}
+//! The servo channel of joint j of leg `leg` in scalar S, with its servo's
+//! figures (servo_travel() reads flash, which a constant cannot: travel_of()).
 template <typename S>
 constexpr ServoChannel<S> joint_channel_constant(const RobotModel& m, uint8_t leg, uint8_t j, const ServoTravel& spec) {
   return ServoChannel<S>{
@@ -97,43 +58,40 @@ constexpr ServoChannel<S> joint_channel_constant(const RobotModel& m, uint8_t le
       spec.min_pulse_us,
       spec.max_pulse_us};
 }
-
-//! channel_map_count() as a constant.
-constexpr uint8_t channel_map_count_constant(const RobotModel& m) {
-  if (m.joint_count() > kMaxServoJoints) return 0;
-  for (uint8_t leg = 0; leg < m.leg_count; ++leg)
-    for (uint8_t j = 0; j < m.dof(); ++j) {
-      const JointRange& r = m.legs[leg].joint[j];
-      if (r.max_deg - r.min_deg > servo_parts_detail::travel_of(m.servo[j]).travel_deg) return 0;
-    }
-  return m.joint_count();
+template <typename S>
+ServoChannel<S> make_joint_channel(const RobotModel& m, uint8_t leg, uint8_t j) {
+  return joint_channel_constant<S>(m, leg, j, servo_travel(m.servo[j]));
+}
+template <typename S>
+constexpr ServoChannel<S> joint_channel_constant(const RobotModel& m, uint8_t leg, uint8_t j) {
+  return joint_channel_constant<S>(m, leg, j, servo_parts_detail::travel_of(m.servo[j]));
 }
 
 //! The model's joint count when make_channel_map() can map it, else 0 (more
-//! joints than kMaxServoJoints, or a joint range wider than its servo's travel).
-inline uint8_t channel_map_count(const RobotModel& m) {
+//! joints than kMaxServoJoints, or a joint range wider than its servo's
+//! travel); travel: servo_travel(), or travel_of() in a constant.
+constexpr uint8_t channel_map_count_constant(const RobotModel& m,
+                                             ServoTravel (*travel)(ServoPart) = servo_parts_detail::travel_of) {
   if (m.joint_count() > kMaxServoJoints) return 0;
   for (uint8_t leg = 0; leg < m.leg_count; ++leg)
     for (uint8_t j = 0; j < m.dof(); ++j) {
       const JointRange& r = m.legs[leg].joint[j];
-      if (r.max_deg - r.min_deg > servo_travel(m.servo[j]).travel_deg) return 0;
+      if (r.max_deg - r.min_deg > travel(m.servo[j]).travel_deg) return 0;
     }
   return m.joint_count();
 }
+inline uint8_t channel_map_count(const RobotModel& m) { return channel_map_count_constant(m, servo_travel); }
 
 //! Where a model is kept: in RAM (host tools, the simulator), or in flash
 //! (the firmware: STRIDER_PROGMEM, read through a copy).
 enum class ModelMemory : uint8_t { kRam = 0, kFlash = 1 };
 
-//! *to = the model at `from` in `where`.
 inline void read_model(const RobotModel& from, ModelMemory where, RobotModel* to) {
   if (where == ModelMemory::kFlash) flash_copy(to, &from, sizeof *to);
   else *to = from;
 }
 
-//! Fills out[k] for every joint k = leg * dof + j of the model; returns the
-//! joint count (0 when the model has more joints than kMaxServoJoints or a
-//! joint range wider than its servo's travel).
+//! Fills out[k] for every joint k = leg * dof + j; returns channel_map_count().
 template <typename S>
 uint8_t make_channel_map(const RobotModel& m, ServoChannel<S>* out) {
   const uint8_t n = channel_map_count(m);
@@ -141,9 +99,8 @@ uint8_t make_channel_map(const RobotModel& m, ServoChannel<S>* out) {
   return n;
 }
 
-//! The joint angle [rad] a servo on `ch` holds for a pulse [us], with zero
-//! trim: the inverse of servo_angle() and servo_pulse_us() (simulators turn
-//! the PCA9685's pulses back into joint targets with it). Host-side: double.
+//! The joint angle [rad] a servo on `ch` holds for a pulse [us] with zero
+//! trim (the simulators' inverse of servo_pulse_us()).
 inline double joint_from_pulse(const ServoChannel<float>& ch, double pulse_us) {
   const double servo_rad = (pulse_us - double(ch.min_pulse_us)) / double(ch.us_per_rad);
   const double delta = servo_rad - double(ch.centre_rad);

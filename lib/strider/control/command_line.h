@@ -23,7 +23,7 @@ constexpr int32_t kMaxPoseDecideg = 300;      //!< |roll|, |pitch|, |yaw| <= 30.
 
 namespace detail {
 
-//! The command words, in flash on the AVR (flash_table.h): about 150 bytes of RAM saved.
+//! The command words, in flash on the AVR.
 namespace words {
 constexpr char kAbort[] STRIDER_PROGMEM = "abort";
 constexpr char kAvoid[] STRIDER_PROGMEM = "avoid";
@@ -155,10 +155,8 @@ inline ParseError parse_set(const Token* t, uint8_t n, Command* cmd) {
   return number_arg(t[2], 2, 0, 65535, &cmd->arg[1]);
 }
 
-//! The commands of one word and numbers (or none): `count` numbers into
-//! arg[slot..], all with `decimals` decimals and in [lo, hi]. A table in
-//! flash that one loop reads, instead of a call with its own constants per
-//! command.
+//! The commands of one word and `count` numbers into arg[slot..], all with
+//! `decimals` decimals and in [lo, hi]: a table in flash, one loop.
 struct WordCommand {
   const char* word;  // words::, in flash
   CommandKind kind;
@@ -227,15 +225,12 @@ inline ParseError parse_tokens(const Token* t, uint8_t n, const char* line, uint
 
 }  // namespace detail
 
-//! True for a command that disarms a failsafe: the deadman off. It runs only
-//! from a checked line (command_parser.h), a form that no line glued from
-//! pieces of others and no typo produces; no number turns the deadman off.
+//! True for a command that disarms a failsafe (the deadman off): it runs
+//! only from a checked line, which no glued line nor typo produces.
 inline bool needs_checked_line(const Command& c) { return c.kind == CommandKind::kDeadman && c.arg[0] == 0; }
 
-//! Parses one line (len bytes, printable ASCII, no line ending). On success
-//! returns kNone and fills *cmd (source kLine); otherwise returns the error,
-//! with cmd->usage saying which valid values its reply names. A line of
-//! blanks is an error too (err 1 empty line): every line gets a reply.
+//! Parses one line (printable ASCII, no line ending) into *cmd; an error
+//! leaves cmd->usage naming the valid values. A blank line is err 1.
 inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd) {
   using namespace detail;
   *cmd = make_command(CommandKind::kNone, CommandSource::kLine);
@@ -245,8 +240,6 @@ inline ParseError parse_command_line(const char* line, uint8_t len, Command* cmd
     cmd->usage = Usage::kEmptyLine;
     return ParseError::kUnknownCommand;
   }
-  // More tokens than any command takes: the command word still says which
-  // usage the reply names (an unknown word stays err 1).
   const uint8_t n = n_split > kMaxLineTokens ? kMaxLineTokens : n_split;
   const ParseError e = parse_tokens(t, n, line, len, cmd);
   if (n_split > kMaxLineTokens && e != ParseError::kUnknownCommand) return ParseError::kExtraArgument;

@@ -1,24 +1,10 @@
 //! CommandParser: the Bluetooth byte stream, one byte at a time, -> Commands.
-//!
-//! Two protocols share the link (docs/protocol.md):
-//! - RC bytes from the "Bluetooth RC Controller" app, with no line ending:
-//!   F B L R G I H J S, lights W w U u V v X x, speed 0-9 and q. They are
-//!   recognised only between lines, so the uppercase letters, digits and q
-//!   never clash with text: text commands start with a lowercase letter.
-//!   'w' and 'v' (lights off) also start "walk"/"vel": such a byte is taken as
-//!   a light only if the next byte is not a lowercase letter (one-byte lookahead).
-//! - Text lines ending in CR, LF or CRLF, at most kMaxLineBytes printable bytes.
-//!   A line starting with `$` is a checked line (`$text*hhhh`, line_check.h):
-//!   its text runs only when its check matches, and a command that disarms a
-//!   failsafe (needs_checked_line(): `deadman off`) only from a checked line.
-//! Errors (binary byte, overlong line) are reported once, as soon as they are
-//! seen; the rest of that line is discarded up to its line end, then parsing
-//! resynchronises. Bare junk between lines is reported once and skipped up to
-//! the next valid start byte. idle_timeout() abandons a partial line.
-//! lost() says the receiver dropped bytes before the next one: the line they
-//! fell into (or, between lines, the next) is discarded and answered
-//! kBytesLost at its end, so that no command is glued from two lines' pieces
-//! and no line's tail is taken for RC bytes.
+//! Two protocols share the link (docs/protocol.md, "Telling RC bytes from
+//! text"): the RC app's bare bytes, recognised only between lines ('w' and
+//! 'v' through a one-byte lookahead), and text lines ending in CR, LF or
+//! CRLF, a `$` line checked (line_check.h). An error is reported once and
+//! the rest of its line discarded; lost() discards the line the dropped
+//! bytes fell into, answered kBytesLost at its end.
 #ifndef STRIDER_CONTROL_COMMAND_PARSER_H
 #define STRIDER_CONTROL_COMMAND_PARSER_H
 
@@ -41,9 +27,7 @@ enum class ParseResult : uint8_t {
 //! RC app byte -> command, or kNone when b is no RC byte.
 inline Command rc_command(uint8_t b) {
   Command c = make_command(CommandKind::kNone, CommandSource::kBareByte);
-  // Direction buttons -> (x forward, y left, turn anticlockwise). Seed 000's
-  // six motions are F B L R and G (anticlockwise) / I (clockwise); H and J
-  // walk diagonally backwards. A switch keeps the table out of AVR RAM.
+  // (x forward, y left, turn anticlockwise); a switch keeps the table out of RAM.
   int8_t x = 0, y = 0, turn = 0;
   switch (b) {
     case 'F': x = 1; break;
@@ -75,8 +59,6 @@ inline Command rc_command(uint8_t b) {
 
 class CommandParser {
  public:
-  CommandParser() : len_(0), last_rc_(0), after_cr_(false), state_(State::kIdle) {}
-
   //! Feeds one received byte. On kCommand or kError, *out is filled.
   ParseResult feed(uint8_t b, Command* out) {
     if (b == '\r' || b == '\n') return line_end(b, out);
@@ -91,9 +73,8 @@ class CommandParser {
     return start(b, out);
   }
 
-  //! Called when no byte arrived for a while (the controller's choice, e.g.
-  //! 500 ms): a partial line is abandoned with kIncomplete; a lone 'w'/'v'
-  //! (app light button) is dropped silently.
+  //! No byte for a while: a partial line is abandoned (kIncomplete), a
+  //! lone 'w'/'v' (a light button) dropped silently.
   ParseResult idle_timeout(Command* out) {
     const State was = state_;
     const uint8_t len = len_;
@@ -107,11 +88,8 @@ class CommandParser {
     return blank ? ParseResult::kNothing : error(ParseError::kIncomplete, out);
   }
 
-  //! The receiver dropped bytes before the next one (its buffer overflowed):
-  //! the line being collected, or the next one when the gap fell between
-  //! lines, is discarded up to its line end and answered kBytesLost there (or
-  //! at the idle timeout); bytes after the gap are not taken for RC bytes
-  //! before that line end. A line already discarded after an error stays so.
+  //! The receiver dropped bytes before the next one: the line they fell
+  //! into (or the next) is discarded, answered kBytesLost at its end.
   void lost() {
     if (state_ != State::kDiscard) state_ = State::kLost;
     len_ = 0;
@@ -123,12 +101,10 @@ class CommandParser {
   uint8_t line_length() const { return len_; }                   //!< bytes of the partial line
 
  private:
-  // kLost: bytes were lost, discarding up to the line end, kBytesLost there.
   enum class State : uint8_t { kIdle, kCollect, kDiscard, kSkipJunk, kLost };
 
   static bool is_lower(uint8_t b) { return b >= 'a' && b <= 'z'; }
   static bool is_bare_rc(uint8_t b) {
-    // Lowercase w and v start words; they go through the lookahead instead.
     return b != 'w' && b != 'v' && rc_command(b).kind != CommandKind::kNone;
   }
   bool is_light_lookahead(uint8_t len) const { return len == 1 && (line_[0] == 'w' || line_[0] == 'v'); }
@@ -196,9 +172,7 @@ class CommandParser {
     return complete_line(len, out);
   }
 
-  // A whole line: a checked one's check, then the command. Not inlined: the
-  // parse's tokens are off the stack again when the command runs (its reply
-  // and a velocity plan are the firmware's deepest stack).
+  // Not inlined: the parse's tokens are off the stack when the command runs.
   STRIDER_NOINLINE ParseResult complete_line(uint8_t len, Command* out) {
     const char* text = line_;
     uint8_t text_len = len;
@@ -221,11 +195,10 @@ class CommandParser {
   }
 
   char line_[kMaxLineBytes];
-  // Zero, by the constructors.
-  uint8_t len_;
-  uint8_t last_rc_;  // RC byte just applied: a line end right after it echoes it
-  bool after_cr_;
-  State state_;
+  uint8_t len_ = 0;
+  uint8_t last_rc_ = 0;  // RC byte just applied: a line end right after it echoes it
+  bool after_cr_ = false;
+  State state_ = State::kIdle;
 };
 
 }  // namespace strider

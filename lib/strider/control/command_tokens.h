@@ -1,6 +1,5 @@
-//! A command line's tokens: the line split at spaces and tabs, a token
-//! matched against words in flash, and tokens read as numbers checked
-//! against a range (command_line.h's grammar uses them).
+//! A command line's tokens: split at spaces and tabs, matched against words
+//! in flash, read as numbers checked against a range.
 #ifndef STRIDER_CONTROL_COMMAND_TOKENS_H
 #define STRIDER_CONTROL_COMMAND_TOKENS_H
 
@@ -68,8 +67,7 @@ inline ParseError number_arg(const Token& t, uint8_t decimals, int32_t lo, int32
   return ParseError::kNone;
 }
 
-//! Parses tokens[first..first+count) as numbers into cmd->arg[slot..], all with the
-//! same decimals and range, after checking the token count is exactly count.
+//! Exactly `count` tokens from `first` as numbers into cmd->arg[slot..].
 inline ParseError number_args(const Token* tokens, uint8_t ntokens, uint8_t first, uint8_t count,
                               uint8_t slot, uint8_t decimals, int32_t lo, int32_t hi, Command* cmd) {
   if (ntokens < first + count) return ParseError::kMissingArgument;

@@ -1,6 +1,5 @@
-//! CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF, no reflection, no final xor)
-//! for the settings record: detects every single-bit and every burst error
-//! up to 16 bits. Bitwise, no table: a settings record is checked once at boot.
+//! CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF, no reflection, no final
+//! xor), bitwise: the settings record and checked lines.
 #ifndef STRIDER_CONTROL_CRC_H
 #define STRIDER_CONTROL_CRC_H
 

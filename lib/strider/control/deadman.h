@@ -15,14 +15,12 @@ class Deadman {
   explicit Deadman(uint16_t timeout_ms = 1000) : last_ms_(0), timeout_ms_(timeout_ms) {}
 
   void set_timeout(uint16_t timeout_ms) { timeout_ms_ = timeout_ms; }  //!< 0 = off
-  uint16_t timeout_ms() const { return timeout_ms_; }
 
   //! A valid command arrived at now_ms (RC buttons repeat while held).
   void feed(uint32_t now_ms) { last_ms_ = now_ms; armed_ = true; }
 
-  //! True once when the robot is moving and the last command is older than
-  //! the timeout; the caller then stops and stands. Not moving keeps it quiet
-  //! (standing still needs no keep-alive) and restarts the wait.
+  //! True once when moving and the last command is older than the timeout;
+  //! not moving restarts the wait.
   bool expired(uint32_t now_ms, bool moving) {
     if (!moving || timeout_ms_ == 0) { last_ms_ = now_ms; armed_ = true; return false; }
     if (!armed_) return false;

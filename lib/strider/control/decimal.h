@@ -1,7 +1,6 @@
-//! Decimal number parsing for the text protocol without strtod/atof: an
-//! optional sign, digits, an optional '.' and digits, scaled to a fixed
-//! number of decimals and rounded half away from zero ("12.35" at 1 decimal
-//! -> 124). Overflow-checked in 32 bits; no heap, no float.
+//! Decimal number parsing without strtod: sign, digits, '.', digits, scaled
+//! to a fixed number of decimals, rounded half away from zero ("12.35" at 1
+//! decimal -> 124); overflow-checked in 32 bits, no float.
 #ifndef STRIDER_CONTROL_DECIMAL_H
 #define STRIDER_CONTROL_DECIMAL_H
 
@@ -16,8 +15,7 @@ enum class DecimalStatus : uint8_t { kOk = 0, kSyntax = 1, kOverflow = 2 };
 namespace detail {
 constexpr int32_t kDecimalLimit = 2000000000;  // a little under 2^31: value * 10 + 9 never overflows below it
 
-//! *value = *value * 10 + d (d 0-9) unless that passes kDecimalLimit: then
-//! false and *value unchanged. One copy for every digit of parse_decimal().
+//! *value = *value * 10 + d, or false past kDecimalLimit.
 STRIDER_NOINLINE inline bool push_digit(int32_t* value, uint8_t d) {
   if (*value > kDecimalLimit / 10) return false;
   const int32_t v = *value * 10 + d;

@@ -1,9 +1,6 @@
-//! The valid values an `err` reply names after its reason, so that a user
-//! at a terminal sees what the robot takes: `err 5 out of range: walk
-//! -500..500`, `err 1 unknown command: walk strafe ...`. The texts are in
-//! flash on the AVR (a few hundred bytes that would otherwise take RAM).
-//! Parser errors get theirs here (write_parse_error()); the controller's
-//! codes (20+) write their own, with the model's gaits and reach.
+//! The valid values an `err` reply names after its reason (`err 5 out of
+//! range: walk -500..500`), in flash on the AVR. The controller's codes
+//! (20+) write their own.
 #ifndef STRIDER_CONTROL_ERROR_HINTS_H
 #define STRIDER_CONTROL_ERROR_HINTS_H
 
@@ -19,9 +16,7 @@ namespace text {
 constexpr char kCommandList[] STRIDER_PROGMEM =
     "walk strafe turn vel stop relax speed gait pose height level set get avoid deadman baud cal save status help";
 
-//! The valid form of each command, in Usage order (command.h); command_line.h's
-//! ranges (test_command_parser checks that both ends are taken and no more).
-//! kGait's `NAME` stands for the model's gaits, which the controller writes.
+//! The valid form of each command, in Usage order; command_line.h's ranges.
 constexpr char kUsageHints[] STRIDER_PROGMEM =
     "\0"
     "walk -500..500\0"
@@ -61,9 +56,8 @@ constexpr char kGait_[] STRIDER_PROGMEM = "gait ";
 
 }  // namespace text
 
-//! `err <code> <reason>: <valid values>` for a parser error of c
-//! (c.error, c.usage). gaits: the model's gait names, written for `gait`'s
-//! NAME (none: the word NAME stays).
+//! `err <code> <reason>: <valid values>` for a parser error of c; gaits:
+//! the model's gait names, for `gait`'s NAME.
 inline void write_parse_error(ReplyWriter& w, const Command& c, const char* gaits_in_flash = nullptr) {
   const uint8_t code = uint8_t(c.error);
   const bool empty = c.error == ParseError::kUnknownCommand && c.usage == Usage::kEmptyLine;

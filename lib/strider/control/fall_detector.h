@@ -1,8 +1,6 @@
 //! FallDetector: whether the robot has tipped over, from the attitude
-//! filter's tilt (the angle between the body's z axis and the vertical).
-//! A tilt past kFallTiltDeg for kFallHoldTicks ticks in a row is a fall (a
-//! stumble's brief roll is not); the fall clears once the robot has been
-//! set upright, under kUprightTiltDeg for kUprightHoldTicks ticks.
+//! filter's tilt: past kFallTiltDeg for kFallHoldTicks ticks is a fall,
+//! under kUprightTiltDeg for kUprightHoldTicks ticks clears it.
 #ifndef STRIDER_CONTROL_FALL_DETECTOR_H
 #define STRIDER_CONTROL_FALL_DETECTOR_H
 

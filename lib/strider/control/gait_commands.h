@@ -1,6 +1,5 @@
-//! The gait commands and their replies, applied to a motion sink
-//! (motion_modes.h): `gait NAME` (err 23 names the robot's gaits), `set
-//! PARAM VALUE` (err 25 names what the walker allows) and `get`.
+//! The gait commands and their replies, applied to a motion sink: `gait
+//! NAME`, `set PARAM VALUE` and `get`.
 #ifndef STRIDER_CONTROL_GAIT_COMMANDS_H
 #define STRIDER_CONTROL_GAIT_COMMANDS_H
 
@@ -23,8 +22,7 @@ void apply_gait(Sink& sink, const Command& c, ReplyWriter& w) {
   w.text(FlashText{text::kOkGait_}).text(c.word);
 }
 
-//! `set PARAM VALUE`: `ok set step_height 15.00`, or err 25 with the
-//! parameter's range (the swing: the shapes allowed).
+//! `set PARAM VALUE`: `ok set step_height 15.00`, or err 25 with the range.
 template <typename Sink>
 void set_tuning(Sink& sink, const Command& c, ReplyWriter& w) {
   const TuneParam p = TuneParam(c.arg[0]);

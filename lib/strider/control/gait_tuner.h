@@ -1,13 +1,8 @@
 //! GaitTuner: the live gait parameters of the gait walked now (gait_tuning.h)
-//! applied to a WalkerMotion, checked against what its walker was built
-//! for, kept per gait in the store (gait_tuning_record.h).
-//!
-//! Each gait has its own parameters: a gait switch takes the new gait's
-//! saved ones, or the model's defaults (its GaitParams, the gait table's
-//! duty) when it has none; `save` keeps those of the gait walked now, with
-//! the body height. A change applies at the next stride: a new swing (step
-//! height, shape) to the feet that lift from then on, a new stride or cycle
-//! through the command's ramp, a new duty as a gait change does.
+//! applied to a WalkerMotion, checked against what its walker was built for,
+//! kept per gait in the store (gait_tuning_record.h). A gait switch takes the
+//! gait's saved set or the model's defaults; a change applies at the next
+//! stride (docs/protocol.md, "Live gait parameters").
 #ifndef STRIDER_CONTROL_GAIT_TUNER_H
 #define STRIDER_CONTROL_GAIT_TUNER_H
 
@@ -36,8 +31,7 @@ S from_hundredths(int32_t n) { return S(n) / S(100); }
 template <typename S, typename P = HostProfile<S>>
 class GaitTuner {
  public:
-  //! Takes the model's defaults from a walker just configured at them
-  //! (before any tuning).
+  //! Takes the model's defaults from a walker just configured at them.
   void configure(WalkerMotion<S, P>& motion) {
     const auto& c = motion.walker().engine().config();
     own_ = Own{c.step_height_mm, c.limits.preferred_stride_mm, c.limits.min_hz, c.shape};
@@ -45,17 +39,15 @@ class GaitTuner {
     origin_ = TuneOrigin::kDefault;
   }
 
-  //! After a gait switch (and at start-up): the gait's saved parameters,
-  //! or the defaults; a saved set that the walker no longer allows (a
-  //! record of another build) is left unused.
+  //! After a gait switch (and at start-up): the gait's saved parameters
+  //! when the walker allows them, or the defaults.
   template <typename Store>
   void use_gait(WalkerMotion<S, P>& motion, const Store& store) {
     live_ = gait_defaults(motion, own_duty_pct(motion));
     origin_ = TuneOrigin::kDefault;
     GaitTuning saved;
     if (read_gait_tuning(store, gait_index(motion.walker().leg_count(), motion.gait().name), &saved)) {
-      // The cycle's range depends on the duty and the duty's on the cycle:
-      // the saved set is checked against the ranges it makes itself.
+      // Checked against the ranges the saved set makes itself (cycle and duty).
       const GaitTuning own = live_;
       live_ = saved;
       if (tuning_allowed(bounds(motion), saved)) {
@@ -69,7 +61,7 @@ class GaitTuner {
   }
 
   //! Sets parameter p to v (its unit / 100; kSwing: a SwingShape); false
-  //! (nothing changed) when bounds() does not allow it.
+  //! when bounds() does not allow it.
   bool set(WalkerMotion<S, P>& motion, TuneParam p, int32_t v) {
     if (!in_tune_range(range(motion, p), p, v)) return false;
     switch (p) {
@@ -93,11 +85,10 @@ class GaitTuner {
     return st;
   }
 
-  //! What parameter p may be for the gait walked now: a step no higher
-  //! than the model's own (the stride limits were searched with it), any
-  //! preferred stride up to the longest a leg makes, a cycle the servos can
-  //! step at with the duty set, a duty that keeps the gait's support, a
-  //! swing under the model's own (kSwing: lo is the shapes' mask).
+  //! What parameter p may be for the gait walked now: a step no higher than
+  //! the model's own, a stride up to the longest a leg makes, a cycle the
+  //! servos step at, a duty that keeps the gait's support and whose swing
+  //! fits the cycle, a swing under the model's own (kSwing: lo is a mask).
   TuneRange range(const WalkerMotion<S, P>& motion, TuneParam p) const {
     using namespace gait_tuner_detail;
     const VelocityLimits<S, P::kSearch>& lim = motion.walker().engine().config().limits;
@@ -116,10 +107,7 @@ class GaitTuner {
         GaitTable own;
         load_gait(motion.walker().leg_count(), motion.gait().name, &own);
         TuneRange r = duty_range(own);
-        // A longer share down leaves the swing less time: at most the duty
-        // whose swing the servos make in the cycle set (1 - lift / cycle),
-        // so that what `get` shows is what the robot walks. The closed
-        // form within a step of it, then the cycle's own test.
+        // At most 1 - lift / cycle, then the cycle's own test.
         const int32_t most = 100 - (hundredths(lim.lift_ms / S(int32_t(live_.cycle_cs))) + 9) / 10;
         const int32_t gait_most = r.hi;
         if (most < r.hi) r.hi = most;
@@ -148,16 +136,14 @@ class GaitTuner {
 
   const GaitTuning& live() const { return live_; }
   TuneOrigin origin() const { return origin_; }
-  //! The shortest cycle [0.01 s] the servos step at with a duty of
-  //! duty_pct [0.01]: 1 / their fastest step rate, rounded up.
+  //! The shortest cycle [0.01 s] the servos step at with duty_pct, rounded up.
   static int32_t shortest_cycle_cs(const VelocityLimits<S, P::kSearch>& lim, int32_t duty_pct) {
     using namespace gait_tuner_detail;
     const int32_t lo = hundredths(S(1) / lim.servo_hz(S(0), from_hundredths<S>(duty_pct))) + 1;
     return lo > kMinCycleCs ? lo : kMinCycleCs;
   }
 
-  //! The model's own parameters (duty and height aside: the gait's own, the
-  //! standing height).
+  //! The model's own parameters (duty and height 0).
   GaitTuning own_tuning() const {
     using namespace gait_tuner_detail;
     return GaitTuning{uint16_t(hundredths(own_.step_height_mm)), uint16_t(hundredths(own_.stride_mm)),
@@ -165,18 +151,15 @@ class GaitTuner {
   }
 
  private:
-  //! The model's own values as the walker was configured with them: a
-  //! parameter set back to its own value gets these bits again.
+  //! The model's own values, bit for bit, for a parameter set back to them.
   struct Own {
     S step_height_mm, stride_mm, min_hz;
     SwingShape shape;
   };
   static constexpr char kHeightName[] STRIDER_PROGMEM = "height";
 
-  //! The gait's parameters by default: the model's, at the gait's duty
-  //! duty_pct, with the cycle the robot walks: no shorter than the servos
-  //! step at with that duty (a gait with a long share down, e.g. a wave,
-  //! steps slower than the model's cycle).
+  //! The gait's defaults: the model's at duty_pct, the cycle no shorter
+  //! than the servos step at with it.
   GaitTuning gait_defaults(const WalkerMotion<S, P>& motion, uint8_t duty_pct) const {
     GaitTuning t = own_tuning();
     t.duty_pct = duty_pct;
@@ -190,16 +173,13 @@ class GaitTuner {
     return load_gait(motion.walker().leg_count(), motion.gait().name, &own) ? duty_pct_of(own) : duty_pct_of(motion.gait());
   }
 
-  //! The body's height above the ground now [0.1 mm] (the standing height
-  //! and the `height` offset).
+  //! The body's height above the ground now [0.1 mm].
   static int32_t body_height_dmm(const WalkerMotion<S, P>& motion) {
     const S mm = motion.stand_height_mm() + motion.offsets().translation_mm.z;
     return (gait_tuner_detail::hundredths(mm) + 5) / 10;
   }
 
-  //! live_ into the walker, what differs from what it walks: swing, stride
-  //! and cycle (planned again), duty (a gait change). A value equal to the
-  //! model's own is its own value, bit for bit.
+  //! live_ into the walker, what differs from what it walks.
   void apply(WalkerMotion<S, P>& motion) {
     using namespace gait_tuner_detail;
     auto& e = motion.walker().engine();
@@ -209,8 +189,7 @@ class GaitTuner {
                                                                    : from_hundredths<S>(live_.step_height_cmm);
     const S stride = live_.step_length_cmm == mine.step_length_cmm ? own_.stride_mm
                                                                    : from_hundredths<S>(live_.step_length_cmm);
-    // The model's cycle, or the servos' shortest one at this duty when that
-    // is longer (what the engine steps at with the model's cycle too).
+    // The model's cycle, or the servos' longer shortest one at this duty.
     const bool own_cycle = live_.cycle_cs == mine.cycle_cs ||
                            (live_.cycle_cs > mine.cycle_cs && live_.cycle_cs == shortest_cycle_cs(c.limits, live_.duty_pct));
     const S hz = own_cycle ? own_.min_hz : S(100) / S(int32_t(live_.cycle_cs));

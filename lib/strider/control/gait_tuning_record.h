@@ -1,21 +1,14 @@
-//! The gait tunings in a ByteStore (the Mega's EEPROM), after the settings'
-//! two slots: a record of its own, so that settings images written before
-//! it load unchanged (its bytes were erased there: no tuning, the gaits'
-//! defaults). One entry per gait of the model's list (gait_library.h),
-//! two slots written in turn like the settings (settings_store.h):
+//! The gait tunings in a ByteStore after the settings' two slots, a record
+//! of its own (settings images written before it load unchanged): one entry
+//! per gait of the model's list, two slots written in turn like the settings:
 //!   'G' 'T' version entry_bytes seq_lo seq_hi  entries[kTunedGaits]  crc_lo crc_hi
 //!   entry: used h_lo h_hi l_lo l_hi c_lo c_hi duty shape z_lo z_hi   (GaitTuning)
-//! The CRC (CRC-16/CCITT-FALSE) covers everything before it. A save writes
-//! the older slot, its magic erased first and written last: a save cut
-//! short leaves the other slot's record in force. Byte by byte, no copy of
-//! the record in RAM.
 #ifndef STRIDER_CONTROL_GAIT_TUNING_RECORD_H
 #define STRIDER_CONTROL_GAIT_TUNING_RECORD_H
 
 #include <stdint.h>
 
 #include "../gait/gait_tuning.h"
-#include "crc.h"
 #include "settings_record.h"
 #include "settings_store.h"
 
@@ -27,14 +20,12 @@ constexpr uint8_t kGaitTuningEntryBytes = 11;
 constexpr uint8_t kGaitTuningHeaderBytes = 6;
 constexpr uint16_t kGaitTuningRecordBytes = kGaitTuningHeaderBytes + kTunedGaits * kGaitTuningEntryBytes + 2;
 constexpr uint16_t kGaitTuningSlotBytes = 64;
-//! Where the tuning slots start: after the settings' slots.
 constexpr uint16_t kGaitTuningBase = kSettingsStoreBytes;
 constexpr uint16_t kGaitTuningStoreEnd = kGaitTuningBase + 2 * kGaitTuningSlotBytes;
 constexpr uint8_t kGaitTuningMagic0 = 'G', kGaitTuningMagic1 = 'T';
 static_assert(kGaitTuningRecordBytes <= kGaitTuningSlotBytes, "a tuning record fits its slot");
 
-//! The newest valid tuning record: its slot (0, 1; kNoSettingsSlot: none)
-//! and sequence number.
+//! The newest valid tuning record's slot (kNoSettingsSlot: none) and seq.
 struct GaitTuningSlot {
   uint8_t slot = kNoSettingsSlot;
   uint16_t seq = 0;
@@ -52,10 +43,7 @@ bool valid_slot(const Store& store, uint8_t slot, uint16_t* seq) {
   if (store.read(at) != kGaitTuningMagic0 || store.read(uint16_t(at + 1)) != kGaitTuningMagic1 ||
       store.read(uint16_t(at + 2)) != kGaitTuningVersion || store.read(uint16_t(at + 3)) != kGaitTuningEntryBytes)
     return false;
-  const uint16_t crc_at = uint16_t(kGaitTuningRecordBytes - 2);
-  uint16_t crc = kCrc16Init;
-  for (uint16_t i = 0; i < crc_at; ++i) crc = crc16_ccitt_update(crc, store.read(uint16_t(at + i)));
-  if (crc != detail::read_u16(store, uint16_t(at + crc_at))) return false;
+  if (!detail::crc_follows(store, at, uint16_t(kGaitTuningRecordBytes - 2))) return false;
   *seq = detail::read_u16(store, uint16_t(at + 4));
   return true;
 }
@@ -70,7 +58,6 @@ inline void entry_bytes(const GaitTuning& t, uint8_t* b) {
 }
 }  // namespace gait_tuning_record_detail
 
-//! Whether the store has room for the tuning record.
 template <typename Store>
 bool gait_tuning_fits(const Store& store) {
   return uint32_t(kGaitTuningStoreEnd) <= store.size();
@@ -109,9 +96,8 @@ bool read_gait_tuning(const Store& store, uint8_t gait, GaitTuning* out) {
   return true;
 }
 
-//! Writes a record with gait number `gait`'s entry `t` and every other
-//! entry as the newest record has it (none: unused) into the older slot.
-//! kOk, kWriteFailed, or kNoSpace (the store is too small).
+//! Writes gait `gait`'s entry t and the newest record's others into the
+//! older slot: kOk, kWriteFailed or kNoSpace.
 template <typename Store>
 STRIDER_NOINLINE SettingsStatus save_gait_tuning(Store& store, uint8_t gait, const GaitTuning& t) {
   using namespace gait_tuning_record_detail;
@@ -122,28 +108,15 @@ STRIDER_NOINLINE SettingsStatus save_gait_tuning(Store& store, uint8_t gait, con
   const uint16_t at = slot_address(slot);
   uint8_t mine[kGaitTuningEntryBytes];
   entry_bytes(t, mine);
-  if (!detail::put_byte(store, at, kErasedByte)) return SettingsStatus::kWriteFailed;
   const uint8_t head[kGaitTuningHeaderBytes] = {kGaitTuningMagic0, kGaitTuningMagic1, kGaitTuningVersion,
                                                 kGaitTuningEntryBytes, uint8_t(seq), uint8_t(seq >> 8)};
-  uint16_t crc = kCrc16Init;
-  for (uint8_t i = 0; i < kGaitTuningHeaderBytes; ++i) {
-    crc = crc16_ccitt_update(crc, head[i]);
-    if (i != 0 && !detail::put_byte(store, uint16_t(at + i), head[i])) return SettingsStatus::kWriteFailed;
-  }
-  for (uint8_t g = 0; g < kTunedGaits; ++g)
-    for (uint8_t k = 0; k < kGaitTuningEntryBytes; ++k) {
-      // Another gait's entry: the newest record's byte (unused without one).
-      const uint8_t b = g == gait ? mine[k]
-                        : found.slot == kNoSettingsSlot ? uint8_t(0)
-                                                         : store.read(entry_address(found.slot, g) + k);
-      crc = crc16_ccitt_update(crc, b);
-      if (!detail::put_byte(store, uint16_t(entry_address(slot, g) + k), b)) return SettingsStatus::kWriteFailed;
-    }
-  const uint16_t crc_at = uint16_t(at + kGaitTuningRecordBytes - 2);
-  if (!detail::put_byte(store, crc_at, uint8_t(crc)) || !detail::put_byte(store, uint16_t(crc_at + 1), uint8_t(crc >> 8)) ||
-      !detail::put_byte(store, at, kGaitTuningMagic0))
-    return SettingsStatus::kWriteFailed;
-  return SettingsStatus::kOk;
+  return write_checked_record(store, at, uint16_t(kGaitTuningRecordBytes - 2), [&](uint16_t i) -> uint8_t {
+    if (i < kGaitTuningHeaderBytes) return head[i];
+    const uint8_t g = uint8_t((i - kGaitTuningHeaderBytes) / kGaitTuningEntryBytes);
+    const uint8_t k = uint8_t((i - kGaitTuningHeaderBytes) % kGaitTuningEntryBytes);
+    if (g == gait) return mine[k];
+    return found.slot == kNoSettingsSlot ? uint8_t(0) : store.read(uint16_t(entry_address(found.slot, g) + k));
+  });
 }
 
 }  // namespace strider

@@ -1,8 +1,6 @@
-//! The hardware seams of the control layer. lib/ never touches hardware:
-//! firmware binds these to Arduino drivers, tests to fakes (test/control/
-//! fakes), the simulator to physics. They are compile-time concepts (template
-//! parameters) rather than virtual classes, so the AVR pays no vtable or
-//! indirect call; each is documented here with the exact members required.
+//! The hardware seams of the control layer, as compile-time concepts
+//! (template parameters, no vtables on the AVR); firmware binds them to
+//! drivers, tests to fakes, the simulator to physics. Members required:
 //!
 //! ServoOutput   void write_ticks(uint8_t channel, uint16_t off_ticks);
 //!               void set_prescale(uint8_t prescale);   // board sleeps, writes, restarts
@@ -28,7 +26,6 @@ enum class EchoKind : uint8_t {
   kNoEdge = 1,   //!< no echo edge at all before the driver's deadline (missing echo)
 };
 
-//! One ping's result from a RangeSensor.
 struct EchoSample {
   EchoKind kind;      //!< echo or missing echo
   uint16_t width_us;  //!< echo pulse width [us] (kEcho only)
@@ -38,8 +35,7 @@ struct EchoSample {
 //! Elapsed time between two wrapping microsecond (or millisecond) stamps.
 constexpr uint32_t elapsed(uint32_t now, uint32_t since) { return now - since; }
 
-//! A ByteStore over a plain array: the in-memory EEPROM of tests and the
-//! simulator, and a template for real drivers.
+//! A ByteStore over a plain array (the EEPROM of tests and the simulator).
 template <uint16_t kSize>
 struct ArrayByteStore {
   uint8_t bytes[kSize];

@@ -1,7 +1,6 @@
 //! Where a servo stage's channels come from (JointChannelSource): a constant
-//! of its model (joint_channels(): a firmware keeps its model's in flash, a
-//! build profile's kChannels) or made from the model; and whether a model's
-//! joints fit a stage's tick-map slots.
+//! of its model (joint_channels(), in flash on a firmware) or made from the
+//! model at run time; and whether a model's joints fit a stage's slots.
 #ifndef STRIDER_CONTROL_JOINT_CHANNELS_H
 #define STRIDER_CONTROL_JOINT_CHANNELS_H
 
@@ -15,15 +14,13 @@ namespace strider {
 
 constexpr uint16_t kFramePeriodMs = 20;  //!< nominal frame period for the slew limit [ms] (50 Hz)
 
-//! Whether model m's joints fit a tick map of `slots` slots
-//! (servo_tick_map.h): 0, every joint its own range; else one slot per joint
-//! of a leg, for legs of one geometry, whose joints of a slot share a range.
+//! Whether model m's joints fit a tick map of `slots` slots (0, or one per
+//! joint of a leg for legs of one geometry).
 STRIDER_ALWAYS_INLINE constexpr bool servo_tick_slots_fit(const RobotModel& m, uint8_t slots) {
   return slots == 0 || (slots == m.dof() && leg_solver_count(m) == 1);
 }
 
-//! Joint k's channel is range[k % kRanges] with output[k] and direction[k]
-//! (legs of one geometry share their ranges: kSlots of them).
+//! Joint k's channel is range[k % kRanges] with output[k] and direction[k].
 template <typename S, uint8_t N, uint8_t kSlots = 0>
 struct JointChannels {
   static constexpr uint8_t kRanges = kSlots != 0 ? kSlots : N;
@@ -62,18 +59,14 @@ constexpr JointChannels<S, N, kSlots> joint_channels(const RobotModel& m) {
                                                           typename walker_detail::MakeIndices<N>::type());
 }
 
-//! A stage's joint channels for build profile P: made from the model
-//! (make_joint_channel(); the stage reads the model for them), or
+//! A stage's joint channels for build profile P: made from the model, or
 //! (P::kStoredChannels) read from the constant P::kChannels.
 template <typename S, typename P, bool kStored = P::kStoredChannels>
 struct JointChannelSource {
-  //! Joints of m the stage drives (0: m does not fit it).
   static uint8_t count(const RobotModel& m) {
     return m.joint_count() <= P::kJoints && servo_tick_slots_fit(m, P::kTickSlots) ? channel_map_count(m) : uint8_t(0);
   }
-  //! Joint j's slew step per frame [us].
   static uint16_t step_us(ServoPart part, uint8_t) { return servo_step_us(servo_travel(part).speed_deg_s); }
-  //! Joint k = leg dof + j's channel.
   static ServoChannel<S> channel(const RobotModel& m, uint8_t leg, uint8_t j, uint8_t) {
     return make_joint_channel<S>(m, leg, j);
   }

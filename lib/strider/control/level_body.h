@@ -1,22 +1,8 @@
-//! LevelBody: holds the body level on a slope (`level on`). A small integral
-//! controller on the attitude filter's roll and pitch drives the body pose's
-//! roll and pitch (the `pose` command's machinery): standing on a ramp, the
-//! feet follow the ground and the body turns against its tilt.
-//!
-//!   pose <- pose - kLevelGain x T x (roll, pitch)     every T = kLevelEveryTicks ticks
-//!
-//! Measured tilt = ground tilt + body pose (small angles), so the pose settles
-//! at minus the ground's tilt with a time constant of 1 / kLevelGain. Its
-//! state is the body pose itself: a pose the legs cannot reach is refused by
-//! the walker and the pose stays where it was (no wind-up); a `pose` command
-//! moves it and the level brings roll and pitch back from there. Updating
-//! every fifth tick keeps the reach check (one IK per leg) off most ticks.
-//!
-//! It also keeps the gains with which the filter learns the gyro's offset
-//! at power-up: while the robot sits and stands up for the first time the
-//! filter runs with faster gains (kLearnKp, kLearnKi: both poles at -2/s
-//! instead of -0.5/s), so that an uncalibrated part's offset (up to 20 deg/s)
-//! is learnt in about 3 s, not 15.
+//! LevelBody: holds the body level on a slope (`level on`): an integral
+//! controller on the attitude's roll and pitch drives the body pose's, every
+//! kLevelEveryTicks ticks (docs/imu.md, "Level body"). A pose the legs
+//! cannot reach is refused and stays (no wind-up). It also keeps the fast
+//! gains with which the filter learns the gyro's offset at power-up.
 #ifndef STRIDER_CONTROL_LEVEL_BODY_H
 #define STRIDER_CONTROL_LEVEL_BODY_H
 
@@ -43,17 +29,14 @@ class LevelBody {
   }
   bool enabled() const { return on_; }
 
-  //! The filter's gains g with kp and ki for learning the gyro's offset at
-  //! power-up (learning), or the defaults'. (Two fields changed in a copy of
-  //! the filter's own: a whole constant set would take 16 bytes of RAM on the AVR.)
+  //! The filter's gains g with the learning or the default kp and ki (a
+  //! copy: a whole constant set would take 16 bytes of RAM on the AVR).
   static AttitudeGains<S> learning_gains(AttitudeGains<S> g, bool learning) {
     constexpr S kp = attitude_gains_default<S>().kp, ki = attitude_gains_default<S>().ki;
     g.kp = learning ? scalar<S>(kLearnKp) : kp;
     g.ki = learning ? scalar<S>(kLearnKi) : ki;
     return g;
   }
-  //! Learning starts with an IMU (RobotApp: present at power-up) and ends
-  //! once the robot first stands.
   void start_learning() { learning_ = true; }
   bool learning() const { return learning_; }
   void stop_learning() { learning_ = false; }

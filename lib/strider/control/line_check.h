@@ -1,15 +1,6 @@
-//! Checked lines (docs/protocol.md, "Checked lines"), NMEA-like: `$`, the
-//! text, `*` and four hex digits, the CRC-16/CCITT-FALSE (crc.h) of the text
-//! between `$` and `*`; the reply to one is its text followed by `*hhhh`.
-//! A program that needs to know that a line arrived as sent, and that a
-//! reply is the one to it, sends checked lines; phone apps keep plain ones.
-//!
-//! The `$` marks a line as checked from its first byte, so a checked line
-//! that lost its end (or was glued to the tail of another) is refused rather
-//! than read as a plain one; a CRC-16 catches every change of up to 16
-//! consecutive bits and all but one in 65,536 others. The robot writes the
-//! digits in lowercase (and reads either case): a line's tail that lost its
-//! head can then not begin with the RC buttons `B` or `F`.
+//! Checked lines (docs/protocol.md, "Checked lines"): `$`, the text, `*` and
+//! four hex digits, the CRC-16/CCITT-FALSE (crc.h) of the text; the reply to
+//! one is its text followed by `*hhhh`, written in lowercase (read in either).
 #ifndef STRIDER_CONTROL_LINE_CHECK_H
 #define STRIDER_CONTROL_LINE_CHECK_H
 
@@ -25,9 +16,7 @@ constexpr uint8_t kLineCheckBytes = 5;  //!< `*hhhh`
 
 //! The CRC of a line's text.
 inline uint16_t line_crc(const char* text, uint16_t len) {
-  uint16_t crc = kCrc16Init;
-  for (uint16_t i = 0; i < len; ++i) crc = crc16_ccitt_update(crc, uint8_t(text[i]));
-  return crc;
+  return crc16_ccitt(reinterpret_cast<const uint8_t*>(text), len);
 }
 
 //! A hex digit's value (either case), or -1.
@@ -38,9 +27,8 @@ inline int8_t hex_digit_value(char c) {
   return -1;
 }
 
-//! A checked line (len bytes from its `$`, no line ending) -> true when it
-//! ends in `*hhhh` and hhhh is the CRC of its text, which is then at
-//! line + 1 and *text_len long.
+//! True when a checked line (from its `$`, no line ending) ends in `*hhhh`
+//! with the CRC of its text, then at line + 1, *text_len long.
 inline bool check_line(const char* line, uint8_t len, uint8_t* text_len) {
   if (len < 1 + kLineCheckBytes || line[0] != kLineCheckStart || line[len - kLineCheckBytes] != kLineCheckMark)
     return false;
@@ -54,8 +42,7 @@ inline bool check_line(const char* line, uint8_t len, uint8_t* text_len) {
   return line_crc(line + 1, *text_len) == check;
 }
 
-//! Writes `*hhhh` (lowercase) and a NUL after text[0..len): a reply to a
-//! checked line. text must have room for kLineCheckBytes + 1 more bytes.
+//! Writes `*hhhh` and a NUL after text[0..len) (room for kLineCheckBytes + 1).
 inline void append_line_check(char* text, uint16_t len) {
   uint16_t crc = line_crc(text, len);
   char* p = text + len;

@@ -1,14 +1,9 @@
-//! RobotApp's links. The notices it sends to every port (boot, servo
-//! boards, battery, fall), each a line of its own; Link: `void
-//! send_line(uint8_t port, const char* line)`, line without its ending, port
-//! kAllPorts every port. LinkPorts: its input, one CommandParser per port
-//! so that two links never mix their bytes. Each parse result goes to the
-//! controller and its reply back to the port it came from, a checked line's
-//! reply checked too; a partial line older than kLineIdleMs is dropped
-//! (`err 8`). The reply is written into a member, not a stack buffer: a
-//! command may reconfigure the walker (a gait, a height), the deepest call
-//! chain there is, and the soak's random input took the stack past its
-//! 1 KB budget (1,029 B on sprawl8) with the 320-byte line of then under it.
+//! RobotApp's links: the notices it sends to every port (Link: `void
+//! send_line(uint8_t port, const char* line)`, kAllPorts every port), and
+//! LinkPorts, one CommandParser per port, each reply back to the port its
+//! line came from (a checked line's checked too). The reply is written into
+//! a member, not onto the stack: a command may reconfigure the walker, the
+//! deepest call chain there is (docs/reliability.md).
 #ifndef STRIDER_CONTROL_LINK_PORTS_H
 #define STRIDER_CONTROL_LINK_PORTS_H
 
@@ -49,9 +44,8 @@ STRIDER_NOINLINE void send_board_notice(FlashText head, uint8_t b, FlashText tai
   link.send_line(kAllPorts, line.buf);
 }
 
-//! Which record the settings came from: ` slot=1 seq=7`, or ` version=1`
-//! (the single record before the slots); ` other=corrupt` (old_version,
-//! invalid) when the other slot holds neither a record nor erased bytes.
+//! Which record the settings came from: ` slot=1 seq=7` or ` version=1`,
+//! and ` other=corrupt` when the other slot holds neither record nor erased bytes.
 inline void describe_record(ReplyWriter& w, const SettingsRecord& r) {
   if (r.version == kSettingsSingleRecordVersion) {
     w.field(FlashText{text::kVersion}, r.version);
@@ -62,8 +56,7 @@ inline void describe_record(ReplyWriter& w, const SettingsRecord& r) {
     w.field_text(FlashText{text::kOther}, to_flash(r.other));
 }
 
-//! The boot notices: model and boards (or `error`, the start-up
-//! configuration's error line in flash: err 30, 37, 38), how the settings loaded.
+//! The boot notices: model and boards (or `error`, in flash), how the settings loaded.
 template <typename Link>
 STRIDER_NOINLINE void send_boot_notices(const char* error, const char* name, uint8_t joints, uint8_t boards,
                                         const SettingsRecord& record, Link& link) {
@@ -88,8 +81,7 @@ STRIDER_NOINLINE void send_boot_notices(const char* error, const char* name, uin
   link.send_line(kAllPorts, buf);
 }
 
-//! Ctl: a Controller; Cal: the `cal level` measurement (LevelCalibration),
-//! whose tag keeps the port of its deferred reply.
+//! Ctl: a Controller; Cal: the LevelCalibration whose tag keeps the port of its reply.
 template <typename Ctl, typename Cal>
 class LinkPorts {
  public:
@@ -106,12 +98,9 @@ class LinkPorts {
     reply(port, r, c, now_ms, ctl, cal, link);
   }
 
-  //! The receiver of link `port` may have dropped bytes before the next one
-  //! (its buffer was full), which comes at now_us: the line they damage is
-  //! answered `err 10` at its end and never runs (CommandParser::lost()).
-  //! After kLineIdleMs of silence since the last byte, the bytes were lost at
-  //! the end of what was sent: the line they belonged to is abandoned as the
-  //! idle timeout does (`err 8`), and the next byte starts afresh.
+  //! Link `port` may have dropped bytes before the next one, at now_us: the
+  //! line they damage gets `err 10` (CommandParser::lost()); after
+  //! kLineIdleMs of silence they ended what was sent: `err 8`, as idle.
   template <typename Link>
   void on_bytes_lost(uint8_t port, uint32_t now_us, Ctl& ctl, Cal& cal, Link& link) {
     if (port >= kLinkPorts) return;
@@ -134,8 +123,7 @@ class LinkPorts {
     }
   }
 
-  //! The deferred reply to `cal level`, at the measurement's end, to the
-  //! port in its tag.
+  //! The deferred reply to `cal level`, to the port in its tag.
   template <typename Link>
   void level_cal_reply(LevelCalStatus st, int8_t x, int8_t y, uint8_t tag, Ctl& ctl, Link& link) {
     const bool checked = (tag & kChecked) != 0;
@@ -163,7 +151,6 @@ class LinkPorts {
   template <typename Link>
   STRIDER_NOINLINE void reply_line(uint8_t port, ParseResult r, const Command& c, uint32_t now_ms, Ctl& ctl, Cal& cal,
                                    Link& link) {
-    // A checked line gets a checked reply: room for its `*hhhh` kept free.
     const bool checked = c.source == CommandSource::kCheckedLine;
     ReplyWriter w(reply_buf_, uint16_t(sizeof reply_buf_ - (checked ? kLineCheckBytes : 0)));
     if (!ctl.on_parsed(r, c, now_ms, w)) return;

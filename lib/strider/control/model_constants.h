@@ -1,6 +1,5 @@
-//! A model's figures that a firmware keeps as compile-time constants
-//! (RobotApp's kAvoidClearMm and kStoredGait): avoidance's clearing distance
-//! and the default gait's name.
+//! A model's figures that a firmware keeps as compile-time constants:
+//! avoidance's clearing distance and the default gait's name.
 #ifndef STRIDER_CONTROL_MODEL_CONSTANTS_H
 #define STRIDER_CONTROL_MODEL_CONSTANTS_H
 

@@ -1,8 +1,7 @@
 //! MotionModes: the controller's robot mode and walking command. Motion
-//! commands (walk, the RC pad, stop, relax) change the mode and go to the
-//! motion sink; every tick the deadman and obstacle avoidance refine the
-//! command; a servo fault, a critical battery or a fall stop the walk and
-//! refuse motion until cleared.
+//! commands change the mode and go to the motion sink; every tick the
+//! deadman and obstacle avoidance refine the command; a servo fault, a
+//! critical battery or a fall stop the walk and refuse motion until cleared.
 //!
 //! MotionSink members (template concept, no virtual calls):
 //!   void set_velocity(const Twist& v);   // [0.1 mm/s], [0.1 deg/s]; zero = step in place/stop;
@@ -10,15 +9,14 @@
 //!   void stand();                         // stop walking and stand
 //!   void relax();                         // servos limp
 //!   bool set_gait(const char* name);      // false: no such gait for this robot
-//!   void choose_pad_gait(const Twist& v); // an RC button's speed: the gait for it (gait/gait_choice.h)
-//!   RcLimits pad_limits();                // the RC buttons' speeds at 100 % (walker_motion.h)
+//!   void choose_pad_gait(const Twist& v); // an RC button's speed: the gait for it
+//!   RcLimits pad_limits();                // the RC buttons' speeds at 100 %
 //!   bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw);  // [0.1 deg]; false: refused
 //!   bool set_body_height(int32_t height); // [0.1 mm]; false: out of the robot's range
-//!   bool set_level(bool on);              // hold the body level (level_body.h); false: no IMU
-//!   LevelCalStart start_level_cal();      // `cal level`: measure the accelerometer's offsets
-//!                                         // (kStarted: the reply follows, level_cal_done())
+//!   bool set_level(bool on);              // hold the body level; false: no IMU
+//!   LevelCalStart start_level_cal();      // `cal level` (kStarted: level_cal_done() replies)
 //!   const char* gait_names();             // the robot's gaits, space-separated, in flash
-//!   const MotionReach& reach();           // heights and angles it reaches (motion_reach.h)
+//!   const MotionReach& reach();           // heights and angles it reaches
 //!   void apply_settings(const Settings& s);  // trims, oscillator, PWM frequency
 //!   void write_status(ReplyWriter& w);    // appends its own ` key=value` fields to `status`
 #ifndef STRIDER_CONTROL_MOTION_MODES_H
@@ -42,24 +40,19 @@ class MotionModes {
       : sink_(sink), cmd_{0, 0, 0}, out_{0, 0, 0}, mode_(RobotMode::kStanding), avoid_clear_mm_(0),
         servo_fault_(false) {}
 
-  //! The servos cannot walk (RobotApp: a servo board does not answer, or
-  //! its legs are being switched on again): a walk stops and the robot
-  //! stands; motion commands are refused with err 31 until cleared. Stop,
-  //! relax and everything else still work.
+  //! The servos cannot walk (a board silent or starting again): a walk
+  //! stops; motion commands are refused with err 31 until cleared.
   void set_servo_fault(bool fault) {
     if (fault && !servo_fault_ && mode_ == RobotMode::kWalking) stop();
     servo_fault_ = fault;
   }
-  //! The battery is critically low (RobotApp): like a servo fault, a walk
-  //! stops and motion commands are refused, with err 32, until it recovers.
+  //! The battery is critically low: as a servo fault, with err 32.
   void set_battery_critical(bool critical) {
     if (critical && !battery_critical_ && mode_ == RobotMode::kWalking) stop();
     battery_critical_ = critical;
   }
-  //! The robot tipped over (RobotApp, from the IMU): the servos go limp
-  //! (relaxed, so that no leg fights the ground) and motion commands are
-  //! refused, with err 33, until it is upright again; then a motion command
-  //! wakes it as after `relax`.
+  //! The robot tipped over: the servos go limp and motion commands are
+  //! refused (err 33) until it is upright again.
   void set_fallen(bool fallen) {
     if (fallen && !fallen_ && mode_ != RobotMode::kCalibrating) {
       cmd_ = out_ = Twist{0, 0, 0};
@@ -70,8 +63,7 @@ class MotionModes {
   }
   bool fallen() const { return fallen_; }
 
-  //! How far the body walks sideways after the sensor sees the way clear:
-  //! the robot's half-width with its feet (RobotApp sets it from the model).
+  //! How far the body walks sideways after the way is clear (its half-width).
   void set_avoid_clear_mm(uint16_t mm) { avoid_clear_mm_ = mm; }
 
   RobotMode mode() const { return mode_; }
@@ -79,8 +71,7 @@ class MotionModes {
   uint8_t speed_pct() const { return speed_pct_; }
 
  protected:
-  //! Deadman and avoidance (with the settings' limits) on the walking
-  //! command. True when *w holds a notice (`info ...`).
+  //! Deadman and avoidance on the walking command; true when *w holds a notice.
   bool tick_motion(uint32_t now_ms, const SonarReading& sonar, const Settings& settings, ReplyWriter& w,
                    int32_t walked_vy) {
     sonar_ = sonar;

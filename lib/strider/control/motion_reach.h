@@ -1,10 +1,7 @@
-//! MotionReach: the body heights and angles the robot's legs reach from its
-//! standing pose, as whole millimetres and degrees, for the replies that
-//! name them (`help`, `err 24 height refused: 40..98`). Found once at
-//! start-up by bisection (find_motion_reach()), with the body level for the
-//! height and one angle at a time at the standing height for the pose: a
-//! tilted body reaches less, so a pose or height inside these ranges may
-//! still be refused in combination with another.
+//! MotionReach: the body heights and angles the legs reach from the standing
+//! pose, in whole mm and degrees, for the replies that name them; found once
+//! by bisection, the height with the body level and one angle at a time (in
+//! combination a pose inside these may still be refused).
 #ifndef STRIDER_CONTROL_MOTION_REACH_H
 #define STRIDER_CONTROL_MOTION_REACH_H
 
@@ -29,9 +26,7 @@ inline int16_t whole_mm(float mm) { return int16_t(mm + 0.5f); }
 inline int16_t whole_mm(Fixed mm) { return int16_t((mm.raw() + (Fixed::kOneRaw / 2)) >> Fixed::kFracBits); }
 
 namespace motion_reach_detail {
-//! The last value from `good` (taken) toward `bad` (refused, or outside the
-//! command's range) that ok() takes, bisecting: ok() is assumed to take
-//! everything from good to the edge and nothing past it.
+//! The last value from `good` toward `bad` that ok() takes, bisecting.
 template <typename Ok>
 int16_t edge(int16_t good, int16_t bad, Ok ok) {
   while (bad - good > 1 || good - bad > 1) {

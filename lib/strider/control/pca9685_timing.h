@@ -1,12 +1,7 @@
 //! Pca9685Timing: PWM prescale and pulse-width -> 12-bit tick conversion for
-//! the PCA9685, from the board's calibrated oscillator frequency.
-//!
-//! The internal oscillator is 23-27 MHz, not the nominal 25 MHz, so the
-//! frequency is a per-board setting. Datasheet (PCA9685 rev. 4, 7.3.5):
-//!   prescale = round(osc_hz / (4096 * pwm_hz)) - 1, valid 3..255.
-//! The actual PWM period is then (prescale + 1) * 4096 / osc_hz, and one tick
-//! lasts (prescale + 1) / osc_hz. Everything is computed once in configure();
-//! pulse_ticks() is integer-only (no 64-bit, no float) for the servo loop.
+//! the PCA9685, from the board's calibrated oscillator frequency (23-27 MHz,
+//! not the nominal 25: docs/calibration.md, "The PCA9685 oscillator").
+//! Computed once in configure(); pulse_ticks() is integer-only.
 #ifndef STRIDER_CONTROL_PCA9685_TIMING_H
 #define STRIDER_CONTROL_PCA9685_TIMING_H
 
@@ -41,19 +36,15 @@ inline uint8_t pca9685_prescale(uint32_t osc_hz, uint16_t pwm_hz, PwmTimingStatu
   return uint8_t(p);
 }
 
-//! Cached PCA9685 timing: configure once (and after a calibration change),
-//! then convert pulse widths every frame without touching the bus.
 class Pca9685Timing {
  public:
   Pca9685Timing() { configure(kPca9685NominalOscHz, 50); }
 
-  //! Computes and caches the prescale and the period for osc_hz [Hz] and
-  //! pwm_hz [Hz]. On kBadOscillator the previous configuration is kept.
+  //! On kBadOscillator the previous configuration is kept.
   PwmTimingStatus configure(uint32_t osc_hz, uint16_t pwm_hz) {
     if (osc_hz < kPca9685MinOscHz || osc_hz > kPca9685MaxOscHz) return PwmTimingStatus::kBadOscillator;
     PwmTimingStatus status = PwmTimingStatus::kOk;
     prescale_ = pca9685_prescale(osc_hz, pwm_hz, &status);
-    osc_hz_ = osc_hz;
     // Period in 1/64 us: (p + 1) * 4096 * 64e6 / osc. (p + 1) * 262144 <= 6.8e7,
     // then times 1e6 / osc as long division in three base-100 steps, so every
     // intermediate stays below 2^32 (x < osc <= 3e7, x * 100 < 3e9).
@@ -71,7 +62,6 @@ class Pca9685Timing {
   }
 
   uint8_t prescale() const { return prescale_; }      //!< value for the PRESCALE register
-  uint32_t osc_hz() const { return osc_hz_; }         //!< oscillator the cache was built for [Hz]
   //! Actual PWM period [1/64 us] after prescale rounding (<= 3.4e6).
   uint32_t period_x64() const { return period_x64_; }
 
@@ -103,7 +93,6 @@ class Pca9685Timing {
   }
 
  private:
-  uint32_t osc_hz_ = kPca9685NominalOscHz;
   uint32_t period_x64_ = 1280000ul;
   uint8_t prescale_ = 121;
 };

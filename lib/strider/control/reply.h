@@ -1,6 +1,5 @@
 //! ReplyWriter: builds one reply line (`ok ...` / `err <code> <reason>`) in a
-//! caller's buffer without printf: text, integers and tenths. Output is
-//! always NUL-terminated and truncated, never overrun, when the buffer is full.
+//! caller's buffer without printf, always NUL-terminated, truncated when full.
 #ifndef STRIDER_CONTROL_REPLY_H
 #define STRIDER_CONTROL_REPLY_H
 
@@ -12,19 +11,16 @@
 
 namespace strider {
 
-//! Text in program memory on the AVR (a namespace-scope array declared with
-//! STRIDER_PROGMEM, see reply_texts.h), in ordinary memory elsewhere.
+//! Text in program memory on the AVR (STRIDER_PROGMEM), in RAM elsewhere.
 struct FlashText {
   const char* p;
 };
 
-//! One character of a FlashText.
 inline char flash_char(const char* p) { return char(flash_u8(p)); }
 
 constexpr char kUnknownName[] STRIDER_PROGMEM = "?";
 
-//! Entry `index` of `count` NUL-separated names kept in one flash string
-//! (an enum's names in value order); "?" past the end.
+//! Entry `index` of `count` NUL-separated names in flash; "?" past the end.
 inline FlashText flash_name(const char* names, uint8_t count, uint8_t index) {
   if (index >= count) return FlashText{kUnknownName};
   const char* p = names;
@@ -58,7 +54,6 @@ class ReplyWriter {
   }
   ReplyWriter& ch(char c) { put(c); return *this; }
 
-  //! Signed decimal integer.
   ReplyWriter& integer(int32_t v) {
     uint32_t u = v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v);
     if (v < 0) put('-');
@@ -102,12 +97,8 @@ class ReplyWriter {
   ReplyWriter& field_text(FlashText key, const char* v) { return ch(' ').text(key).ch('=').text(v); }
   ReplyWriter& field_text(FlashText key, FlashText v) { return ch(' ').text(key).ch('=').text(v); }
 
-  //! Text in flash with up to three numbers in it: a byte kFormatInteger
-  //! there writes the next of a, b, c as integer(), kFormatTenths as
-  //! tenths(). One call per reply instead of one per field: the replies'
-  //! labels and values come from one flash string, e.g.
-  //! "ok pose roll=" "\2" " pitch=" "\2" " yaw=" "\2" (kept apart so that no
-  //! letter or digit joins the escape).
+  //! Text in flash with up to three numbers: a byte kFormatInteger writes
+  //! the next of a, b, c as integer(), kFormatTenths as tenths().
   STRIDER_NOINLINE ReplyWriter& format(FlashText fmt, int32_t a, int32_t b = 0, int32_t c = 0) {
     if (cap_ <= 1) {  // no room at all (a reply nobody sends): no digits computed
       truncated_ = true;
@@ -130,9 +121,6 @@ class ReplyWriter {
   static constexpr char kFormatInteger = '\1';  //!< format(): the next number, as integer()
   static constexpr char kFormatTenths = '\2';   //!< format(): the next number, as tenths()
 
-  //! Appends CR LF (the HC-05 terminals show lines either way).
-  ReplyWriter& end_line() { return text("\r\n"); }
-
   const char* c_str() const { return buf_; }
   uint16_t length() const { return len_; }
   bool truncated() const { return truncated_; }
@@ -150,8 +138,7 @@ class ReplyWriter {
   bool truncated_ = false;
 };
 
-//! A reply buffer behind its writer: a caller's frame keeps the writer's
-//! fields at its near end (short addressing on the AVR), the buffer after.
+//! A reply buffer behind its writer (the writer first: short addressing on the AVR).
 struct ReplyLine {
   ReplyLine() : w(buf, sizeof buf) {}
   ReplyWriter w;
@@ -163,19 +150,16 @@ inline void write_error(ReplyWriter& w, uint8_t code, const char* reason) {
   w.text("err ").integer(code).ch(' ').text(reason);
 }
 
-//! `err <code> <reason>` with the reason in flash.
 inline void write_error(ReplyWriter& w, uint8_t code, FlashText reason) {
   w.text("err ").integer(code).ch(' ').text(reason);
 }
 
-//! The parser's error reasons in flash, in ParseError order (command.h's
-//! error_reason() has the same texts for host code).
+//! The parser's error reasons in flash, in ParseError order.
 constexpr char kParseErrorNames[] STRIDER_PROGMEM =
     "none\0unknown command\0bad argument\0missing argument\0too many arguments\0out of range\0"
     "line too long\0bad byte\0incomplete line\0bad checksum\0bytes lost\0checksum required";
 constexpr uint8_t kParseErrorCount = 12;
 
-//! `err <code> <reason>` for a parser error.
 inline void write_parse_error(ReplyWriter& w, ParseError e) {
   write_error(w, uint8_t(e), flash_name(kParseErrorNames, kParseErrorCount, uint8_t(e)));
 }

@@ -1,6 +1,5 @@
-//! The controller's and RobotApp's reply and notice texts, one array each at
-//! namespace scope so that on the AVR they stay in flash (PROGMEM) instead of
-//! taking about 600 bytes of the 8 KB RAM; reply.h reads them through FlashText.
+//! The controller's and RobotApp's reply and notice texts, at namespace scope
+//! so that on the AVR they stay in flash (about 600 bytes of RAM otherwise).
 #ifndef STRIDER_CONTROL_REPLY_TEXTS_H
 #define STRIDER_CONTROL_REPLY_TEXTS_H
 
@@ -34,8 +33,7 @@ constexpr char kOkStop[] STRIDER_PROGMEM = "ok stop";
 constexpr char kOkRelax[] STRIDER_PROGMEM = "ok relax";
 constexpr char kUnknownGait_[] STRIDER_PROGMEM = "unknown gait: ";
 constexpr char kOkGait_[] STRIDER_PROGMEM = "ok gait ";
-// err 24 with what the legs reach (motion_reach.h): angles one at a time at
-// the standing height, heights with the body level.
+// err 24 with what the legs reach (motion_reach.h).
 constexpr char kPoseRefused_[] STRIDER_PROGMEM = "pose refused: ";
 constexpr char kHeightRefused_[] STRIDER_PROGMEM = "height refused: ";
 constexpr char kPoseRangesFmt[] STRIDER_PROGMEM = "roll " "\1" ".." "\1" " pitch " "\1";
@@ -125,8 +123,7 @@ constexpr char kWalkFmt[] STRIDER_PROGMEM = " walk_vx=" "\2" " walk_vy=" "\2" " 
 constexpr char kOverrunsFmt[] STRIDER_PROGMEM = " overruns=" "\1" " tick_max_us=" "\1";
 constexpr char kBatteryLevelNames[] STRIDER_PROGMEM = "absent\0ok\0low\0critical";
 inline FlashText to_flash(BatteryLevel l) { return flash_name(kBatteryLevelNames, 4, uint8_t(l)); }
-// The IK's states' names (to_string() in ik_status.h), in flash; a test
-// keeps them equal. The gait states' names: kGaitStateNames (gait_state.h).
+// The IK's states' names (ik_status.h's to_string()).
 constexpr char kIkStatusNames[] STRIDER_PROGMEM = "ok\0clamped\0joint_limit\0unreachable";
 inline FlashText to_flash(GaitState s) { return flash_name(kGaitStateNames, kGaitStateCount, uint8_t(s)); }
 inline FlashText to_flash(IkStatus s) { return flash_name(kIkStatusNames, 4, uint8_t(s)); }

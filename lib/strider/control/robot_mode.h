@@ -10,7 +10,6 @@
 
 namespace strider {
 
-//! Controller error codes (after the parser's 1-19; see docs/protocol.md).
 enum class ControlError : uint8_t {
   kNotCalibrating = 20,  //!< cal trim/osc/pwm/save/abort without `cal start`
   kBusy = 21,            //!< not allowed in this mode (e.g. walking during calibration)
@@ -35,19 +34,10 @@ enum class LevelCalStart : uint8_t {
 
 enum class RobotMode : uint8_t { kStanding = 0, kWalking = 1, kRelaxed = 2, kCalibrating = 3 };
 
-inline const char* to_string(RobotMode m) {
-  switch (m) {
-    case RobotMode::kStanding: return "standing";
-    case RobotMode::kWalking: return "walking";
-    case RobotMode::kRelaxed: return "relaxed";
-    case RobotMode::kCalibrating: return "calibrating";
-  }
-  return "unknown";
-}
-
 constexpr char kRobotModeNames[] STRIDER_PROGMEM = "standing\0walking\0relaxed\0calibrating";
-//! to_string() with the text in flash (for replies on the AVR).
 inline FlashText to_flash(RobotMode m) { return flash_name(kRobotModeNames, 4, uint8_t(m)); }
+//! The name on a host (where flash is ordinary memory).
+inline const char* to_string(RobotMode m) { return to_flash(m).p; }
 
 //! `err <e> <reason>`.
 inline void write_error(ReplyWriter& w, ControlError e, FlashText reason) { write_error(w, uint8_t(e), reason); }

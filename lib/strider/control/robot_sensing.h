@@ -1,8 +1,6 @@
-//! RobotSensing: what RobotApp senses besides the link, and what it does to
-//! the robot: the battery's level, the IMU's attitude (sensing/attitude_filter.h
-//! at the tick's period), the fall it sees, the level body (`level on`,
-//! level_body.h) and the `cal level` measurement (its reply: link_ports.h).
-//! The controller, the walker and the servos' state are its arguments.
+//! RobotSensing: what RobotApp senses besides the link and what it does to
+//! the robot: the battery's level, the IMU's attitude, the fall it sees, the
+//! level body (`level on`) and the `cal level` measurement (docs/imu.md).
 #ifndef STRIDER_CONTROL_ROBOT_SENSING_H
 #define STRIDER_CONTROL_ROBOT_SENSING_H
 
@@ -27,11 +25,9 @@ static_assert(kLevelTickS * 1e6 == double(kTickPeriodUs), "level_body.h's tick i
 template <typename S, typename P = HostProfile<S>>
 class RobotSensing {
  public:
-  //! Whether an MPU-6050 answered at start-up (the firmware probes the bus):
-  //! `status` then has `imu=none`, or `imu=ok` (`imu=fallen`, `imu=level`)
-  //! with roll and pitch [deg]; never called (the host tools): no imu field.
-  //! With an IMU the filter learns the gyro's offset with fast gains until
-  //! the robot first stands.
+  //! Whether an MPU-6050 answered at start-up (never called: no `imu=` in
+  //! `status`); with one, the filter learns the gyro's offset fast until the
+  //! robot first stands.
   void set_imu_present(bool present) {
     imu_probed_ = true, imu_present_ = present;
     if (!present) return;
@@ -39,10 +35,8 @@ class RobotSensing {
     level_.start_learning();
   }
 
-  //! The battery divider's ADC reading (the firmware: once a tick). A new
-  //! level is a notice, `info battery low mv=6950`; a critical pack stops a
-  //! walk and sits the robot down, and walking is refused (err 32) until it
-  //! recovers (battery_monitor.h: its hold and hysteresis).
+  //! The battery divider's ADC reading, once a tick: a new level is a
+  //! notice; a critical pack sits the robot down and refuses walking (err 32).
   template <typename Ctl, typename Link>
   STRIDER_NOINLINE void battery_reading(uint16_t adc_code, Ctl& ctl, WalkerMotion<S, P>& motion, Link& link) {
     if (!battery.add(adc_code)) return;
@@ -54,13 +48,9 @@ class RobotSensing {
     if (battery.critical()) motion.walker().engine().sit_down();
   }
 
-  //! One IMU sample per tick (nullptr: the read failed, the attitude holds),
-  //! less the accelerometer's offsets of the settings (`cal level`), into
-  //! the attitude; then the level body. A tilt past 50 deg for 0.2 s is a
-  //! fall: `info fall`, the servos go limp and walking is refused (err 33)
-  //! until the robot has stood upright (under 20 deg) for 1 s: `info fall cleared`.
-  //! While `cal level` measures, the sample goes to it first (Ports:
-  //! link_ports.h, the deferred reply's).
+  //! One IMU sample per tick (nullptr: the read failed), less the settings'
+  //! accelerometer offsets, into the attitude, the level body and the fall
+  //! (`info fall`: servos limp, err 33); to `cal level` first while it runs.
   template <typename Ctl, typename Ports, typename Link>
   void imu_sample(const ImuSample<S>* sample, Ctl& ctl, WalkerMotion<S, P>& motion, bool servos_on, Ports& ports,
                   Link& link) {
@@ -71,8 +61,7 @@ class RobotSensing {
   }
   bool fallen() const { return fall_.fallen(); }
 
-  //! `level on|off`; false without an IMU. Off puts the body's roll and
-  //! pitch back to 0 (parallel to the feet), yaw and height kept.
+  //! `level on|off`; false without an IMU. Off levels the body to the feet.
   bool set_level(bool on, WalkerMotion<S, P>& motion) {
     if (!imu_present_) return false;
     level_.set_enabled(on);
@@ -80,8 +69,7 @@ class RobotSensing {
     return true;
   }
 
-  //! `cal level`: measuring starts when the robot stands still with its
-  //! servos on, the body parallel to its feet (level off, no pose).
+  //! `cal level`: starts when standing still, servos on, level off, no pose.
   LevelCalStart start_level_cal(const WalkerMotion<S, P>& motion, bool servos_on) {
     if (!imu_present_) return LevelCalStart::kNoImu;
     if (level_cal_.running() || !attitude_.has_attitude() || fall_.fallen() || !servos_on || level_.enabled() ||
@@ -92,8 +80,7 @@ class RobotSensing {
     return LevelCalStart::kStarted;
   }
   LevelCalibration<S>& level_cal() { return level_cal_; }
-  //! ` battery_mv=` while a pack is seen, ` imu=` (none, ok, fallen, level)
-  //! with roll and pitch [deg] when an IMU was probed for.
+  //! ` battery_mv=` while a pack is seen, ` imu=` with roll and pitch [deg].
   void write_status(ReplyWriter& w) const {
     if (battery.present()) w.field(FlashText{text::kBatteryMv}, battery.mv());
     if (!imu_probed_) return;
@@ -110,11 +97,9 @@ class RobotSensing {
   const LevelBody<S>& level() const { return level_; }
 
  private:
-  //! One raw sample into the `cal level` measurement; a robot that leaves
-  //! its stand meanwhile ends it (moving), a failed read too. At its end the
-  //! deferred reply; done: the attitude again from the corrected
-  //! accelerometer (the next sample), the gyro's bias kept: the offset's step
-  //! would otherwise take the filter's 2 s time constant and overshoot.
+  //! One raw sample into `cal level`; leaving the stand or a failed read ends
+  //! it. Done: the attitude afresh from the corrected accelerometer, the
+  //! gyro's bias kept (else the step takes the filter's 2 s and overshoots).
   template <typename Ctl, typename Ports, typename Link>
   STRIDER_NOINLINE void level_cal_sample(const ImuSample<S>* sample, const WalkerMotion<S, P>& motion, bool servos_on,
                                          Ctl& ctl, Ports& ports, Link& link) {
@@ -144,8 +129,8 @@ class RobotSensing {
     level_body(motion, servos_on);
     return fall_.update(attitude_.tilt_rad());
   }
-  //! With an attitude: the learning gains end once the robot first stands;
-  //! the level acts while it stands or walks, servos on.
+  //! Learning ends once the robot first stands; the level acts while it
+  //! stands or walks, servos on.
   void level_body(WalkerMotion<S, P>& motion, bool servos_on) {
     const GaitState st = motion.walker().engine().state();
     if (level_.learning() && st == GaitState::kStanding) {

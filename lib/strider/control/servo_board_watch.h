@@ -1,13 +1,7 @@
-//! ServoBoardWatch: which servo boards answer, as RobotApp keeps it from the
-//! driver's reports (servo_boards.h). A board that stops answering (or none
-//! at power-up) is reported once, `info fault pca9685 0x41`, and a bus that
-//! hangs, `info fault i2c timeout`; the servos cannot walk until every board
-//! answers again. A board that answers again is reported (`info pca9685
-//! 0x41 restored`); the driver has set it up again if it had lost power, and
-//! its legs are switched on one at a time (the soft start: each leg from the
-//! pulses its outputs drive), walking allowed again once they all are.
-//! `status` reports the boards (`pca9685=ok` or the addresses of the silent
-//! ones) and the failed transfers (`i2c_errors`).
+//! ServoBoardWatch: which servo boards answer, from the driver's reports
+//! (servo_boards.h): a silent board or a hung bus is reported once, one
+//! that answers again too, its legs soft-started; the servos cannot walk
+//! meanwhile (docs/reliability.md, "Servo boards").
 #ifndef STRIDER_CONTROL_SERVO_BOARD_WATCH_H
 #define STRIDER_CONTROL_SERVO_BOARD_WATCH_H
 
@@ -20,9 +14,8 @@
 namespace strider {
 
 struct ServoBoardWatch {
-  //! Report r of the driver at now_ms: its notices, a board that came back
-  //! adopted by the servo stage and soft-started. True while the servos
-  //! cannot walk.
+  //! Report r at now_ms: its notices, a board back adopted and soft-started.
+  //! True while the servos cannot walk.
   template <typename Stage, typename Output, typename Link>
   bool report(const ServoBoardReport& r, uint32_t now_ms, Stage& stage, Output& out, Link& link) {
     notify(r, link);
@@ -35,15 +28,13 @@ struct ServoBoardWatch {
     }
     return keep(r);
   }
-  //! True once the legs of a board that came back are all on again
-  //! (starting: the servo stage's soft start still runs).
+  //! True once the legs of a board that came back are all on again.
   bool restored(bool starting) {
     if (!restoring || starting) return false;
     restoring = false;
     return true;
   }
-  //! The notices of report r against the last one kept (a board may have
-  //! failed and come back since: both).
+  //! The notices of report r against the last one kept.
   template <typename Link>
   void notify(const ServoBoardReport& r, Link& link) const {
     const uint8_t lost = uint8_t((r.faulted | r.restored) & ~faulted);
@@ -54,8 +45,7 @@ struct ServoBoardWatch {
     for (uint8_t b = 0; b < kMaxPcaBoards; ++b)
       if (back & board_bit(b)) send_board_notice(FlashText{text::kInfoPca}, b, FlashText{text::kRestored}, link);
   }
-  //! Keeps report r; true while the servos cannot walk (a board silent, or
-  //! the legs of one that came back being switched on again).
+  //! Keeps report r; true while the servos cannot walk.
   bool keep(const ServoBoardReport& r) {
     faulted = r.faulted;
     bus_stuck = r.bus_stuck;

@@ -1,11 +1,7 @@
 //! ServoBoardReport: what a servo-board driver tells RobotApp about its
-//! PCA9685 boards (RobotApp::servo_boards()): which do not answer, which
-//! answer again, whether the bus itself hangs, and how many transfers
-//! failed. The firmware's driver (src/pca9685_output.h) fills it; a host
-//! tool without a bus has nothing to report.
-//!
-//! Board b is the one at I2C address kPcaFirstAddress + b (channel_map.h),
-//! driving the global channels 16 b .. 16 b + 15.
+//! PCA9685 boards: which do not answer, which answer again, whether the bus
+//! hangs, how many transfers failed. Board b is at I2C address
+//! kPcaFirstAddress + b, driving the global channels 16 b .. 16 b + 15.
 #ifndef STRIDER_CONTROL_SERVO_BOARDS_H
 #define STRIDER_CONTROL_SERVO_BOARDS_H
 

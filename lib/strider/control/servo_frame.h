@@ -1,6 +1,5 @@
 //! write_servo_frame: one frame of joint angles -> one tick write per servo
-//! through a ServoOutput (hal_interfaces.h), with the calibrated trims. The
-//! firmware binds the PCA9685 driver, tests a recorder, the simulator physics.
+//! through a ServoOutput (hal_interfaces.h), with the calibrated trims.
 #ifndef STRIDER_CONTROL_SERVO_FRAME_H
 #define STRIDER_CONTROL_SERVO_FRAME_H
 
@@ -15,10 +14,9 @@ namespace strider {
 //! The worse of two servo statuses.
 inline ServoStatus worst(ServoStatus a, ServoStatus b) { return uint8_t(a) >= uint8_t(b) ? a : b; }
 
-//! Writes count joints: joint i uses channels[i], joint_rad[i] [rad] and
-//! settings.trim_decideg[first_trim + i]. Every servo gets a value inside its
-//! limits, whatever the angles; the worst status is returned (kOk, kLimited:
-//! some joint was clamped, kNotFinite: some joint held its centre).
+//! Writes count joints: channels[i], joint_rad[i] [rad] and
+//! settings.trim_decideg[first_trim + i]; every servo within its limits.
+//! Returns the worst status.
 template <typename S, typename Output>
 ServoStatus write_servo_frame(Output& out, const ServoChannel<S>* channels, const S* joint_rad, uint8_t count,
                               const Settings& settings, const Pca9685Timing& timing, uint8_t first_trim = 0) {
@@ -33,17 +31,14 @@ ServoStatus write_servo_frame(Output& out, const ServoChannel<S>* channels, cons
   return status;
 }
 
-//! The same through a ServoTickMap configured for these channels, trims and
-//! timing (servo_tick_map.h): joints [first, first + count) of the map from
-//! joint_rad[0..count). A few hundred cycles per joint instead of ~2,000.
+//! The same through a configured ServoTickMap: its joints [first, first + count).
 template <typename S, uint8_t N, typename Output>
 ServoStatus write_servo_frame(Output& out, const ServoTickMap<S, N>& map, const S* joint_rad, uint8_t count,
                               uint8_t first = 0) {
   return map.write(out, first, joint_rad, count);
 }
 
-//! Programs the PWM frequency: call at boot and after a calibration change
-//! (the PCA9685 must sleep while PRESCALE is written; the driver does that).
+//! Programs the PWM frequency: at boot and after a calibration change.
 template <typename Output>
 PwmTimingStatus configure_servo_pwm(Output& out, Pca9685Timing& timing, const Settings& settings) {
   const PwmTimingStatus s = timing.configure(settings.pca_osc_hz, settings.pwm_hz);

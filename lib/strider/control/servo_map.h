@@ -53,13 +53,11 @@ constexpr ServoChannel<S> make_servo_channel(uint8_t channel, int8_t direction, 
 }
 
 namespace detail {
-inline bool is_finite_scalar(float v) { return v == v && v - v == 0.0f; }
-inline bool is_finite_scalar(Fixed) { return true; }
+inline bool is_finite(Fixed) { return true; }  // float: float_math.h
 inline int32_t round_to_int(float v) { return v >= 0.0f ? int32_t(v + 0.5f) : -int32_t(-v + 0.5f); }
 inline int32_t round_to_int(Fixed v) { return (v + Fixed::from_raw(Fixed::kOneRaw / 2)).raw() >> Fixed::kFracBits; }
 }  // namespace detail
 
-//! One servo command: everything the bus write needs.
 struct ServoCommand {
   uint8_t channel;      //!< PCA9685 output
   uint16_t pulse_us;    //!< pulse width [us], inside the channel's pulse range
@@ -73,13 +71,13 @@ template <typename S>
 ServoStatus servo_angle(const ServoChannel<S>& ch, S joint_rad, S trim_rad, S* angle_rad) {
   const S lo = ch.min_rad;
   const S hi = ch.max_rad;
-  if (!detail::is_finite_scalar(joint_rad) || !detail::is_finite_scalar(trim_rad)) {
+  if (!detail::is_finite(joint_rad) || !detail::is_finite(trim_rad)) {
     *angle_rad = clamp(ch.centre_rad, lo, hi);
     return ServoStatus::kNotFinite;
   }
   const S delta = joint_rad - ch.zero_rad;
   const S a = ch.centre_rad + (ch.direction < 0 ? -delta : delta) + trim_rad;
-  if (!detail::is_finite_scalar(a)) {  // float overflow of huge but finite inputs
+  if (!detail::is_finite(a)) {  // float overflow of huge but finite inputs
     *angle_rad = clamp(ch.centre_rad, lo, hi);
     return ServoStatus::kNotFinite;
   }
@@ -95,8 +93,7 @@ ServoStatus servo_angle(const ServoChannel<S>& ch, S joint_rad, S trim_rad, S* a
 //! result is clamped to the channel's pulse range whatever the input.
 template <typename S>
 uint16_t servo_pulse_us(const ServoChannel<S>& ch, S angle_rad) {
-  // A precomputed slope instead of angle / travel: a division costs 480
-  // (float) to 1270 (Fixed) cycles on the AVR, a multiplication 140 / 270.
+  // A precomputed slope: an AVR division costs 3 to 5 multiplications.
   const int32_t lo = ch.min_pulse_us < ch.max_pulse_us ? ch.min_pulse_us : ch.max_pulse_us;
   const int32_t hi = ch.min_pulse_us < ch.max_pulse_us ? ch.max_pulse_us : ch.min_pulse_us;
   const S offset = clamp(angle_rad * ch.us_per_rad, S(int(lo - ch.min_pulse_us)), S(int(hi - ch.min_pulse_us)));
@@ -106,9 +103,7 @@ uint16_t servo_pulse_us(const ServoChannel<S>& ch, S angle_rad) {
 }
 
 //! The on-time ticks of a channel's two joint limits, rounded toward the
-//! inside of its range: a pulse between them never passes a limit by a
-//! fraction of a tick (only by servo_pulse_us()'s rounding to whole
-//! microseconds, at most 0.5 us). *lo_ticks <= *hi_ticks.
+//! inside of its range; *lo_ticks <= *hi_ticks.
 template <typename S>
 void limit_ticks(const ServoChannel<S>& ch, const Pca9685Timing& timing, uint16_t* lo_ticks, uint16_t* hi_ticks) {
   const uint16_t a = servo_pulse_us(ch, ch.min_rad), b = servo_pulse_us(ch, ch.max_rad);

@@ -1,21 +1,12 @@
 //! ServoTickMap: the servo loop's per-joint mapping, joint angle [rad] ->
-//! PCA9685 ticks, with everything that does not change per frame (zero,
-//! direction, centre, trim, limits, pulse range, PWM timing) folded into a
-//! few constants per joint when the PWM is configured or the calibration
-//! changes.
+//! PCA9685 ticks, with zero, direction, centre, trim, limits, pulse range and
+//! PWM timing folded into a few constants per joint at configuration.
 //!
-//! Per joint and frame: d = base + direction * joint [rad] (the servo angle
-//! from its lowest limit), clamped into [0, travel]; ticks = round(ticks(0) +
-//! d * ticks_per_rad). For Fixed that is a 24 x 16-bit product (d in Q16.16
-//! below 4 rad, ticks_per_rad scaled into 16 bits), a shift and an add: no
-//! 32-bit multiplication, no division; ~150 cycles per joint instead of
-//! ~2,000 for map_joint() (servo_map.h), whose rounding to whole
-//! microseconds it skips.
-//!
-//! Same contract as map_joint(): an angle outside the limits is clamped to
-//! them (kLimited), a NaN or infinite joint holds the centre (kNotFinite),
-//! ticks never leave the ticks of the limits' pulses (nor 4095). Against
-//! map_joint() the ticks differ by at most one (test/control).
+//! Per joint and frame: d = base + direction * joint [rad], clamped into
+//! [0, travel]; ticks = round(ticks(0) + d * ticks_per_rad): ~150 cycles per
+//! joint for Fixed instead of ~2,000 for map_joint() (servo_map.h), with the
+//! same contract (clamped: kLimited; NaN: centre, kNotFinite) and ticks
+//! within one of map_joint()'s (test/control).
 #ifndef STRIDER_CONTROL_SERVO_TICK_MAP_H
 #define STRIDER_CONTROL_SERVO_TICK_MAP_H
 
@@ -63,23 +54,19 @@ struct ServoTickOwn {
   uint8_t channel;        //!< PCA9685 output
   int8_t direction;       //!< +1 or -1
 };
-//! One joint of a ServoTickMap (constants of the per-frame mapping).
 template <typename S>
 struct ServoTickJoint : ServoTickRange<S>, ServoTickOwn<S> {};
 
 namespace servo_ticks_detail {
-//! Where a ServoTickMap keeps its joints' constants. kSlots 0: all of
-//! them per joint. kSlots > 0: joint i's range in slot i % kSlots, shared
-//! with every joint of that slot (a firmware whose legs have one geometry:
-//! a slot per joint of a leg), the rest per joint.
+//! A ServoTickMap's constants: per joint, or (kSlots > 0) the range of
+//! joint i shared in slot i % kSlots (legs of one geometry).
 template <typename S, uint8_t N, uint8_t kSlots>
 struct TickJoints {
   TickJoints() : own_(), range_() {}
   const ServoTickOwn<S>& own(uint8_t i) const { return own_[i]; }
   ServoTickOwn<S>& own(uint8_t i) { return own_[i]; }
   const ServoTickRange<S>& range(uint8_t, uint8_t slot) const { return range_[slot]; }
-  //! Joint i's range: the first joint of a slot sets it, the others have
-  //! the same (the caller's contract).
+  //! The first joint of a slot sets its range.
   void set_range(uint8_t i, const ServoTickRange<S>& r) {
     if (i < kSlots) range_[i] = r;
   }
@@ -99,19 +86,15 @@ struct TickJoints<S, N, 0> {
 };
 }  // namespace servo_ticks_detail
 
-//! N: most joints it holds (a firmware for one model sizes it to the model).
-//! kSlots: 0, or joints share their ranges by slot i % kSlots: the joints
-//! of a slot must have the same limits and servo part (ServoStage makes
-//! sure), and joint i < kSlots is configured before the others of its slot.
+//! N: most joints it holds. kSlots > 0: the joints of slot i % kSlots share
+//! limits and servo part, and joint i < kSlots is configured first.
 template <typename S, uint8_t N = kMaxServoTickJoints, uint8_t kSlots = 0>
 class ServoTickMap {
  public:
   ServoTickMap() : count_(0) {}
 
-  //! Folds count channels (trims settings.trim_decideg[first_trim + i]) and
-  //! the PWM timing into per-joint constants. Call after configure of the
-  //! timing and after every calibration change. kUnsupported: some channel
-  //! cannot use this path (the map is then empty: count() == 0).
+  //! Folds count channels, their trims (settings.trim_decideg[first_trim +
+  //! i]) and the timing into constants; kUnsupported leaves count() == 0.
   ServoTickStatus configure(const ServoChannel<S>* channels, uint8_t count, const Settings& settings,
                             const Pca9685Timing& timing, uint8_t first_trim = 0) {
     count_ = 0;
@@ -125,23 +108,20 @@ class ServoTickMap {
     return ServoTickStatus::kOk;
   }
 
-  //! Joint i (< N) alone from its channel, trim [rad] and the timing; its
-  //! channel and direction are set even when it cannot use this path. Does
-  //! not change count() (a caller that configures joint by joint, as the
-  //! servo stage does, reads them with map() only).
+  //! Joint i alone (channel and direction set even on kUnsupported); does
+  //! not change count().
   ServoTickStatus configure_joint(uint8_t i, const ServoChannel<S>& ch, S trim, const Pca9685Timing& timing) {
     ServoTickOwn<S>& own = joints_.own(i);
     own.channel = ch.channel;
     own.direction = ch.direction < 0 ? int8_t(-1) : int8_t(1);
-    const bool flipped = ch.max_rad < ch.min_rad;  // one comparison for both bounds
+    const bool flipped = ch.max_rad < ch.min_rad;
     const S lo = flipped ? ch.max_rad : ch.min_rad, hi = flipped ? ch.min_rad : ch.max_rad;
     const S zero = ch.direction < 0 ? -ch.zero_rad : ch.zero_rad;
     own.base_rad = ch.centre_rad - zero + trim - lo;
     ServoTickRange<S> j;
     j.travel_rad = hi - lo;
     if (!servo_ticks_detail::set_scale(j.scale, ch, lo, hi, timing)) return ServoTickStatus::kUnsupported;
-    // The bounds and the centre exactly as map_joint() sends them: the
-    // limits' ticks rounded toward the inside (limit_ticks()).
+    // The bounds and the centre exactly as map_joint() sends them.
     limit_ticks(ch, timing, &j.lo_ticks, &j.hi_ticks);
     const uint16_t centre = timing.pulse_ticks(servo_pulse_us(ch, clamp(ch.centre_rad, lo, hi)));
     set_centre(j, centre < j.lo_ticks ? j.lo_ticks : centre > j.hi_ticks ? j.hi_ticks : centre);
@@ -160,28 +140,25 @@ class ServoTickMap {
     static_cast<ServoTickOwn<S>&>(j) = joints_.own(i);
     return j;
   }
-  //! Joint i's PCA9685 output.
   uint8_t channel(uint8_t i) const { return joints_.own(i).channel; }
 
-  //! Joint i's command for joint_rad [rad]: ticks and status (pulse_us is
-  //! not computed by this path and left 0).
+  //! Joint i's command for joint_rad [rad] (pulse_us left 0).
   ServoCommand map(uint8_t i, S joint_rad) const { return map(i, slot_of(i), joint_rad); }
-  //! The same with joint i's slot given (i % kSlots; any value for kSlots 0):
-  //! no division per joint.
+  //! The same with joint i's slot (i % kSlots) given.
   ServoCommand map(uint8_t i, uint8_t slot, S joint_rad) const {
     const ServoTickOwn<S>& o = joints_.own(i);
     const ServoTickRange<S>& j = joints_.range(i, slot);
     ServoCommand cmd;
     cmd.channel = o.channel;
     cmd.pulse_us = 0;
-    if (!servo_ticks_detail::finite(joint_rad)) {
+    if (!detail::is_finite(joint_rad)) {
       cmd.ticks = centre_ticks(j);
       cmd.status = ServoStatus::kNotFinite;
       return cmd;
     }
     S d = o.direction < 0 ? o.base_rad - joint_rad : o.base_rad + joint_rad;
     cmd.status = ServoStatus::kOk;
-    if (!servo_ticks_detail::finite(d)) {
+    if (!detail::is_finite(d)) {
       cmd.ticks = centre_ticks(j);
       cmd.status = ServoStatus::kNotFinite;
       return cmd;
@@ -224,10 +201,8 @@ class ServoTickMap {
     }
     return worst_status;
   }
-  // Fixed: what map() computes (bit for bit: test/control), walking the
-  // joints by pointer with the status kept as one flag. Written out rather
-  // than calling map(): avr-gcc recomputes the joint's address for every
-  // field and spills the command it returns, ~310 cycles per joint.
+  // Fixed: map() written out, bit for bit, walking the joints by pointer:
+  // through map() avr-gcc spends ~310 more cycles per joint.
   template <typename Output>
   ServoStatus write_joints(Output& out, uint8_t first, const Fixed* joint_rad, uint8_t n, PerJoint<true>) const {
     if (first >= count_) return ServoStatus::kOk;
@@ -235,8 +210,7 @@ class ServoTickMap {
     const ServoTickJoint<Fixed>* j = joints_.joint_ + first;
     bool limited = false;
     for (; n != 0; --n, ++j, ++joint_rad) {
-      // Fixed's saturating sum in place: avr-gcc keeps its operator out
-      // of line in a large firmware (a call per joint).
+      // Fixed's saturating sum in place (avr-gcc keeps the operator out of line).
       int32_t d = j->direction < 0 ? Fixed::sat_sub_fast(j->base_rad.raw(), joint_rad->raw())
                                    : Fixed::sat_add_fast(j->base_rad.raw(), joint_rad->raw());
       if (d < 0) {

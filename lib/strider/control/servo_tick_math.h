@@ -1,8 +1,6 @@
 //! The servo tick map's arithmetic, per scalar: the slope and offset of
-//! ticks over a joint's distance from its lowest limit, set up once from
-//! the channel and the PWM timing (Fixed: exact integer quotients), and per
-//! frame the ticks from that distance (Fixed: one 16 x 16-bit product and
-//! byte shifts; float: one product) and the finite and sign tests of its clamp.
+//! ticks over a joint's distance from its lowest limit (set up once), and per
+//! frame the ticks from that distance and the sign tests of its clamp.
 #ifndef STRIDER_CONTROL_SERVO_TICK_MATH_H
 #define STRIDER_CONTROL_SERVO_TICK_MATH_H
 
@@ -35,7 +33,6 @@ struct ServoTickScale<float> {
 namespace servo_ticks_detail {
 
 using detail::float_bits;
-using detail::kFloatInfBits;
 using detail::kFloatSignBit;
 using detail::magnitude_bits;
 
@@ -56,11 +53,8 @@ STRIDER_NOINLINE inline uint32_t div_shifted(uint32_t num, uint32_t den, uint8_t
 }
 
 //! ticks = (d [Q16.16] * k) >> shift + base [Q16.16], rounded (shift in
-//! [3, 17], d in [0, 4) rad: configure()). d has 18 significant bits, so the
-//! product is 18 x 16 bits: one 16 x 16-bit product and up to two adds for
-//! d's integer part, summed 8 bits down (whole bytes); the usual shift of 8
-//! (a slope of 128 to 255 ticks per rad, every 50 Hz servo) then needs no
-//! shift at all.
+//! [3, 17], d in [0, 4) rad): one 16 x 16-bit product and up to two adds for
+//! d's integer part, summed 8 bits down (the usual shift of 8 needs none).
 inline uint16_t ticks_of(Fixed d, uint16_t k, uint8_t shift, uint32_t base_q16) {
   const uint32_t u = uint32_t(d.raw());                         // < 2^18
   const uint32_t lo = detail::mul_u16(uint16_t(u), k);          // bits 0-31 of d k
@@ -88,10 +82,7 @@ inline uint16_t ticks_of(float d, float ticks_per_rad, float base_half) {
   return t > kPca9685MaxTick ? kPca9685MaxTick : t;
 }
 
-// Decisions on float bits (float_bits.h): a float comparison is a library
-// call on the AVR, an integer one a few cycles.
-inline bool finite(float v) { return magnitude_bits(v) < kFloatInfBits; }
-inline bool finite(Fixed) { return true; }
+// Decisions on float bits: a float comparison is a library call on the AVR.
 //! v < 0 (v finite; -0 is not).
 inline bool below_zero(float v) { return (float_bits(v) & kFloatSignBit) != 0 && magnitude_bits(v) != 0; }
 inline bool below_zero(Fixed v) { return v.raw() < 0; }
@@ -113,11 +104,10 @@ inline bool pulse_q16(const ServoChannel<Fixed>& ch, Fixed angle, uint32_t* q16)
   }
   return true;
 }
-// The slope and offset of the ticks over the servo angle from its lowest
-// limit lo, for the pulse of servo_pulse_us() before its rounding to whole
-// us: ticks = us * 262144 / period_x64. False: the joint cannot use this
-// path (an angle limit beyond the pulse range, a travel of 4 rad or more,
-// a slope or a pulse out of range).
+// The slope and offset of the ticks over the servo angle from lo, for
+// servo_pulse_us()'s pulse before its rounding: ticks = us * 262144 /
+// period_x64. False: a limit beyond the pulse range, a travel of 4 rad or
+// more, a slope or a pulse out of range.
 inline bool set_scale(ServoTickScale<float>& sc, const ServoChannel<float>& ch, float lo, float hi,
                       const Pca9685Timing& timing) {
   const double ticks_per_us = 262144.0 / double(timing.period_x64());
@@ -134,10 +124,7 @@ inline bool set_scale(ServoTickScale<float>& sc, const ServoChannel<float>& ch, 
   sc.base = float(base + 0.5);
   return travel < 4.0 && base + tpr * travel < 4096.0;
 }
-// Fixed: integers only (no float library on the AVR). The slope
-// us_per_rad * 262144 / period and the offset at_lo * 262144 / period are
-// exact quotients, rounded once; the pulse at a limit, min_pulse + limit
-// us_per_rad, is Fixed's product (within 2^-17 us of the exact one).
+// Fixed: integers only; slope and offset are exact quotients rounded once.
 inline bool set_scale(ServoTickScale<Fixed>& sc, const ServoChannel<Fixed>& ch, Fixed lo, Fixed hi,
                       const Pca9685Timing& timing) {
   const uint32_t period = timing.period_x64();  // 34,952 .. 3.4e6

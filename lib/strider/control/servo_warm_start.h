@@ -11,14 +11,10 @@
 
 namespace strider {
 
-//! For each of the `count` joints of `map` on a board in board_mask:
-//! words[ch] is channel ch's OFF word, ON 0, kPcaFullOff set for no pulse. A
-//! joint whose output holds a pulse within the joint's limits goes on from
-//! it (ticks[k]): no relax, and its leg moves from there (slew-limited) once
-//! the soft start reaches it. Any other is switched off (ticks[k] = off), to
-//! get its first pulse at its leg's turn. The limits' ticks are known only
-//! when the map holds every joint (`fast`: every built-in model); otherwise
-//! nothing is taken as held. Returns the joints that hold a pulse.
+//! For each joint of `map` on a board in board_mask (words[ch]: channel
+//! ch's OFF word): one whose output holds a pulse within its limits goes on
+//! from it (ticks[k]), any other is switched off (ticks[k] = off). Only with
+//! the limits known (`fast`). Returns the joints that hold a pulse.
 template <typename Map, typename Output>
 uint8_t adopt_held_outputs(const Map& map, bool fast, uint8_t count, uint16_t* ticks, uint16_t off, Output& out,
                            const uint16_t* words, uint8_t channels, uint8_t board_mask) {

@@ -1,8 +1,6 @@
-//! Settings: everything the firmware keeps across power cycles (trims, the
-//! PCA9685 oscillator, link and avoidance settings, the accelerometer's
-//! level offsets), its defaults, its valid
-//! ranges, and its byte layout. Integers only, so the record is identical on
-//! the AVR and the host and needs no float parsing.
+//! Settings: everything the firmware keeps across power cycles, its
+//! defaults, valid ranges and byte layout. Integers only: the record is the
+//! same on the AVR and the host.
 #ifndef STRIDER_CONTROL_SETTINGS_H
 #define STRIDER_CONTROL_SETTINGS_H
 
@@ -15,13 +13,9 @@ namespace strider {
 constexpr uint8_t kMaxServoJoints = 18;     //!< hexapod18 has the most joints
 constexpr int16_t kMaxTrimDecideg = 300;    //!< |trim| <= 30.0 deg
 constexpr int8_t kMaxAccelOffsetMg = 100;   //!< |accelerometer offset| <= 100 mg (5.7 deg)
-//! Layout version of the stored record (settings_record.h): 3 = a slot
-//! record with the accelerometer's offsets; 2 the same without them (they
-//! load as 0); 1 was the single record before the slots. Bump when the
-//! layout changes.
+//! Layout version of the stored record (settings_record.h).
 constexpr uint8_t kSettingsVersion = 3;
 
-//! Settings record (values, not bytes; see encode/decode for the layout).
 struct Settings {
   uint32_t pca_osc_hz;                   //!< measured PCA9685 oscillator [Hz], 20-30 MHz
   uint16_t pwm_hz;                       //!< servo PWM frequency [Hz], 40-400 (digital servos)
@@ -38,8 +32,7 @@ struct Settings {
 
 //! Payload size [bytes]: little-endian fields in declaration order.
 constexpr uint8_t kSettingsPayloadBytes = 4 + 2 + 4 + 2 + 2 + 2 + 1 + 1 + 2 * kMaxServoJoints + 1 + 1;
-//! The payload of the layouts before the offsets (versions 1 and 2): the
-//! same fields up to the trims; the offsets then load as 0.
+//! The payload of versions 1 and 2: up to the trims.
 constexpr uint8_t kSettingsPayloadBytesV2 = kSettingsPayloadBytes - 2;
 
 //! Factory settings: nominal oscillator, 50 Hz, 9600 baud (HC-05 default),
@@ -50,12 +43,10 @@ constexpr Settings default_settings() {
 }
 
 //! *s = default_settings(), field by field: a copy of the constant would
-//! keep its 54 bytes in RAM on the AVR (const data is copied to RAM there).
+//! keep its 54 bytes in RAM on the AVR.
 inline void set_default_settings(Settings* s) {
   constexpr Settings d = default_settings();
-  // A host aligns the fields (two bytes of padding), the AVR does not: the
-  // padding zeroed there, so that whole copies of the settings compare byte
-  // for byte (no code on the AVR: the condition is false at compile time).
+  // A host's padding zeroed: whole copies compare byte for byte.
   if (sizeof(Settings) != kSettingsPayloadBytes) __builtin_memset(s, 0, sizeof *s);
   s->pca_osc_hz = d.pca_osc_hz;
   s->pwm_hz = d.pwm_hz;
@@ -76,8 +67,7 @@ constexpr bool valid_baud(uint32_t baud) {
   return baud == 9600ul || baud == 19200ul || baud == 38400ul || baud == 57600ul || baud == 115200ul;
 }
 
-//! Range check of every field: a record that decodes but fails this is
-//! treated like a corrupt one.
+//! Range check of every field.
 inline bool settings_valid(const Settings& s) {
   if (s.pca_osc_hz < kPca9685MinOscHz || s.pca_osc_hz > kPca9685MaxOscHz) return false;
   if (s.pwm_hz < 40 || s.pwm_hz > 400) return false;
@@ -93,7 +83,6 @@ inline bool settings_valid(const Settings& s) {
          s.accel_y_mg >= -kMaxAccelOffsetMg;
 }
 
-
 namespace detail {
 inline void put_u16(uint8_t*& p, uint16_t v) { *p++ = uint8_t(v); *p++ = uint8_t(v >> 8); }
 inline void put_u32(uint8_t*& p, uint32_t v) { put_u16(p, uint16_t(v)); put_u16(p, uint16_t(v >> 16)); }
@@ -106,9 +95,7 @@ constexpr bool kLittleEndianTarget = true;
 #else
 constexpr bool kLittleEndianTarget = false;
 #endif
-//! True where a Settings' bytes are its payload: little-endian and no
-//! padding (the AVR). encode/decode then copy bytes instead of building each
-//! field from its bytes (about 400 B less flash on the AVR).
+//! True where a Settings' bytes are its payload (the AVR): encode/decode copy.
 constexpr bool kSettingsBytesArePayload = kLittleEndianTarget && sizeof(Settings) == kSettingsPayloadBytes;
 static_assert(!kSettingsBytesArePayload ||
                   (__builtin_offsetof(Settings, pwm_hz) == 4 && __builtin_offsetof(Settings, baud) == 6 &&

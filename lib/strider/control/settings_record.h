@@ -1,11 +1,9 @@
 //! One settings record in a ByteStore (the Mega's EEPROM), in any layout:
 //!   version 3, a slot:  'S' 'T' 3 payload_len seq_lo seq_hi payload crc_lo crc_hi  (64 bytes)
-//!   version 2, a slot without the accelerometer's offsets: the same with a
-//!                       54-byte payload (62 bytes); the offsets load as 0
-//!   version 1, the single record of firmware before the slots, at the base:
-//!                       'S' 'T' 1 payload_len payload crc_lo crc_hi                 (60 bytes)
-//! The CRC (CRC-16/CCITT-FALSE, crc.h) covers everything before it. The
-//! record is checked and written byte by byte: no copy of it is kept in RAM.
+//!   version 2: the same without the accelerometer's offsets (they load as 0)
+//!   version 1, the single record before the slots: no seq             (60 bytes)
+//! The CRC (CRC-16/CCITT-FALSE, crc.h) covers everything before it; checked
+//! and written byte by byte, no copy in RAM.
 #ifndef STRIDER_CONTROL_SETTINGS_RECORD_H
 #define STRIDER_CONTROL_SETTINGS_RECORD_H
 
@@ -27,23 +25,11 @@ enum class SettingsStatus : uint8_t {
   kNoSpace = 6       //!< save/load: the records do not fit the store
 };
 
-inline const char* to_string(SettingsStatus s) {
-  switch (s) {
-    case SettingsStatus::kOk: return "ok";
-    case SettingsStatus::kEmpty: return "empty";
-    case SettingsStatus::kCorrupt: return "corrupt";
-    case SettingsStatus::kOldVersion: return "old_version";
-    case SettingsStatus::kInvalid: return "invalid";
-    case SettingsStatus::kWriteFailed: return "write_failed";
-    case SettingsStatus::kNoSpace: return "no_space";
-  }
-  return "unknown";
-}
-
 constexpr char kSettingsStatusNames[] STRIDER_PROGMEM =
     "ok\0empty\0corrupt\0old_version\0invalid\0write_failed\0no_space";
-//! to_string() with the text in flash (for replies on the AVR).
 inline FlashText to_flash(SettingsStatus s) { return flash_name(kSettingsStatusNames, 7, uint8_t(s)); }
+//! The name on a host (where flash is ordinary memory).
+inline const char* to_string(SettingsStatus s) { return to_flash(s).p; }
 
 constexpr uint8_t kSettingsMagic0 = 'S';
 constexpr uint8_t kSettingsMagic1 = 'T';
@@ -52,16 +38,13 @@ constexpr uint8_t kSettingsNoOffsetsVersion = 2;     //!< the slot layout before
 constexpr uint8_t kSettingsHeaderBytes = 4;          //!< magic, version, payload length
 constexpr uint8_t kSettingsSeqBytes = 2;
 constexpr uint8_t kErasedByte = 0xFF;
-//! Bytes of a record of the current layout (version kSettingsVersion).
 constexpr uint16_t kSettingsRecordBytes = kSettingsHeaderBytes + kSettingsSeqBytes + kSettingsPayloadBytes + 2;
-//! Bytes of a version-1 record.
 constexpr uint16_t kSettingsSingleRecordBytes = kSettingsHeaderBytes + kSettingsPayloadBytes + 2;
 
-//! Where a record's payload starts, by layout version.
+//! Where a record's payload starts and how long it is, by layout version.
 constexpr uint8_t settings_payload_offset(uint8_t version) {
   return version == kSettingsSingleRecordVersion ? kSettingsHeaderBytes : kSettingsHeaderBytes + kSettingsSeqBytes;
 }
-//! A record's payload length, by layout version (one this firmware reads).
 constexpr uint8_t settings_payload_bytes(uint8_t version) {
   return version == kSettingsVersion ? kSettingsPayloadBytes : kSettingsPayloadBytesV2;
 }
@@ -82,13 +65,38 @@ template <typename Store>
 bool put_byte(Store& store, uint16_t at, uint8_t v) {
   return store.write(at, v) && store.read(at) == v;
 }
+//! Whether the n bytes at `at` are followed by their CRC.
+template <typename Store>
+bool crc_follows(const Store& store, uint16_t at, uint16_t n) {
+  uint16_t crc = kCrc16Init;
+  for (uint16_t i = 0; i < n; ++i) crc = crc16_ccitt_update(crc, store.read(uint16_t(at + i)));
+  return crc == read_u16(store, uint16_t(at + n));
+}
 }  // namespace detail
 
-//! Checks the record at `at` by reading it byte by byte: kOk with its
-//! layout *version and *seq (0 for version 1); kEmpty when every byte of a
-//! record's length is erased; kOldVersion for a version this firmware does
-//! not know; kCorrupt otherwise. A version-1 record counts only where
-//! single_ok (the first slot: where the firmware before the slots wrote it).
+//! Writes the n bytes byte(0..n) of a record at `at`, each read back, then
+//! their CRC; the first byte is erased first and written last, so a write
+//! cut short at any byte leaves no record. kOk or kWriteFailed.
+template <typename Store, typename Byte>
+SettingsStatus write_checked_record(Store& store, uint16_t at, uint16_t n, Byte byte) {
+  const uint8_t first = byte(0);
+  if (!detail::put_byte(store, at, kErasedByte)) return SettingsStatus::kWriteFailed;
+  uint16_t crc = crc16_ccitt_update(kCrc16Init, first);
+  for (uint16_t i = 1; i < n; ++i) {
+    const uint8_t b = byte(i);
+    crc = crc16_ccitt_update(crc, b);
+    if (!detail::put_byte(store, uint16_t(at + i), b)) return SettingsStatus::kWriteFailed;
+  }
+  const uint16_t crc_at = uint16_t(at + n);
+  if (!detail::put_byte(store, crc_at, uint8_t(crc)) || !detail::put_byte(store, uint16_t(crc_at + 1), uint8_t(crc >> 8)) ||
+      !detail::put_byte(store, at, first))
+    return SettingsStatus::kWriteFailed;
+  return SettingsStatus::kOk;
+}
+
+//! Checks the record at `at`: kOk with its *version and *seq (0 for
+//! version 1, which counts only where single_ok), kEmpty, kOldVersion or
+//! kCorrupt.
 template <typename Store>
 STRIDER_NOINLINE SettingsStatus check_record(const Store& store, uint16_t at, bool single_ok, uint8_t* version,
                                              uint16_t* seq) {
@@ -96,26 +104,20 @@ STRIDER_NOINLINE SettingsStatus check_record(const Store& store, uint16_t at, bo
   for (uint8_t i = 0; i < sizeof head; ++i) head[i] = store.read(uint16_t(at + i));
   if (head[0] != kSettingsMagic0 || head[1] != kSettingsMagic1)
     return detail::all_erased(store, at, kSettingsRecordBytes) ? SettingsStatus::kEmpty : SettingsStatus::kCorrupt;
-  // Another version may have another length: the version before length and
-  // CRC, trusted only once the magic matched.
   const uint8_t v = head[2];
   if (v == kSettingsSingleRecordVersion && !single_ok) return SettingsStatus::kCorrupt;
   if (v != kSettingsVersion && v != kSettingsNoOffsetsVersion && v != kSettingsSingleRecordVersion)
     return SettingsStatus::kOldVersion;
   if (head[3] != settings_payload_bytes(v)) return SettingsStatus::kCorrupt;
   const uint8_t crc_at = uint8_t(settings_payload_offset(v) + settings_payload_bytes(v));
-  uint16_t crc = kCrc16Init;
-  for (uint8_t i = 0; i < crc_at; ++i) crc = crc16_ccitt_update(crc, store.read(uint16_t(at + i)));
-  if (crc != detail::read_u16(store, uint16_t(at + crc_at))) return SettingsStatus::kCorrupt;
+  if (!detail::crc_follows(store, at, crc_at)) return SettingsStatus::kCorrupt;
   *version = v;
   *seq = v == kSettingsSingleRecordVersion ? 0 : uint16_t(head[4] | (uint16_t(head[5]) << 8));
   return SettingsStatus::kOk;
 }
 
-//! Decodes the payload of a record check_record() accepted (no range check);
-//! what an older layout lacks (the accelerometer's offsets) reads as 0.
-//! Where a Settings' bytes are its payload (the AVR) they are read straight
-//! into *s; elsewhere through a copy on the stack.
+//! Decodes the payload of a record check_record() accepted (no range
+//! check); what an older layout lacks reads as 0.
 template <typename Store>
 void read_record_payload(const Store& store, uint16_t at, uint8_t version, Settings* s) {
   uint8_t copy[kSettingsBytesArePayload ? 1 : kSettingsPayloadBytes];
@@ -129,12 +131,7 @@ void read_record_payload(const Store& store, uint16_t at, uint8_t version, Setti
   }
 }
 
-//! Writes s as a record of the current layout with sequence number seq at
-//! `at`, each byte read back. The first byte is made erased first and
-//! written last: until the final byte is in, the place holds no record (its
-//! magic is wrong), so a write cut short at any byte never leaves a record
-//! that mixes two saves; only a complete one has its magic. kOk or
-//! kWriteFailed.
+//! Writes s as a current record with sequence number seq at `at`.
 template <typename Store>
 SettingsStatus write_record(Store& store, uint16_t at, const Settings& s, uint16_t seq) {
   uint8_t copy[kSettingsBytesArePayload ? 1 : kSettingsPayloadBytes];
@@ -143,21 +140,10 @@ SettingsStatus write_record(Store& store, uint16_t at, const Settings& s, uint16
     encode_settings(s, copy);
     payload = copy;
   }
-  if (!detail::put_byte(store, at, kErasedByte)) return SettingsStatus::kWriteFailed;
-  uint16_t crc = crc16_ccitt_update(kCrc16Init, kSettingsMagic0);
-  uint16_t addr = uint16_t(at + 1);
-  const uint8_t header[kSettingsHeaderBytes - 1 + kSettingsSeqBytes] = {kSettingsMagic1, kSettingsVersion,
-                                                                        kSettingsPayloadBytes, uint8_t(seq),
-                                                                        uint8_t(seq >> 8)};
-  for (uint8_t i = 0; i < sizeof header + kSettingsPayloadBytes; ++i) {
-    const uint8_t b = i < sizeof header ? header[i] : payload[i - sizeof header];
-    crc = crc16_ccitt_update(crc, b);
-    if (!detail::put_byte(store, addr++, b)) return SettingsStatus::kWriteFailed;
-  }
-  if (!detail::put_byte(store, addr, uint8_t(crc)) || !detail::put_byte(store, uint16_t(addr + 1), uint8_t(crc >> 8)) ||
-      !detail::put_byte(store, at, kSettingsMagic0))
-    return SettingsStatus::kWriteFailed;
-  return SettingsStatus::kOk;
+  const uint8_t header[kSettingsHeaderBytes + kSettingsSeqBytes] = {
+      kSettingsMagic0, kSettingsMagic1, kSettingsVersion, kSettingsPayloadBytes, uint8_t(seq), uint8_t(seq >> 8)};
+  return write_checked_record(store, at, sizeof header + kSettingsPayloadBytes,
+                              [&](uint16_t i) { return i < sizeof header ? header[i] : payload[i - sizeof header]; });
 }
 
 }  // namespace strider

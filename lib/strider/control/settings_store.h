@@ -1,17 +1,8 @@
-//! Settings persistence: two record slots in a ByteStore (the Mega's
-//! EEPROM), each record versioned, numbered and CRC-checked
-//! (settings_record.h). Slot 0 is at the base address, slot 1 kSettingsSlotBytes
-//! after it.
-//!
-//! A save writes the slot that does not hold the record in force, with the
-//! next sequence number; a load takes the valid record with the newest
-//! sequence number (serial-number arithmetic: 0 follows 65535). A save cut
-//! short by a reset or a power cut at any byte therefore leaves the record
-//! before it loadable, and the next boot has either that one or the new one.
-//! The single record of firmware before the slots (layout version 1, at the
-//! base, where slot 0 is) still loads; being older than any slot record, the
-//! next save goes to slot 1 and keeps it, and the save after that replaces it.
-//! A load that finds no valid record yields the factory defaults and says why.
+//! Settings persistence: two record slots in a ByteStore (settings_record.h),
+//! slot 1 kSettingsSlotBytes after slot 0. A save writes the slot that does
+//! not hold the record in force with the next sequence number; a load takes
+//! the valid record with the newest (0 follows 65535): a save cut short
+//! leaves the record before it loadable (docs/reliability.md, "EEPROM").
 #ifndef STRIDER_CONTROL_SETTINGS_STORE_H
 #define STRIDER_CONTROL_SETTINGS_STORE_H
 
@@ -28,17 +19,15 @@ constexpr uint8_t kNoSettingsSlot = 0xFF;
 static_assert(kSettingsRecordBytes <= kSettingsSlotBytes && kSettingsSingleRecordBytes <= kSettingsSlotBytes,
               "a record fits its slot");
 
-//! Which record the settings in force came from (load_settings()), or the
-//! last one written (save_settings()): where the next save goes. Six bytes
-//! without padding (a host's copies compare byte for byte).
+//! Which record the settings in force came from, or the last one written:
+//! where the next save goes.
 struct SettingsRecord {
   uint16_t seq = 0;                //!< its sequence number (0 for a version-1 record)
   uint8_t slot = kNoSettingsSlot;  //!< 0 or 1; kNoSettingsSlot: none (defaults)
   uint8_t version = 0;             //!< its layout: kSettingsVersion, kSettingsNoOffsetsVersion or kSettingsSingleRecordVersion
   //! How the load went: kOk, or why the defaults are in force (the slot that says most).
   SettingsStatus load_status = SettingsStatus::kEmpty;
-  //! At load: what the other slot held (kOk: an older record; kEmpty;
-  //! kCorrupt, e.g. a save cut short; kOldVersion; kInvalid).
+  //! At load: what the other slot held.
   SettingsStatus other = SettingsStatus::kEmpty;
 
   uint8_t next_slot() const { return slot == 0 ? 1 : 0; }
@@ -50,22 +39,17 @@ constexpr uint16_t settings_slot_address(uint16_t base, uint8_t slot) {
   return uint16_t(base + slot * kSettingsSlotBytes);
 }
 
-//! True when record (version va, seq sa) is newer than (vb, sb): a slot
-//! record is newer than a version-1 record; between two slot records (of
-//! either slot layout), sa follows sb by less than half the sequence space
-//! (so 0 follows 65535).
+//! True when record (va, sa) is newer than (vb, sb): a slot record beats a
+//! version-1 record; else sa follows sb by less than half the sequence space.
 constexpr bool settings_record_newer(uint8_t va, uint16_t sa, uint8_t vb, uint16_t sb) {
   return (va == kSettingsSingleRecordVersion) != (vb == kSettingsSingleRecordVersion)
              ? vb == kSettingsSingleRecordVersion
              : int16_t(uint16_t(sa - sb)) > 0;
 }
 
-//! Loads the newest valid record of the two slots at base into *out and
-//! says which in *record (and the returned status in its load_status). *out always holds usable settings afterwards: the
-//! record on kOk, the factory defaults otherwise, with the reason of the
-//! slot that says most (invalid, old_version, corrupt, empty in that order).
-//! A record whose CRC is fine but whose values are out of range counts as
-//! no record: the older one is taken instead.
+//! Loads the newest valid record of the two slots at base into *out, which
+//! in *record; otherwise the defaults, with the reason of the slot that
+//! says most. A record out of range counts as none: the older one is taken.
 template <typename Store>
 STRIDER_NOINLINE SettingsStatus load_settings(const Store& store, Settings* out, SettingsRecord* record,
                                               uint16_t base = 0) {
@@ -113,9 +97,7 @@ SettingsStatus load_settings(const Store& store, Settings* out, uint16_t base = 
   return load_settings(store, out, &record, base);
 }
 
-//! What load_settings() gave, with its record and status: handed to a
-//! constructor as a temporary, so that no copy of the settings stays in RAM
-//! after start-up.
+//! What load_settings() gave: a temporary, so no copy stays in RAM.
 struct LoadedSettings {
   Settings settings;
   SettingsRecord record;
@@ -125,11 +107,9 @@ struct LoadedSettings {
   }
 };
 
-//! Writes s into the slot that does not hold *record (the record in force,
-//! from load_settings() or the last save) with the next sequence number;
-//! *record is then the new one. Refuses invalid settings (kInvalid). On a
-//! failed write *record is unchanged and still names a valid record: the
-//! next save writes the same slot again.
+//! Writes s into the slot that does not hold *record, with the next
+//! sequence number; *record is then the new one (unchanged on a failure).
+//! Refuses invalid settings (kInvalid).
 template <typename Store>
 STRIDER_NOINLINE SettingsStatus save_settings(Store& store, const Settings& s, SettingsRecord* record,
                                               uint16_t base = 0) {
@@ -145,8 +125,7 @@ STRIDER_NOINLINE SettingsStatus save_settings(Store& store, const Settings& s, S
   return SettingsStatus::kOk;
 }
 
-//! save_settings() after the newest valid record in the store, which is
-//! looked up first (for a caller that keeps no SettingsRecord).
+//! save_settings() after the newest valid record, looked up first.
 template <typename Store>
 SettingsStatus save_settings(Store& store, const Settings& s, uint16_t base = 0) {
   Settings scratch;

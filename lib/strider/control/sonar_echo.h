@@ -1,8 +1,7 @@
-//! SonarEcho: the portable core of a non-blocking HC-SR04 driver. The
-//! firmware pulses TRIG (10 us), calls triggered(); its pin-change interrupt
-//! calls edge() with the ECHO level and the time; the main loop calls poll(),
-//! which hands out one EchoSample per ping, a missing echo included. Nothing
-//! waits: no pulseIn(), which would block the servo loop for up to 38 ms.
+//! SonarEcho: the portable core of a non-blocking HC-SR04 driver: TRIG
+//! pulsed, then triggered(); the pin-change interrupt calls edge(); poll()
+//! hands out one EchoSample per ping, a missing echo included. No pulseIn(),
+//! which would block the servo loop for up to 38 ms.
 #ifndef STRIDER_CONTROL_SONAR_ECHO_H
 #define STRIDER_CONTROL_SONAR_ECHO_H
 
@@ -38,8 +37,7 @@ class SonarEcho {
   //! True once per ping when its sample is ready (echo measured, too long,
   //! or missing); *out is written only then.
   bool poll(uint32_t now_us, EchoSample* out) {
-    // The interrupt may have stamped an edge after the caller read now_us: a
-    // stamp "in the future" is no time at all, not 71 minutes (signed difference).
+    // Signed: an edge stamped after the caller read now_us is no time at all.
     if (state_ == State::kWaitRise && since(now_us, trigger_us_) > int32_t(kEchoStartDeadlineUs)) {
       ready(EchoKind::kNoEdge, 0);
     } else if (state_ == State::kWaitFall && since(now_us, rise_us_) > int32_t(kEchoMaxWidthUs)) {

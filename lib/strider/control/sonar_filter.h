@@ -1,13 +1,7 @@
-//! SonarFilter: HC-SR04 echo widths -> a filtered obstacle distance.
-//!
-//! distance [mm] = echo width [us] * 343 m/s / 2 (out and back, air at 20 C).
-//! Seed 000 sec 4.3: the sensor covers about 2-300 cm; nearer echoes are
-//! reported as 20 mm (something is right there), longer ones and the sensor's
-//! own ~38 ms "nothing" pulse as far. A median of the last kSonarWindow
-//! samples rejects single outliers (missed or multipath echoes). A missing
-//! echo (no edge before the driver's deadline) is a failure symptom: the last
-//! distance is held, and kSonarFailAfter in a row report kFailed. No sample
-//! for kSonarStaleUs (driver stopped) reports kStale.
+//! SonarFilter: HC-SR04 echo widths -> a filtered obstacle distance (343 m/s,
+//! out and back): the median of the last kSonarWindow samples, 2-300 cm
+//! (nearer: 20 mm, longer: far); kSonarFailAfter missing echoes in a row
+//! report kFailed, no sample for kSonarStaleUs kStale.
 #ifndef STRIDER_CONTROL_SONAR_FILTER_H
 #define STRIDER_CONTROL_SONAR_FILTER_H
 
@@ -42,12 +36,7 @@ constexpr uint32_t echo_to_mm(uint16_t width_us) { return (uint32_t(width_us) * 
 
 class SonarFilter {
  public:
-  SonarFilter()
-      : window_(), count_(0), next_(0), missing_(0), have_sample_(false), pinged_(false), last_sample_us_(0),
-        last_ping_us_(0) {}
-
-  //! When the next ping should be triggered (non-blocking driver): true at
-  //! most once per kSonarPingPeriodUs.
+  //! True when the next ping is due, at most once per kSonarPingPeriodUs.
   bool ping_due(uint32_t now_us) {
     if (pinged_ && elapsed(now_us, last_ping_us_) < kSonarPingPeriodUs) return false;
     pinged_ = true;
@@ -85,8 +74,6 @@ class SonarFilter {
     return r;
   }
 
-  uint8_t missing_in_a_row() const { return missing_; }  //!< consecutive missing echoes
-
  private:
   uint16_t median() const {
     uint16_t v[kSonarWindow];
@@ -100,15 +87,14 @@ class SonarFilter {
     return v[count_ / 2];
   }
 
-  // Zero, by the constructors.
-  uint16_t window_[kSonarWindow];
-  uint8_t count_;
-  uint8_t next_;
-  uint8_t missing_;
-  bool have_sample_;
-  bool pinged_;
-  uint32_t last_sample_us_;
-  uint32_t last_ping_us_;
+  uint16_t window_[kSonarWindow] = {};
+  uint8_t count_ = 0;
+  uint8_t next_ = 0;
+  uint8_t missing_ = 0;
+  bool have_sample_ = false;
+  bool pinged_ = false;
+  uint32_t last_sample_us_ = 0;
+  uint32_t last_ping_us_ = 0;
 };
 
 }  // namespace strider

@@ -2,31 +2,13 @@
 //! gyro [rad/s], a Mahony-style complementary filter on the direction of
 //! gravity (docs/imu.md).
 //!
-//! State: u, the unit "up" vector (against gravity) in the body frame (x
-//! forward, y left, z up), and b, the gyro bias estimate [rad/s]. Yaw is not
-//! observable from gravity and is not kept. One update with accel a (the
-//! specific force an accelerometer reads: +1 g along up at rest), gyro w and
-//! the time since the last update dt:
-//!   g = |a| / 9.80665                         (in units of standard gravity)
-//!   k = clamp((reject_g - |g - 1|) / (reject_g - trust_g), 0, 1)   (trust)
-//!   r = ((w + w_prev) / 2 - b) dt             (the turn since the last sample, trapezoidal)
-//!   c = u x r
-//!   p = u + c + (c x r) / 2                   (gyro prediction to second order: a world-fixed
-//!                                             vector seen from the body turns as u' = u x w)
-//!   e = k (a / |a|) x p                       (tilt error: sin(angle) about its axis)
-//!   b <- b - ki e dt                          (the bias integral, Mahony's I term)
-//!   u <- normalise(p + (u x kp e) dt)         (the proportional correction)
-//! roll = atan2(u_y, u_z), pitch = atan2(-u_x, hypot(u_y, u_z)): the Z-Y-X
-//! Euler angles the simulator reports (pitch positive nose down, roll
-//! positive left side up). For small errors the loop is linear with
-//! characteristic polynomial s^2 + kp s + ki: the defaults (kp 1/s, ki
-//! 0.25/s^2) make it critically damped, both poles at -0.5/s (2 s).
+//! State: u, the unit "up" vector in the body frame, and b, the gyro bias
+//! [rad/s]; yaw is not kept. The update equations, the gains' poles and why
+//! the prediction comes first: docs/imu.md, "The attitude filter".
 //!
-//! Total: no NaN or infinity comes out for any input. A float input that is
-//! NaN or infinite counts as missing (accel: untrusted; gyro: 0); every input
-//! is clamped to what an MPU-6050 can report (16 g, 2000 deg/s); dt <= 0 (or
-//! NaN) changes nothing; a gap longer than kAttitudeMaxDtS is not integrated
-//! (the attitude is taken again from the accelerometer when it is trusted).
+//! Total: no NaN or infinity comes out for any input (NaN or infinite
+//! inputs count as missing, inputs are clamped to the MPU-6050's ranges,
+//! dt <= 0 changes nothing, a gap over kAttitudeMaxDtS is not integrated).
 #ifndef STRIDER_SENSING_ATTITUDE_FILTER_H
 #define STRIDER_SENSING_ATTITUDE_FILTER_H
 
@@ -51,8 +33,7 @@ enum class AttitudeStatus : uint8_t {
   kHeld = 3       //!< nothing changed: dt <= 0, or no trusted sample to start from
 };
 
-//! Gains and accelerometer trust window; attitude_gains_default() has the
-//! documented values.
+//! Gains and accelerometer trust window.
 template <typename S>
 struct AttitudeGains {
   S kp;        //!< accelerometer gain [1/s]: tilt errors decay at about this rate
@@ -139,22 +120,15 @@ class AttitudeFilter {
     // reject_g <= 0.9 keeps a trusted |a| above 0.1 g: 1 / mag stays small.
     const Vec3<S> a_unit = zero < k ? a * (one / mag) : Vec3<S>();
     if (!has_attitude_ || scalar<S>(kAttitudeMaxDtS) < dt_s || (full && dot(a_unit, up_) < zero)) {
-      // Nothing to integrate from (or the estimate lost track by more than
-      // 90 deg, where the correction would push the wrong way).
+      // Nothing to integrate from, or lost by over 90 deg.
       if (!full) return AttitudeStatus::kHeld;
       up_ = a_unit;
       last_w_ = w;
       has_attitude_ = true;
       return AttitudeStatus::kLevelled;
     }
-    // Predict with the gyro first, then compare with the accelerometer: the
-    // two samples are of the same instant (compared before the prediction,
-    // the estimate settles one sample ahead, w dt). The rate is the mean of
-    // this sample and the last (with this one alone the estimate leads by
-    // half a sample of a changing rate), the turn to second order (to first
-    // order, the normalisation tilts u away from the axis by (w dt)^2 / 2 a
-    // sample: 0.5 deg/s at 90 deg/s and 50 Hz).
-    // (Fixed: halving dt first would round 0.01 s by 5e-4 of itself.)
+    // Gyro prediction first, trapezoidal rate, turn to second order
+    // (docs/imu.md). Fixed: halving dt first would round 0.01 s by 5e-4.
     const Vec3<S> w_mean = (w + last_w_) * scalar<S>(0.5) - bias_scaled_ * scalar<S>(1.0 / detail::kAttitudeBiasScale);
     last_w_ = w;
     const S r_lim = scalar<S>(kAttitudeMaxTurnRad);

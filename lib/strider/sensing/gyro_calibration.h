@@ -1,15 +1,7 @@
 //! GyroCalibration: a gyro's zero-rate offset [rad/s], measured while the
-//! robot keeps still.
-//!
-//! An MPU-6050 comes with up to +-20 deg/s of offset on each axis (product
-//! specification rev 3.4, table 6.1); the attitude filter's bias integral
-//! removes it in seconds, but tilts by offset / kp meanwhile. Seeding the
-//! filter with the mean of a still stretch avoids that. Readings are
-//! collected until `count` in a row stay within `spread` of each other on
-//! every axis (the part's noise is ~0.08 deg/s rms at its widest bandwidth);
-//! one outside starts the run again from it, so a robot that moves while it
-//! powers up (the legs coming on) is measured once it has settled. A float
-//! reading that is NaN or infinite starts the run again too.
+//! robot keeps still: the mean of `count` readings in a row that stay within
+//! `spread` of each other on every axis (an MPU-6050 has up to 20 deg/s of
+//! offset). A reading outside, or NaN, starts the run again from it.
 #ifndef STRIDER_SENSING_GYRO_CALIBRATION_H
 #define STRIDER_SENSING_GYRO_CALIBRATION_H
 
@@ -29,9 +21,7 @@ enum class GyroCalibrationStatus : uint8_t {
 template <typename S>
 class GyroCalibration {
  public:
-  //! count: readings in a row that make the mean (at the 50 Hz tick, 50 is
-  //! one second), at least 1; spread: max - min allowed on each axis
-  //! [rad/s] (default 2 deg/s).
+  //! count >= 1 readings (50: 1 s at 50 Hz); spread: max - min per axis [rad/s].
   explicit GyroCalibration(uint8_t count = 50, S spread_rad_s = scalar<S>(0.035))
       : count_(count == 0 ? 1 : count), spread_(spread_rad_s) {
     restart();

@@ -1,19 +1,8 @@
-//! LevelCalibration: the accelerometer's x and y offsets [mg], measured with
-//! the robot standing still on level ground (`cal level`, docs/imu.md).
-//!
-//! An MPU-6050's accelerometer may read up to 50 mg off on x and y (product
-//! specification rev 3.4, table 6.2, zero-G output): the gravity it sees is
-//! tilted by 1 deg per 17 mg, a tilt no attitude filter can tell from the
-//! ground's. On level ground the true x and y are 0, so the mean reading is
-//! the offset; subtracting it from every sample levels the filter's idea of
-//! level. kLevelCalSamples readings are averaged (one second at the 50 Hz
-//! tick), each rounded to 1 mg (0.06 deg). A reading that tilts (the gyro's
-//! x or y, less the filter's bias estimate, past kLevelCalMaxRateRadS) is a
-//! robot that moves: kMoving. The rate about z is not judged: the filter
-//! cannot learn its offset (it is along gravity; up to 20 deg/s on a part as
-//! it comes), and a turn about the vertical does not change what x and y read. A reading past kLevelCalMaxMg on x or y, or a
-//! mean past kLevelCalMaxMeanMg (5 deg), or z further than kLevelCalMaxUpErrG
-//! from 1 g, is a robot that does not stand level: kNotLevel. Either ends the run; nothing is kept.
+//! LevelCalibration: the accelerometer's x and y offsets [mg], the mean of
+//! kLevelCalSamples readings with the robot standing still on level ground
+//! (`cal level`; the limits and why z and the rate about z are not judged:
+//! docs/imu.md, "Level calibration"). A reading that turns ends the run
+//! kMoving; one that is not level, or a mean past 5 deg, kNotLevel.
 #ifndef STRIDER_SENSING_LEVEL_CALIBRATION_H
 #define STRIDER_SENSING_LEVEL_CALIBRATION_H
 
@@ -43,8 +32,7 @@ enum class LevelCalStatus : uint8_t {
 template <typename S>
 class LevelCalibration {
  public:
-  //! Starts a run; tag (0..3) is the caller's, kept until the next start
-  //! (RobotApp: the port to reply to), in the count's byte (RAM is tight).
+  //! Starts a run; tag (0..3) is the caller's, kept in the count's byte.
   void start(uint8_t tag = 0) {
     n_ = uint8_t(1 | (tag << kTagShift));  // count 0: idle; the readings taken are count - 1
     sum_x_ = sum_y_ = 0;
@@ -54,9 +42,8 @@ class LevelCalibration {
   //! Ends a run (nothing kept).
   void stop() { n_ = uint8_t(n_ & ~kCountMask); }
 
-  //! One reading [m/s^2, rad/s] and the gyro bias to take from it [rad/s].
-  //! kDone: *x_mg, *y_mg hold the offsets. The run ends with any status but
-  //! kCollecting (kIdle: none was running).
+  //! One reading and the gyro bias to take from it [rad/s]; kDone: *x_mg,
+  //! *y_mg hold the offsets. Any status but kCollecting ends the run.
   LevelCalStatus add(const ImuSample<S>& s, const Vec3<S>& gyro_bias_rad_s, int8_t* x_mg, int8_t* y_mg) {
     if (count() == 0) return LevelCalStatus::kIdle;
     const S lim = scalar<S>(kLevelCalMaxRateRadS);

@@ -1,17 +1,7 @@
-//! MPU-6050 register words -> an ImuSample in SI units.
-//!
-//! The 14-byte burst read from ACCEL_XOUT_H (0x3B): accel x, y, z, TEMP,
-//! gyro x, y, z, each a big-endian two's-complement word (register map rev
-//! 4.2, sec. 4.17-4.19). Scale factors (product specification rev 3.4, tables
-//! 6.1 and 6.2): accel 16384 / 8192 / 4096 / 2048 LSB per g for +-2 / 4 / 8 /
-//! 16 g (AFS_SEL, ACCEL_CONFIG bits 4:3); gyro 131 / 65.5 / 32.8 / 16.4 LSB
-//! per deg/s for +-250 / 500 / 1000 / 2000 deg/s (FS_SEL, GYRO_CONFIG bits
-//! 4:3); temperature = word / 340 + 36.53 deg C. The same figures as the
-//! Adafruit_MPU6050 library (g = 9.80665 m/s^2).
-//!
-//! Fixed: the word is multiplied as a Q16.16 raw value by the scale times
-//! 2^16, so the result is within 1 LSB of the exact one and no float code
-//! is involved (fixed-point firmwares link none).
+//! MPU-6050 register words -> an ImuSample in SI units: the 14-byte burst
+//! from ACCEL_XOUT_H (0x3B), big-endian words, with the data sheet's scales
+//! (docs/imu.md, "MPU-6050 words to SI"). Fixed multiplies the word as a
+//! Q16.16 raw value by the scale times 2^16: no float code.
 #ifndef STRIDER_SENSING_MPU6050_SAMPLE_H
 #define STRIDER_SENSING_MPU6050_SAMPLE_H
 
@@ -41,9 +31,7 @@ constexpr double mpu6050_gyro_lsb_per_dps(Mpu6050GyroRange r) {
 constexpr int16_t mpu6050_word(const uint8_t* be) { return int16_t(uint16_t(uint16_t(be[0]) << 8 | be[1])); }
 
 namespace detail {
-//! per_lsb in the form mpu6050_times() wants: as it is for float, times
-//! 2^16 for Fixed. Only for constexpr variables (evaluated at compile
-//! time: a call left to run time would pull in soft float).
+//! per_lsb as mpu6050_times() wants it (Fixed: times 2^16); constexpr use only.
 template <typename S>
 constexpr S mpu6050_scale(double per_lsb) {
   return scalar<S>(ScalarTraits<S>::kIsFixed ? per_lsb * 65536.0 : per_lsb);
