@@ -43,7 +43,7 @@ class GaitEngine {
     configure(cfg_, gait, sitting);
   }
   //! The same from a configuration in flash (stored_gait_config()), copied
-  //! into place and finished there (finish_gait_config()) if its ramps are not given.
+  //! into place and finished there if its ramps are not given.
   void configure_stored(const GaitConfig<S, kLegs, kSearch>* flash_config, const GaitTable& gait, bool sitting = false) {
     flash_copy(&cfg_, flash_config, sizeof cfg_);
     finish_stored(cfg_);
@@ -51,8 +51,8 @@ class GaitEngine {
   }
 
   //! Velocity (vx, vy [mm/s], wz [rad/s], body frame) at speed_pct [0, 100]
-  //! percent. Clamped to the robot's limits (limited() tells). A non-zero
-  //! command starts walking from standing; zero stops at the end of a step.
+  //! percent, clamped to the robot's limits (limited()). Zero stops at the
+  //! end of a step.
   void set_command(S vx, S vy, S wz, S speed_pct = scalar<S>(100.0)) {
     constexpr S hundred = scalar<S>(100.0);
     const S k = clamp(speed_pct, S(0), hundred) / hundred;  // exact at 100 %
@@ -61,14 +61,12 @@ class GaitEngine {
     ramp_.cmd_wz = wz * k;
     replan();
   }
-  //! Live gait parameters (gait_tuning.h): the swing of the feet that lift
-  //! from now on, its apex [mm] and shape; feet in the air finish theirs.
+  //! The swing of the feet that lift from now on: apex [mm] and shape.
   void set_swing(S step_height_mm, SwingShape shape) {
     cfg_.step_height_mm = step_height_mm;
     cfg_.shape = shape;
   }
-  //! The preferred stride [mm] and the step rate at low speed [Hz]: the
-  //! command is planned again and reached along the ramp.
+  //! The preferred stride [mm] and the step rate at low speed [Hz].
   void set_step(S stride_mm, S min_hz) {
     cfg_.limits.preferred_stride_mm = stride_mm;
     cfg_.limits.min_hz = min_hz;
@@ -76,7 +74,7 @@ class GaitEngine {
   }
   //! Keep stepping in place when the command is zero (default: stop).
   void set_step_in_place(bool on) { step_in_place_ = on; }
-  //! Changes the gait, also while walking (feet in the air finish their swing).
+  //! Changes the gait, also while walking.
   void set_gait(const GaitTable& gait);
   void stand_up() { if (state_ == GaitState::kSitting) state_ = GaitState::kStandingUp; }
   void sit_down() {  // while walking, stops first
@@ -86,12 +84,12 @@ class GaitEngine {
   //! Body pose offsets to move to (rate limited), also while walking.
   void set_body_offsets(const BodyOffsets<S>& o) {
     posture_.goal = o;
-    posture_.at_goal = false;  // step_pose() compares
+    posture_.at_goal = false;
   }
 
   void tick(S dt) {
     if (!(dt > S(0))) return;
-    if (!posture_.at_goal) posture_.step_pose(cfg_, dt);  // at its goal (the usual case): no call
+    if (!posture_.at_goal) posture_.step_pose(cfg_, dt);
     switch (state_) {
       case GaitState::kSitting: break;
       case GaitState::kStandingUp:
@@ -119,14 +117,13 @@ class GaitEngine {
   const bool* contacts() const { return contact_; }
   //! The body in the stance frame: shift + offsets + sit/stand height.
   BodyPose<S> body_pose() const { return posture_.body_pose(shift_, cfg_); }
-  //! body_pose()'s translation, and whether its roll, pitch and yaw are all
-  //! zero: a walker with a level body needs no more of the pose.
+  //! body_pose()'s translation, and whether its rotation is zero.
   Vec3<S> body_translation() const { return posture_.translation(shift_, cfg_); }
   bool body_level() const { return posture_.level(); }
   S shift_x_mm() const { return shift_.x_mm(); }
   S shift_y_mm() const { return shift_.y_mm(); }
-  //! Static stability margin of the CoM [mm] (stability.h), this tick;
-  //! computed when asked (once per tick): who does not ask does not pay.
+  //! Static stability margin of the CoM [mm] (stability.h), computed when
+  //! asked (once per tick).
   S margin_mm() const {
     if (!margin_fresh_) update_margin();
     return margin_;
@@ -138,9 +135,6 @@ class GaitEngine {
   S step_hz() const { return ramp_.hz; }
   //! True when the last command was scaled down to the robot's limits.
   bool limited() const { return ramp_.plan.limited; }
-  //! True when a foot on the ground at the edge of its reach could not lift
-  //! and held the body still this tick (after abrupt changes).
-  bool held() const { return held_; }
   const VelocityPlan<S>& target_plan() const { return ramp_.plan; }
   //! Body odometry since configure(): x, y [mm], heading [rad], its cos and sin.
   S odometry_x() const { return odo_.x; }
@@ -169,7 +163,6 @@ class GaitEngine {
   }
 
  private:
-  // A stored configuration with its ramps (Fixed) needs no finishing.
   static void finish_stored(GaitConfig<float, kLegs, kSearch>& c) { finish_gait_config(c); }
   static void finish_stored(GaitConfig<Fixed, kLegs, kSearch>&) {}
 
@@ -199,9 +192,8 @@ class GaitEngine {
     swing_.unsettle();
   }
 
-  // The walking tick (gait_engine_walk.h, gait_engine_swing.h): parts out of
-  // line keep their locals out of step_walk()'s frame (on the AVR, offsets
-  // past 63 bytes cost extra) and the loops' registers.
+  // The walking tick (gait_engine_walk.h, gait_engine_swing.h); out of line
+  // parts keep step_walk()'s AVR frame short.
   void start_walking();
   void step_walk(S dt);
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
@@ -237,7 +229,7 @@ class GaitEngine {
   mutable bool margin_fresh_;
   Odometry<S> odo_;
   BodyShift<S> shift_;
-  bool held_;
+  bool held_;  // a foot at its edge held the body still this tick
   ShiftWindow<S, kLegs> window_;
   BodyPosture<S> posture_;
 };

@@ -1,14 +1,8 @@
 //! Stored velocity limits: the limits of a built-in model at its gait
 //! defaults, read from the table generated on the host
-//! (velocity_limit_table.h) instead of searched with IK at start-up.
-//!
-//! The search (velocity_limits.h) costs thousands of IK calls: 1.4-4 s and
-//! 2.5 KB of stack on the AVR, more than a watchdog or the firmware's stack
-//! allow. The table holds what the float search gives for each model with
-//! its own swing shape, step height, step length and cycle
-//! (gait_params.h); any other model or parameters still need the search.
-//! Fixed gets the float search's strides (within 1 mm or 1 % of its own
-//! search, test/gait), converted exactly.
+//! (velocity_limit_table.h) instead of searched with IK at start-up (1.4-4 s
+//! and 2.5 KB of stack on the AVR). Any other model or parameters still need
+//! the search (velocity_search.h).
 #ifndef STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
 #define STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
 
@@ -43,12 +37,8 @@ inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& pa
   return same ? r : kRobotCount;
 }
 
-//! Fills `out` from the table for `model` with `params` and `shape`, as
-//! compute_velocity_limits() would (min_hz, preferred stride, sideways
-//! included). Returns false, `out` untouched, when the table has no entry.
 namespace stored_limits_detail {
-//! Robot r's strides of the stored table: copied into a table in RAM, or
-//! pointed at in flash.
+//! Robot r's strides: copied into RAM, or pointed at in flash.
 inline void set_strides(StrideTable<true>& t, uint8_t r) {
   for (uint8_t i = 0; i < kMaxLegs; ++i)
     for (uint8_t k = 0; k < kStrideDirections; ++k)
@@ -60,6 +50,8 @@ inline void set_strides(StrideTable<false>& t, uint8_t r) {
 }
 }  // namespace stored_limits_detail
 
+//! Fills `out` from the table, as compute_velocity_limits() would; false,
+//! `out` untouched, when the table has no entry.
 template <typename S, bool kSearch>
 bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, SwingShape shape,
                             VelocityLimits<S, kSearch>& out) {
@@ -67,10 +59,7 @@ bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, S
   const uint8_t r = stored_limits_index(model, params, shape);
   if (r >= kRobotCount) return false;
   using T = detail::VelocityLimitTables<>;
-  out.leg_count = model.leg_count;
-  out.sideways = model.kind != LegKind::kPlanar;
-  out.min_hz = S(1) / scalar<S>(params.cycle_s);
-  out.preferred_stride_mm = scalar<S>(params.step_length_mm);
+  out.set_gait(model, scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
   stored_limits_detail::set_strides(out, r);
   S servo[3];
   for (uint8_t j = 0; j < 3; ++j) {

@@ -1,28 +1,8 @@
 //! The IK search of a robot's velocity limits (VelocityLimits,
-//! velocity_limits.h), at configuration time, never per tick.
-//!
-//! Stride: for each leg and each of 16 directions, a binary search (IK at
-//! configuration time, never per tick) for the longest stride L whose stance
-//! ends (home -+ L/2 along the direction, on the ground) and swing (the
-//! trajectory's points at s = 1/6 .. 5/6, apex included) all solve with IK
-//! status ok; a 2-DOF leg's targets are first projected onto its reachable
-//! set (reach_projection.h): what the projection moves is reported while
-//! walking, not limited here (a planar leg's sideways stride, a sprawling
-//! leg's slide). kStrideShare of it is used; gaits that shift the body keep
-//! a budget of reach free on top.
-//!
-//! Servo speed: a swing of stride L at step rate f (duty d) turns joint j at
-//! most T_j(L) f / (1 - d) [rad/s], T_j = max |dq_j/ds| over the swing (9
-//! samples; s the swing phase); a stance at |q_j(end) - q_j(start)| f / d.
-//! T_j is convex in L (the joint rates are |J^-1 dp/ds|, dp/ds linear in L),
-//! so the chord through L = 0 and the longest stride bounds it from above:
-//! T_j(L) <= T_j(0) + slope_j L. With w_j = kServoSpeedShare x the part's
-//! no-load speed (robots/servo_parts.h; a loaded servo is slower):
-//!   swing:  f (lift_ms + swing_ms_per_mm L) <= 1000 (1 - d)
-//!   stance: stance_ms_per_mm L f <= 1000 d
-//! where lift_ms = max_j T_j(0) / w_j, swing_ms_per_mm = max_j slope_j / w_j
-//! and stance_ms_per_mm = max_j travel_j / (L w_j) over legs and directions.
-//! Legs mirrored across the body's x-z plane share their searches.
+//! velocity_limits.h), at configuration time, never per tick: per leg and
+//! direction the longest stride whose stance ends and swing all solve, and
+//! the servo time a step takes (docs/gaits.md, "Velocity commands and
+//! limits").
 #ifndef STRIDER_GAIT_VELOCITY_SEARCH_H
 #define STRIDER_GAIT_VELOCITY_SEARCH_H
 
@@ -101,16 +81,11 @@ VelocityLimits<S> compute_velocity_limits(const RobotModel& model, const AnyLeg<
                                           SwingShape shape, S step_height_mm, S step_length_mm, S cycle_s) {
   namespace d = velocity_limits_detail;
   VelocityLimits<S> lim;
-  lim.leg_count = model.leg_count;
-  lim.sideways = model.kind != LegKind::kPlanar;
-  lim.min_hz = S(1) / cycle_s;
-  lim.preferred_stride_mm = step_length_mm;
+  lim.set_gait(model, step_length_mm, cycle_s);
   const ReachProjection<S> proj = ReachProjection<S>::make(model);
   const S top = scalar<S>(2.0 * double(model.links.l1_mm + model.links.l2_mm + model.links.l3_mm));
   for (uint8_t i = 0; i < model.leg_count; ++i) {
-    // A leg mirrored across the body's x-z plane from one already done (every
-    // built-in model is symmetric) has the mirrored strides: direction k of
-    // one is direction -k of the other, and the same joint travel.
+    // A mirrored twin already done: its strides, direction k as -k.
     const uint8_t twin = d::mirror_twin(model, i);
     if (twin < i) {
       for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k)
