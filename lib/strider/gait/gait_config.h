@@ -59,6 +59,15 @@ enum class LimitsSource : uint8_t {
   kSearch = 1           //!< always the IK search (velocity_limits.h)
 };
 
+//! Robot r's strides of the stored table, as a constant (what a firmware
+//! keeps in flash of velocity_limit_table.h).
+constexpr StrideTable<true> stored_strides(uint8_t r) {
+  StrideTable<true> t{};
+  for (uint8_t i = 0; i < kMaxLegs; ++i)
+    for (uint8_t k = 0; k < kStrideDirections; ++k) t.stride_code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
+  return t;
+}
+
 namespace gait_config_detail {
 template <typename S>
 constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
@@ -129,62 +138,10 @@ struct TableStrides {
 };
 //! Robot r's strides in a configuration built at compile time: copied, or
 //! pointed at (flash_codes).
-constexpr void set_stored_strides(StrideTable<true>& t, uint8_t r, const uint16_t*) {
-  for (uint8_t i = 0; i < kMaxLegs; ++i)
-    for (uint8_t k = 0; k < kStrideDirections; ++k) t.stride_code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
-}
+constexpr void set_stored_strides(StrideTable<true>& t, uint8_t r, const uint16_t*) { t = stored_strides(r); }
 constexpr void set_stored_strides(StrideTable<false>& t, uint8_t, const uint16_t* flash_codes) {
   t.flash_codes = flash_codes;
 }
-}  // namespace gait_config_detail
-
-//! The ramps of a configuration whose other fields are set: from standing to
-//! the top forward speed of a trot-like duty in one default cycle, which
-//! keeps every first stance within its stride, and the touch-down points'
-//! speed. Run time only; fill_gait_config() ends with it.
-template <typename S, uint8_t kLegs, bool kSearch>
-void finish_gait_config(GaitConfig<S, kLegs, kSearch>& c) {
-  const S reach = gait_config_detail::reach_of(c);
-  const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
-  const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
-  c.accel_mm_s2 = max_of(top_speed * c.limits.min_hz, S(1));
-  c.yaw_accel_rad_s2 = max_of(top_yaw * c.limits.min_hz, scalar<S>(0.05));
-  c.target_speed_mm_s = max_of((top_speed + top_yaw * reach) * S(2), scalar<S>(10.0));
-}
-
-//! Builds (in c) the configuration of `model` with `legs` (an AnyLeg per
-//! leg) and gait defaults `params`, for swing shape `shape`. Unless the
-//! stored table has them, the velocity limits cost a few thousand IK calls:
-//! call it at start-up, not per tick.
-template <typename S, uint8_t kLegs, bool kSearch>
-void fill_gait_config(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
-                      SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {
-  if (model.leg_count > kLegs) {  // more legs than this build's walker holds
-    c.leg_count = 0;
-    return;
-  }
-  c.leg_count = model.leg_count;
-  for (uint8_t i = 0; i < model.leg_count; ++i) c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
-  gait_config_detail::set_params(c, model, params, shape, gait_config_detail::reach_of(c));
-  gait_config_detail::set_limits(c.limits, model, legs, c.home, params, shape, c.step_height_mm, source);
-  gait_config_detail::set_edges(c, c.limits);
-  gait_config_detail::set_speeds(c);
-  finish_gait_config(c);
-}
-
-//! One robot's strides of the stored table ([leg][direction], 1/32 mm):
-//! what a firmware keeps in flash of velocity_limit_table.h.
-struct StoredStrides {
-  uint16_t code[kMaxLegs][kStrideDirections];
-};
-constexpr StoredStrides stored_strides(uint8_t r) {
-  StoredStrides s{};
-  for (uint8_t i = 0; i < kMaxLegs; ++i)
-    for (uint8_t k = 0; k < kStrideDirections; ++k) s.code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
-  return s;
-}
-
-namespace gait_config_detail {
 //! The ramps of stored configuration r: Fixed's from the table (what
 //! finish_gait_config() gives it), float's left to finish_gait_config().
 template <uint8_t kLegs, bool kSearch>
@@ -197,17 +154,47 @@ constexpr void set_stored_ramps(GaitConfig<Fixed, kLegs, kSearch>& c, uint8_t r)
 template <uint8_t kLegs, bool kSearch>
 constexpr void set_stored_ramps(GaitConfig<float, kLegs, kSearch>&, uint8_t) {}
 }  // namespace gait_config_detail
-//! Whether stored_gait_config<S>() includes the ramps (Fixed) or leaves
-//! them to finish_gait_config() (float).
+
+//! The ramps of a configuration whose other fields are set: to the top
+//! forward speed of a trot-like duty in one default cycle (every first
+//! stance stays within its stride), and the touch-down points' speed.
+template <typename S, uint8_t kLegs, bool kSearch>
+void finish_gait_config(GaitConfig<S, kLegs, kSearch>& c) {
+  const S reach = gait_config_detail::reach_of(c);
+  const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
+  const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
+  c.accel_mm_s2 = max_of(top_speed * c.limits.min_hz, S(1));
+  c.yaw_accel_rad_s2 = max_of(top_yaw * c.limits.min_hz, scalar<S>(0.05));
+  c.target_speed_mm_s = max_of((top_speed + top_yaw * reach) * S(2), scalar<S>(10.0));
+}
+
+//! Builds (in c) the configuration of `model` with `legs` (an AnyLeg per
+//! leg), `params` and `shape`: at start-up (IK search), not per tick.
+template <typename S, uint8_t kLegs, bool kSearch>
+void fill_gait_config(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
+                      SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {
+  if (model.leg_count > kLegs) {
+    c.leg_count = 0;
+    return;
+  }
+  c.leg_count = model.leg_count;
+  for (uint8_t i = 0; i < model.leg_count; ++i) c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
+  gait_config_detail::set_params(c, model, params, shape, gait_config_detail::reach_of(c));
+  gait_config_detail::set_limits(c.limits, model, legs, c.home, params, shape, c.step_height_mm, source);
+  gait_config_detail::set_edges(c, c.limits);
+  gait_config_detail::set_speeds(c);
+  finish_gait_config(c);
+}
+
+//! Whether stored_gait_config<S>() includes the ramps (else finish_gait_config()).
 template <typename S>
 constexpr bool stored_ramps_given() { return false; }
 template <>
 constexpr bool stored_ramps_given<Fixed>() { return true; }
 
-//! What fill_gait_config() gives built-in model r (kAllRobots[r]) at its
-//! gait defaults, as a constant (float without the ramps,
-//! stored_ramps_given()): a firmware keeps it in flash. flash_codes: where
-//! the strides are (kSearch false: StrideTable<false>).
+//! What fill_gait_config() gives built-in model r at its gait defaults, as
+//! a constant a firmware keeps in flash (stored_ramps_given()). flash_codes:
+//! where the strides are (kSearch false).
 template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r, const uint16_t* flash_codes) {
   namespace enc = velocity_limit_encoding;
@@ -240,8 +227,7 @@ constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r) {
   return stored_gait_config<S, kLegs, kSearch>(r, &detail::VelocityLimitTables<>::kStride[r][0][0]);
 }
 
-//! The same as a value (fill_gait_config() builds it in place: no copy on
-//! the AVR's stack).
+//! fill_gait_config() as a value (that one builds in place: no AVR stack copy).
 template <typename S>
 GaitConfig<S> make_gait_config(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
                                SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {

@@ -1,15 +1,9 @@
 //! GaitEngine: per tick, the foot targets of a legged robot walking a gait
-//! table at a commanded velocity (time is a parameter: tick(dt)). Feet are
-//! in the stance frame (kinematics/body_pose.h); body_pose() says where the
-//! body is in it. The command ramps to its plan (speed_ramp.h); feet on the
-//! ground move by the inverse of the body's step (stance.h); a foot lifts
-//! when the phase clock passes its offset (table_phases.h) if enough feet
-//! stay down, swings (swing_feet.h) to its touch-down point (touchdown.h)
-//! and lands when its swing time is over. With the command at zero, a foot
-//! away from home takes one more step until every foot is home and the body
-//! shift (body_shift.h) is back to zero. Gait changes keep feet in the air
-//! on their old swing. Set-up and walking tick: gait_engine_walk.h; feet in
-//! the air: gait_engine_swing.h; body shift and margin: gait_engine_balance.h.
+//! table at a commanded velocity (tick(dt)), in the stance frame
+//! (kinematics/body_pose.h; body_pose() says where the body is in it).
+//! Set-up and walking tick: gait_engine_walk.h; feet in the air:
+//! gait_engine_swing.h; body shift and margin: gait_engine_balance.h; the
+//! behaviour: docs/gaits.md.
 #ifndef STRIDER_GAIT_GAIT_ENGINE_H
 #define STRIDER_GAIT_GAIT_ENGINE_H
 
@@ -28,7 +22,6 @@ namespace strider {
 template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 class GaitEngine {
  public:
-  //! The robot stands with no configuration (configure() before use).
   GaitEngine()
       : phases_(), sit_requested_(false), step_in_place_(false), ramp_(), foot_(), contact_(), pending_(), swing_(),
         stance_elapsed_(), td_(), edge_(), margin_(), margin_fresh_(false), odo_(), held_(false),
@@ -46,7 +39,7 @@ class GaitEngine {
   //! into place and finished there if its ramps are not given.
   void configure_stored(const GaitConfig<S, kLegs, kSearch>* flash_config, const GaitTable& gait, bool sitting = false) {
     flash_copy(&cfg_, flash_config, sizeof cfg_);
-    finish_stored(cfg_);
+    if (!stored_ramps_given<S>()) finish_gait_config(cfg_);
     configure(cfg_, gait, sitting);
   }
 
@@ -55,7 +48,7 @@ class GaitEngine {
   //! end of a step.
   void set_command(S vx, S vy, S wz, S speed_pct = scalar<S>(100.0)) {
     constexpr S hundred = scalar<S>(100.0);
-    const S k = clamp(speed_pct, S(0), hundred) / hundred;  // exact at 100 %
+    const S k = clamp(speed_pct, S(0), hundred) / hundred;
     ramp_.cmd_vx = vx * k;
     ramp_.cmd_vy = vy * k;
     ramp_.cmd_wz = wz * k;
@@ -77,7 +70,7 @@ class GaitEngine {
   //! Changes the gait, also while walking.
   void set_gait(const GaitTable& gait);
   void stand_up() { if (state_ == GaitState::kSitting) state_ = GaitState::kStandingUp; }
-  void sit_down() {  // while walking, stops first
+  void sit_down() {
     sit_requested_ = true;
     set_command(S(0), S(0), S(0));
   }
@@ -163,9 +156,6 @@ class GaitEngine {
   }
 
  private:
-  static void finish_stored(GaitConfig<float, kLegs, kSearch>& c) { finish_gait_config(c); }
-  static void finish_stored(GaitConfig<Fixed, kLegs, kSearch>&) {}
-
   void load_table(const GaitTable& t) {
     phases_.load(t, cfg_.leg_count);
     invalidate_touchdown();
@@ -206,7 +196,6 @@ class GaitEngine {
   void update_margin() const;
   void build_support() const;
 
-  // Members without a default here are set by the constructor (zero).
   GaitConfig<S, kLegs, kSearch> cfg_;
   TablePhases<S, kLegs> phases_;
   GaitState state_ = GaitState::kStanding;

@@ -15,10 +15,9 @@
 
 namespace strider {
 
-//! The index of `model` in kAllRobots when it is that model (same name and
-//! geometry fingerprint) and `params` with `shape` are its defaults;
-//! kRobotCount otherwise. Compares names, not addresses: taking the address
-//! of every built-in model would put all of them in the AVR's RAM.
+//! The index of `model` in kAllRobots (same name and geometry fingerprint)
+//! when `params` with `shape` are its defaults; kRobotCount otherwise. Not by
+//! address: that would put every built-in model in the AVR's RAM.
 inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& params, SwingShape shape) {
   namespace enc = velocity_limit_encoding;
   using T = detail::VelocityLimitTables<>;
@@ -29,8 +28,7 @@ inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& pa
   enc::geometry_fingerprint(model, print);
   for (uint8_t k = 0; k < enc::kFingerprintWords; ++k)
     if (flash_u16(T::kGeometry[r], k) != print[k]) return kRobotCount;
-  // The defaults are positive (gait_params.h checks): equal values are equal
-  // bits, compared without float library calls on the AVR.
+  // Positive defaults: equal values are equal bits (no float calls on AVR).
   const auto same_value = [](float a, float b) { return detail::float_bits(a) == detail::float_bits(b); };
   const bool same = shape == d.shape && same_value(params.step_height_mm, d.step_height_mm) &&
                     same_value(params.step_length_mm, d.step_length_mm) && same_value(params.cycle_s, d.cycle_s);

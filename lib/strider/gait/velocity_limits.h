@@ -35,11 +35,9 @@ struct VelocityPlan {
 //! Direction k of a stride table is k * 22.5 deg from forward.
 constexpr uint8_t kStrideDirections = 16;
 
-//! Where a robot's stride table lives (the longest stride of leg i along
-//! direction k, in 1/32 mm, velocity_limit_encoding.h). In RAM (kInRam):
-//! filled by the IK search or copied from the stored table. Otherwise a
-//! pointer to the stored table in flash (a firmware: the 192 bytes stay out
-//! of RAM).
+//! A robot's stride table (the longest stride of leg i along direction k,
+//! in 1/32 mm, velocity_limit_encoding.h): in RAM (kInRam), or a pointer to
+//! the stored table in flash (a firmware).
 template <bool kInRam>
 struct StrideTable {
   uint16_t stride_code[kMaxLegs][kStrideDirections] = {};
@@ -63,8 +61,7 @@ struct VelocityLimits : StrideTable<kSearch> {
   constexpr VelocityLimits() : leg_count(0), preferred_stride_mm(), lift_ms(), swing_ms_per_mm(), stance_ms_per_mm() {}
 
   uint8_t leg_count;
-  //! False for planar legs: a sideways command is dropped (and reported as
-  //! limited).
+  //! False for planar legs: a sideways command is dropped (limited).
   bool sideways = true;
   S min_hz = S(1);                     //!< default step rate, 1 / cycle_s [Hz]
   S preferred_stride_mm;               //!< step_length_mm [mm]
@@ -96,8 +93,7 @@ struct VelocityLimits : StrideTable<kSearch> {
     return max_of(lo + (hi - lo) * f - budget_mm * S(2), S(0));
   }
 
-  //! The fastest step rate the servos allow for strides of `length_mm` in a
-  //! gait of this duty [Hz] (at most 100).
+  //! The fastest step rate the servos allow for a stride [mm] [Hz].
   S servo_hz(S length_mm, S duty) const {
     const S swing = lift_ms + swing_ms_per_mm * length_mm;
     S f = swing > S(0) ? scalar<S>(1000.0) * (S(1) - duty) / swing : scalar<S>(100.0);
@@ -138,8 +134,7 @@ struct VelocityLimits : StrideTable<kSearch> {
   }
 
   // plan()'s two halves: a short stack frame each on the AVR.
-  //! The largest R_i over the legs (0: no leg moves); *rate_lo the step rate
-  //! the legs' stride limits need for p's command.
+  //! The largest R_i (0: no leg moves); *rate_lo the rate the strides need.
   STRIDER_NOINLINE S stride_need(const Vec3<S>* home, const VelocityPlan<S>& p, S duty, S budget_mm,
                                  bool keep_stride, S* rate_lo) const {
     S lo = S(0), fastest = S(0);
@@ -156,8 +151,7 @@ struct VelocityLimits : StrideTable<kSearch> {
     return fastest;
   }
 
-  //! The step rate for p's command and, when the servos cannot keep up at
-  //! any rate, the command scaled down.
+  //! The step rate for p's command, scaled down if the servos need it.
   STRIDER_NOINLINE void fit(VelocityPlan<S>& p, S rate_lo, S fastest, S duty) const {
     // The largest k with a rate f >= k rate_lo inside the servo limits.
     const S swing_room = scalar<S>(1000.0) * (S(1) - duty);

@@ -15,13 +15,18 @@ namespace velocity_limits_detail {
 //! Swing phase samples of the stride check.
 constexpr uint8_t kSwingSamples = 5;
 
+//! Leg's joints q for a body-frame target, projected as walking does.
+template <typename S>
+IkStatus joints_at(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& body_target,
+                   typename AnyLeg<S>::Joints& q) {
+  S moved;
+  Vec3<S> at;
+  return leg.ik(proj.apply(leg.mount().body_to_leg(body_target), moved), q, at);
+}
 template <typename S>
 bool reaches(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& body_target) {
-  S moved;
-  const Vec3<S> t = proj.apply(leg.mount().body_to_leg(body_target), moved);
   typename AnyLeg<S>::Joints q;
-  Vec3<S> at;
-  return leg.ik(t, q, at) == IkStatus::kOk;
+  return joints_at(leg, proj, body_target, q) == IkStatus::kOk;
 }
 
 //! The point of a stride of length L along unit (dx, dy) at swing phase s
@@ -49,14 +54,6 @@ inline uint8_t mirror_twin(const RobotModel& m, uint8_t i) {
     return j;
   }
   return i;
-}
-
-template <typename S>
-void joints_at(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& body_target,
-               typename AnyLeg<S>::Joints& q) {
-  S moved;
-  Vec3<S> at;
-  leg.ik(proj.apply(leg.mount().body_to_leg(body_target), moved), q, at);
 }
 
 template <typename S>

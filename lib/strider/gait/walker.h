@@ -1,8 +1,6 @@
 //! Walker: a whole robot walking: gait engine -> body pose -> reachable-set
 //! projection (2-DOF legs) -> leg IK, per tick, with each leg's LegResult
-//! (leg_result.h). Its build profile P (robots/build_profile.h) says how many legs it holds,
-//! whether the results keep the feet (a firmware keeps only the joints,
-//! status and contact) and how many IK solvers (one per leg geometry).
+//! (leg_result.h), sized by its build profile P (robots/build_profile.h).
 #ifndef STRIDER_GAIT_WALKER_H
 #define STRIDER_GAIT_WALKER_H
 
@@ -70,8 +68,7 @@ class Walker {
   }
 
   //! Starts over with the legs built before and `config` (which may be the
-  //! engine's own), without the model: false when no legs are built or the
-  //! leg counts differ.
+  //! engine's own): false when no legs are built or the leg counts differ.
   bool restart(const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>& config, bool sitting = false) {
     if (dof_ == 0 || gait.leg_count != config.leg_count || config.leg_count != leg_count()) return false;
     engine_.configure(config, gait, sitting);
@@ -98,15 +95,15 @@ class Walker {
     solve();
   }
 
-  //! Every leg's IK for the engine's targets as they are.
   void refresh() { solve(); }
 
   const Result& leg(uint8_t i) const { return out_[i]; }
   //! Every leg's result, leg_count() of them (ServoStage::frame()).
   const Result* results() const { return out_; }
+  //! A body-frame point [mm] in leg i's frame, as the walker computes it.
+  Vec3<S> to_leg(uint8_t i, const Vec3<S>& body_mm) const { return to_leg_unchecked(i, body_mm); }
   //! Static stability margin [mm] (negative: CoM outside the support).
   S margin_mm() const { return engine_.margin_mm(); }
-  //! The worst status over all legs this tick.
   IkStatus worst_status() const {
     IkStatus w = IkStatus::kOk;
     for (uint8_t i = 0; i < leg_count(); ++i) w = worst(w, out_[i].status);
@@ -126,15 +123,13 @@ class Walker {
     solve_legs(&body, pose.translation_mm);
   }
 
-  //! Every leg for the body posed by `body` (nullptr: not turned, only
-  //! moved by `shift` [mm]). Vectors are copied field by field (avr-gcc
-  //! copies a whole Vec3 with a byte loop).
+  //! Every leg for the body posed by `body` (nullptr: only moved by `shift`
+  //! [mm]). Vectors are copied field by field (avr-gcc loops over bytes).
   void solve_legs(const Transform<S>* body, const Vec3<S>& shift) {
     // The body at the stance frame's origin: the feet are in the body frame.
     const bool still = leg_ik::is_zero(shift.x) && leg_ik::is_zero(shift.y) && leg_ik::is_zero(shift.z);
     const bool projects = proj_.projects();
     Scratch scratch;  // nothing when the results keep the feet
-    // By pointer: no index products per leg.
     Result* r = out_;
     const Vec3<S>* p = engine_.feet();
     const bool* contact = engine_.contacts();
@@ -164,8 +159,7 @@ class Walker {
     }
   }
 
-  //! solve_legs()'s leg i for its body-frame target (in r or the scratch)
-  //! when the fast IK does not take it.
+  //! solve_legs()'s leg i when the fast IK does not take it.
   STRIDER_NOINLINE void solve_leg(uint8_t i, Result& r, Scratch& scratch, bool projects) {
     const Vec3<S> leg_target = to_leg_unchecked(i, target_of(r, scratch));
     if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
@@ -196,8 +190,8 @@ class Walker {
     r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
   }
 
-  //! The engine's configuration from the model, built in place (the search
-  //! needs an AnyLeg per leg: shared solvers build them on the stack).
+  //! The engine's configuration from the model (the search needs an AnyLeg
+  //! per leg: shared solvers build them on the stack).
   void configure_engine(const RobotModel& model, const GaitParams& params, SwingShape shape, const GaitTable& gait,
                         bool sitting) {
     if (P::kSearch && legs_.per_leg() == nullptr) {
@@ -244,8 +238,7 @@ class Walker {
     return true;
   }
 
-  //! The legs from flash; false when they do not fit or have another leg
-  //! count than the gait's.
+  //! The legs from flash; false when they do not fit the gait or this build.
   bool build_legs(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, uint8_t gait_legs) {
     dof_ = 0;
     const uint8_t legs = flash_u8(&flash_legs->leg_count);

@@ -9,8 +9,7 @@
 
 namespace strider {
 
-//! Legs i and j of `model` solve alike: the same joint limits and, for
-//! abduction legs, the same side.
+//! Legs i and j of `model` solve alike: same joint limits (and side).
 constexpr bool same_leg_solver(const RobotModel& model, uint8_t i, uint8_t j) {
   const LegModel& a = model.legs[i];
   const LegModel& b = model.legs[j];
@@ -25,21 +24,16 @@ constexpr uint8_t leg_solver_of(const RobotModel& model, uint8_t i) {
   while (j < i && !same_leg_solver(model, i, j)) ++j;
   return j;
 }
-//! How many distinct leg solvers `model` needs.
-constexpr uint8_t leg_solver_count(const RobotModel& model) {
+//! How many distinct leg solvers the legs before leg `end` of `model` need.
+constexpr uint8_t leg_solver_count(const RobotModel& model, uint8_t end = kMaxLegs) {
   uint8_t n = 0;
-  for (uint8_t i = 0; i < model.leg_count && i < kMaxLegs; ++i)
+  for (uint8_t i = 0; i < model.leg_count && i < end; ++i)
     if (leg_solver_of(model, i) == i) ++n;
   return n;
 }
-
 //! The index of leg i's solver among `model`'s leg solvers.
 constexpr uint8_t leg_solver_index(const RobotModel& model, uint8_t i) {
-  const uint8_t first = leg_solver_of(model, i);
-  uint8_t n = 0;
-  for (uint8_t k = 0; k < first; ++k)
-    if (leg_solver_of(model, k) == k) ++n;
-  return n;
+  return leg_solver_count(model, leg_solver_of(model, i));
 }
 //! The first leg of `model`'s leg solver n (model.leg_count when there is none).
 constexpr uint8_t leg_of_solver(const RobotModel& model, uint8_t n) {
