@@ -11,15 +11,13 @@
 
 namespace strider {
 
-//! True when fill_gait_config() can give the velocity limits: always with
-//! the search (kSearch), else only from the stored table.
+//! True when fill_gait_config() can give the velocity limits (kSearch: always).
 template <bool kSearch>
 bool velocity_limits_known(const RobotModel& model, const GaitParams& params, SwingShape shape) {
   return kSearch || stored_limits_index(model, params, shape) < kRobotCount;
 }
 
-//! kLegs: legs held; kSearch: the velocity limits' strides in RAM, from the
-//! IK search for any model (else the stored table's in flash, StrideTable).
+//! kLegs: legs held; kSearch: strides in RAM from the IK search (else in flash).
 template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 struct GaitConfig {
   constexpr GaitConfig()
@@ -59,8 +57,7 @@ enum class LimitsSource : uint8_t {
   kSearch = 1           //!< always the IK search (velocity_limits.h)
 };
 
-//! Robot r's strides of the stored table, as a constant (what a firmware
-//! keeps in flash of velocity_limit_table.h).
+//! Robot r's strides of the stored table, as a constant (a firmware's flash).
 constexpr StrideTable<true> stored_strides(uint8_t r) {
   StrideTable<true> t{};
   for (uint8_t i = 0; i < kMaxLegs; ++i)
@@ -86,8 +83,7 @@ constexpr void set_speeds(GaitConfig<S, kLegs, kSearch>& c) {
   c.pose_rate_rad_s = scalar<S>(0.5);
   c.home_tolerance_mm = scalar<S>(0.5);
 }
-//! The fields of the gait defaults and the model's kind, for feet that
-//! reach `reach` mm (reach_of()) from the body's centre.
+//! The fields of the gait defaults and the model's kind (reach: reach_of()).
 template <typename S, uint8_t kLegs, bool kSearch>
 constexpr void set_params(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
                           S reach) {
@@ -136,14 +132,12 @@ struct TableStrides {
     return velocity_limit_encoding::stride_of(detail::VelocityLimitTables<>::kStride[r][i][k], S());
   }
 };
-//! Robot r's strides in a configuration built at compile time: copied, or
-//! pointed at (flash_codes).
+//! Robot r's strides at compile time: copied, or pointed at (flash_codes).
 constexpr void set_stored_strides(StrideTable<true>& t, uint8_t r, const uint16_t*) { t = stored_strides(r); }
 constexpr void set_stored_strides(StrideTable<false>& t, uint8_t, const uint16_t* flash_codes) {
   t.flash_codes = flash_codes;
 }
-//! The ramps of stored configuration r: Fixed's from the table (what
-//! finish_gait_config() gives it), float's left to finish_gait_config().
+//! Stored configuration r's ramps: Fixed's from the table, float's at run time.
 template <uint8_t kLegs, bool kSearch>
 constexpr void set_stored_ramps(GaitConfig<Fixed, kLegs, kSearch>& c, uint8_t r) {
   using T = detail::VelocityLimitTables<>;
@@ -155,9 +149,8 @@ template <uint8_t kLegs, bool kSearch>
 constexpr void set_stored_ramps(GaitConfig<float, kLegs, kSearch>&, uint8_t) {}
 }  // namespace gait_config_detail
 
-//! The ramps of a configuration whose other fields are set: to the top
-//! forward speed of a trot-like duty in one default cycle (every first
-//! stance stays within its stride), and the touch-down points' speed.
+//! The ramps of a configuration whose other fields are set: to a trot's top
+//! speed in one default cycle (first stances stay within their strides).
 template <typename S, uint8_t kLegs, bool kSearch>
 void finish_gait_config(GaitConfig<S, kLegs, kSearch>& c) {
   const S reach = gait_config_detail::reach_of(c);
@@ -192,9 +185,8 @@ constexpr bool stored_ramps_given() { return false; }
 template <>
 constexpr bool stored_ramps_given<Fixed>() { return true; }
 
-//! What fill_gait_config() gives built-in model r at its gait defaults, as
-//! a constant a firmware keeps in flash (stored_ramps_given()). flash_codes:
-//! where the strides are (kSearch false).
+//! What fill_gait_config() gives built-in model r at its gait defaults, as a
+//! constant (stored_ramps_given()). flash_codes: the strides (kSearch false).
 template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r, const uint16_t* flash_codes) {
   namespace enc = velocity_limit_encoding;

@@ -35,8 +35,7 @@ class GaitEngine {
     fill_gait_config(cfg_, model, legs, params, shape);
     configure(cfg_, gait, sitting);
   }
-  //! The same from a configuration in flash (stored_gait_config()), copied
-  //! into place and finished there if its ramps are not given.
+  //! The same from a configuration in flash (stored_gait_config()).
   void configure_stored(const GaitConfig<S, kLegs, kSearch>* flash_config, const GaitTable& gait, bool sitting = false) {
     flash_copy(&cfg_, flash_config, sizeof cfg_);
     if (!stored_ramps_given<S>()) finish_gait_config(cfg_);
@@ -44,8 +43,7 @@ class GaitEngine {
   }
 
   //! Velocity (vx, vy [mm/s], wz [rad/s], body frame) at speed_pct [0, 100]
-  //! percent, clamped to the robot's limits (limited()). Zero stops at the
-  //! end of a step.
+  //! percent, clamped to the robot's limits (limited()).
   void set_command(S vx, S vy, S wz, S speed_pct = scalar<S>(100.0)) {
     constexpr S hundred = scalar<S>(100.0);
     const S k = clamp(speed_pct, S(0), hundred) / hundred;
@@ -115,8 +113,7 @@ class GaitEngine {
   bool body_level() const { return posture_.level(); }
   S shift_x_mm() const { return shift_.x_mm(); }
   S shift_y_mm() const { return shift_.y_mm(); }
-  //! Static stability margin of the CoM [mm] (stability.h), computed when
-  //! asked (once per tick).
+  //! Static stability margin of the CoM [mm], computed when asked.
   S margin_mm() const {
     if (!margin_fresh_) update_margin();
     return margin_;
@@ -182,8 +179,7 @@ class GaitEngine {
     swing_.unsettle();
   }
 
-  // The walking tick (gait_engine_walk.h, gait_engine_swing.h); out of line
-  // parts keep step_walk()'s AVR frame short.
+  // The walking tick (gait_engine_walk.h, gait_engine_swing.h).
   void start_walking();
   void step_walk(S dt);
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);

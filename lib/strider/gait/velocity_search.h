@@ -40,8 +40,7 @@ Vec3<S> stride_point(const Vec3<S>& home, S dx, S dy, S L, SwingShape shape, S s
   return Vec3<S>(home.x + dx * along, home.y + dy * along, home.z + sp.w * swing_apex_mm(shape, L, step_mm));
 }
 
-//! The leg that is leg i mirrored across the body's x-z plane (mount, yaw,
-//! standing foot and joint ranges mirrored), or i itself when none is.
+//! Leg i's mirror image across the body's x-z plane, or i when none is.
 inline uint8_t mirror_twin(const RobotModel& m, uint8_t i) {
   const LegModel& a = m.legs[i];
   auto near = [](float p, float q) { return p - q <= 1e-3f && q - p <= 1e-3f; };
@@ -70,9 +69,8 @@ bool stride_ok(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<
 
 }  // namespace velocity_limits_detail
 
-//! The limits of `model` with `legs` (AnyLeg from the model) and standing
-//! feet home[i] [mm, body frame], for a swing shape and step height [mm];
-//! step_length_mm and cycle_s are the gait defaults (gait_params.h).
+//! The limits of `model` with `legs` and standing feet home[i] [mm, body
+//! frame], for a swing shape, step height and length [mm] and cycle [s].
 template <typename S>
 VelocityLimits<S> compute_velocity_limits(const RobotModel& model, const AnyLeg<S>* legs, const Vec3<S>* home,
                                           SwingShape shape, S step_height_mm, S step_length_mm, S cycle_s) {

@@ -24,9 +24,8 @@ class Walker {
  public:
   Walker() : dof_(0), turn_(), proj_() {}
 
-  //! Builds the legs, the configuration and the engine. Returns false for a
-  //! gait of another leg count, or velocity limits this build cannot give.
-  //! solve_now false leaves the legs' IK to a later refresh().
+  //! Builds the legs, the configuration and the engine: false when they do
+  //! not fit. solve_now false leaves the legs' IK to a later refresh().
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
                  bool sitting = false, bool solve_now = true) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !velocity_limits_known<P::kSearch>(model, params, shape) || !build_legs(model))
@@ -36,8 +35,7 @@ class Walker {
     return true;
   }
 
-  //! The same with the configuration from flash: flash_config is
-  //! stored_gait_config() of this model.
+  //! The same with the configuration from flash (stored_gait_config()).
   bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>* flash_config,
                         bool sitting = false, bool solve_now = true) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !build_legs(model)) return false;
@@ -55,8 +53,7 @@ class Walker {
     return true;
   }
 
-  //! The same with a configuration built before (make_gait_config): no IK
-  //! search. The legs are built from `model` every time.
+  //! The same with a configuration built before (make_gait_config).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>& config,
                  bool sitting = false) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || config.leg_count != model.leg_count)
@@ -146,8 +143,7 @@ class Walker {
         t.z = sub_inline(p->z, shift.z);
       }
       r->contact = contact[i];
-      // The fast IK of a body-frame target (Fixed coxa/femur/tibia), reached
-      // as given: the foot is the target.
+      // Fast IK of a body-frame target (Fixed coxa/femur/tibia), reached.
       if (!projects && legs_.solver(i).ik_body_fast(legs_.mount(i), t, r->q, ik_options_)) {
         set_clamp(*r, S(0));
         set_ik_status(*r, IkStatus::kOk);
@@ -190,8 +186,7 @@ class Walker {
     r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
   }
 
-  //! The engine's configuration from the model (the search needs an AnyLeg
-  //! per leg: shared solvers build them on the stack).
+  //! The engine's configuration from the model (an AnyLeg per leg).
   void configure_engine(const RobotModel& model, const GaitParams& params, SwingShape shape, const GaitTable& gait,
                         bool sitting) {
     if (P::kSearch && legs_.per_leg() == nullptr) {

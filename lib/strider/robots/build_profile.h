@@ -20,15 +20,12 @@ struct HostProfile {
   static constexpr uint8_t kSolvers = kLegs;
   //! The leg results keep each leg's target, foot, IK status and clamp.
   static constexpr bool kFeet = true;
-  //! Servo tick-map ranges shared by the joints of a slot (0: one per
-  //! joint; the joints per leg for legs of one geometry, servo_tick_map.h).
+  //! Servo tick-map ranges shared by a slot's joints (0: one per joint).
   static constexpr uint8_t kTickSlots = 0;
   static constexpr uint8_t kJoints = kMaxLegs * kMaxLegDof;  //!< most servos driven
-  //! The velocity limits by the IK search, strides in RAM; false: only the
-  //! stored limits, read from flash (gait/velocity_limits.h).
+  //! Velocity limits by the IK search, strides in RAM (else stored, in flash).
   static constexpr bool kSearch = true;
-  //! Which of the model's constants the profile holds (FirmwareProfile's);
-  //! the others are built from the model at start-up.
+  //! Which of the model's constants the profile holds (else built at start-up).
   static constexpr bool kStoredConfig = false;
   static constexpr bool kStoredLegs = false;
   static constexpr bool kStoredChannels = false;
