@@ -142,9 +142,8 @@ class GaitEngine {
   STRIDER_ALWAYS_INLINE bool beyond_edge(uint8_t i, const Vec3<S>& p) const { return edge_.beyond(cfg_, i, p); }
   //! The share of a leg's longest stride beyond which a foot is at its edge.
   static constexpr double edge_share() { return ReachEdge<S, kLegs>::kEdgeShare; }
-  //! The gait as walked: gait() relabelled for the direction of travel (rebuilt).
+  //! The gait as walked: gait() relabelled for the direction of travel.
   GaitTable table() const { return phases_.table(); }
-  //! The gait as given to configure() or set_gait() (table() may be relabelled).
   const GaitTable& gait() const { return phases_.base; }
   const GaitConfig<S, kLegs, kSearch>& config() const { return cfg_; }
   const SupportPolygon<S, kLegs>& support() const {

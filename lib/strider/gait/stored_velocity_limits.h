@@ -1,8 +1,6 @@
-//! Stored velocity limits: the limits of a built-in model at its gait
-//! defaults, read from the table generated on the host
-//! (velocity_limit_table.h) instead of searched with IK at start-up (1.4-4 s
-//! and 2.5 KB of stack on the AVR). Any other model or parameters still need
-//! the search (velocity_search.h).
+//! Stored velocity limits: a built-in model's at its gait defaults, read from
+//! the table generated on the host (velocity_limit_table.h) instead of the
+//! IK search (velocity_search.h: 1.4-4 s and 2.5 KB of stack on the AVR).
 #ifndef STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
 #define STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
 

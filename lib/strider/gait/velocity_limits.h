@@ -18,9 +18,8 @@ namespace strider {
 
 //! Share of a servo's no-load speed a step may use.
 constexpr double kServoSpeedShare = 0.75;
-//! Share of the longest reachable stride a gait may use: the rest absorbs a
-//! tick of overshoot at lift-off, the turning approximations of stance.h and
-//! command changes.
+//! Share of the longest reachable stride a gait may use (the rest absorbs
+//! overshoot at lift-off, stance.h's turning approximations, command changes).
 constexpr double kStrideShare = 0.9;
 //! Most the body may turn during one stance [rad] (docs/gaits.md).
 constexpr double kMaxStanceTurnRad = 0.4;
@@ -103,9 +102,8 @@ struct VelocityLimits : StrideTable<kSearch> {
   }
 
   //! The command (vx, vy [mm/s], wz [rad/s]) as the robot can walk it with
-  //! its feet at home[i] [mm, body frame] in a gait of this duty. Gaits that
-  //! shift the body pass their budget [mm] and keep_stride = true (their
-  //! stride stays at most the preferred step length).
+  //! its feet at home[i] [mm, body frame] in a gait of this duty; gaits that
+  //! shift the body pass their budget [mm] and keep_stride (preferred length).
   VelocityPlan<S> plan(const Vec3<S>* home, S vx, S vy, S wz, S duty, S budget_mm = S(0),
                        bool keep_stride = false) const {
     VelocityPlan<S> p{vx, vy, wz, smaller(min_hz, servo_hz(S(0), duty)), false};

@@ -29,8 +29,8 @@ bool reaches(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>
   return joints_at(leg, proj, body_target, q) == IkStatus::kOk;
 }
 
-//! The point of a stride of length L along unit (dx, dy) at swing phase s
-//! (s < 0: the stance end -L/2, s > 1: the stance end +L/2).
+//! The point of a stride L along unit (dx, dy) at swing phase s (s < 0,
+//! s > 1: the stance ends -L/2, +L/2).
 template <typename S>
 Vec3<S> stride_point(const Vec3<S>& home, S dx, S dy, S L, SwingShape shape, S step_mm, S s) {
   if (s < S(0)) return Vec3<S>(home.x - dx * L * scalar<S>(0.5), home.y - dy * L * scalar<S>(0.5), home.z);
