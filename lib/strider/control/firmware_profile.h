@@ -46,9 +46,9 @@ struct FirmwareProfile : HostProfile<S> {
 
   //! The model's strides alone of the stored table, and its gait
   //! configuration at its defaults with the ramps (stored_gait_config()).
-  static constexpr StoredStrides kStrides STRIDER_PROGMEM = stored_strides(r);
+  static constexpr StrideTable<true> kStrides STRIDER_PROGMEM = stored_strides(r);
   static constexpr GaitConfig<S, kLegs, kSearch> kGaitConfig STRIDER_PROGMEM =
-      stored_gait_config<S, kLegs, kSearch>(r, &kStrides.code[0][0]);
+      stored_gait_config<S, kLegs, kSearch>(r, &kStrides.stride_code[0][0]);
   //! The walker's legs, but for the mounts' cos and sin (walker_legs()).
   static constexpr WalkerLegs<S, kLegs, kSolvers> kWalkerLegsInFlash STRIDER_PROGMEM =
       walker_legs<S, kLegs, kSolvers>(kModel);
@@ -59,7 +59,7 @@ struct FirmwareProfile : HostProfile<S> {
   static_assert(kChannels.count == kJoints, "the model's channels fit the servo stage");
 };
 template <uint8_t r, typename S>
-constexpr StoredStrides FirmwareProfile<r, S>::kStrides;
+constexpr StrideTable<true> FirmwareProfile<r, S>::kStrides;
 template <uint8_t r, typename S>
 constexpr GaitConfig<S, FirmwareProfile<r, S>::kLegs, false> FirmwareProfile<r, S>::kGaitConfig;
 template <uint8_t r, typename S>

@@ -11,16 +11,13 @@
 
 namespace strider {
 
-//! True when fill_gait_config() can give `model` with `params` and `shape`
-//! its velocity limits: always with the search (kSearch), else only from
-//! the stored table.
+//! True when fill_gait_config() can give the velocity limits (kSearch: always).
 template <bool kSearch>
 bool velocity_limits_known(const RobotModel& model, const GaitParams& params, SwingShape shape) {
   return kSearch || stored_limits_index(model, params, shape) < kRobotCount;
 }
 
-//! kLegs: legs held; kSearch: the velocity limits' strides in RAM, from the
-//! IK search for any model (else the stored table's in flash, StrideTable).
+//! kLegs: legs held; kSearch: strides in RAM from the IK search (else in flash).
 template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 struct GaitConfig {
   constexpr GaitConfig()
@@ -28,7 +25,6 @@ struct GaitConfig {
         shift_budget_mm(), sit_drop_mm(), accel_mm_s2(), yaw_accel_rad_s2(), shift_speed_mm_s(), target_speed_mm_s(),
         pose_speed_mm_s(), pose_rate_rad_s(), home_tolerance_mm(), shift_x_only(false), unit_shift(0) {}
 
-  // leg_count, shift_x_only and unit_shift are zero, by the constructors.
   uint8_t leg_count;
   Vec3<S> home[kLegs];       //!< standing feet, body frame [mm]
   SwingShape shape = SwingShape::kEllipse;
@@ -61,6 +57,14 @@ enum class LimitsSource : uint8_t {
   kSearch = 1           //!< always the IK search (velocity_limits.h)
 };
 
+//! Robot r's strides of the stored table, as a constant (a firmware's flash).
+constexpr StrideTable<true> stored_strides(uint8_t r) {
+  StrideTable<true> t{};
+  for (uint8_t i = 0; i < kMaxLegs; ++i)
+    for (uint8_t k = 0; k < kStrideDirections; ++k) t.stride_code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
+  return t;
+}
+
 namespace gait_config_detail {
 template <typename S>
 constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
@@ -79,8 +83,7 @@ constexpr void set_speeds(GaitConfig<S, kLegs, kSearch>& c) {
   c.pose_rate_rad_s = scalar<S>(0.5);
   c.home_tolerance_mm = scalar<S>(0.5);
 }
-//! The fields that come from the gait defaults and the model's kind, for
-//! feet that reach `reach` mm (reach_of()) from the body's centre.
+//! The fields of the gait defaults and the model's kind (reach: reach_of()).
 template <typename S, uint8_t kLegs, bool kSearch>
 constexpr void set_params(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
                           S reach) {
@@ -98,8 +101,7 @@ constexpr void set_params(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& mo
   c.min_support = model.leg_count == 6 ? 3 : 2;
   c.unit_shift = units::unit_shift(reach + reach);
 }
-//! The velocity limits: stored, or from the IK search (for another model or
-//! parameters, or when `source` asks for it).
+//! The velocity limits: stored, or from the IK search.
 template <typename S>
 void set_limits(VelocityLimits<S, true>& lim, const RobotModel& model, const AnyLeg<S>* legs, const Vec3<S>* home,
                 const GaitParams& params, SwingShape shape, S step_height_mm, LimitsSource source) {
@@ -107,83 +109,35 @@ void set_limits(VelocityLimits<S, true>& lim, const RobotModel& model, const Any
     lim = compute_velocity_limits(model, legs, home, shape, step_height_mm, scalar<S>(params.step_length_mm),
                                   scalar<S>(params.cycle_s));
 }
-//! Without the search: the stored limits, or none (no stride: the robot
-//! cannot walk; velocity_limits_known() said so before).
+//! Without the search: the stored limits, or none (the robot cannot walk).
 template <typename S>
 void set_limits(VelocityLimits<S, false>& lim, const RobotModel& model, const AnyLeg<S>*, const Vec3<S>*,
                 const GaitParams& params, SwingShape shape, S, LimitsSource) {
   if (!stored_velocity_limits(model, params, shape, lim)) lim = VelocityLimits<S, false>();
 }
-//! Robot r's strides of the stored table, in a configuration built at
-//! compile time: copied, or pointed at (flash_codes).
-constexpr void set_stored_strides(StrideTable<true>& t, uint8_t r, const uint16_t*) {
-  for (uint8_t i = 0; i < kMaxLegs; ++i)
-    for (uint8_t k = 0; k < kStrideDirections; ++k) t.stride_code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
+//! Half of each leg's shortest stride, stride(i, k) [mm] along direction k.
+template <typename S, uint8_t kLegs, bool kSearch, typename Strides>
+constexpr void set_edges(GaitConfig<S, kLegs, kSearch>& c, const Strides& strides) {
+  for (uint8_t i = 0; i < c.leg_count; ++i) {
+    S shortest = strides.stride_mm(i, 0);
+    for (uint8_t k = 1; k < kStrideDirections; ++k) shortest = min_of(shortest, strides.stride_mm(i, k));
+    c.edge_mm[i] = shortest * scalar<S>(0.5);
+  }
 }
+//! Robot r's strides of the stored table, read at compile time.
+template <typename S>
+struct TableStrides {
+  uint8_t r;
+  constexpr S stride_mm(uint8_t i, uint8_t k) const {
+    return velocity_limit_encoding::stride_of(detail::VelocityLimitTables<>::kStride[r][i][k], S());
+  }
+};
+//! Robot r's strides at compile time: copied, or pointed at (flash_codes).
+constexpr void set_stored_strides(StrideTable<true>& t, uint8_t r, const uint16_t*) { t = stored_strides(r); }
 constexpr void set_stored_strides(StrideTable<false>& t, uint8_t, const uint16_t* flash_codes) {
   t.flash_codes = flash_codes;
 }
-}  // namespace gait_config_detail
-
-//! The ramps of a configuration whose other fields are set: from standing to
-//! the top forward speed of a trot-like duty in one default cycle, which
-//! keeps every first stance within its stride, and the touch-down points'
-//! speed. Run time only (velocity plans); fill_gait_config() ends with it.
-template <typename S, uint8_t kLegs, bool kSearch>
-void finish_gait_config(GaitConfig<S, kLegs, kSearch>& c) {
-  const S reach = gait_config_detail::reach_of(c);
-  const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
-  const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
-  c.accel_mm_s2 = max_of(top_speed * c.limits.min_hz, S(1));
-  c.yaw_accel_rad_s2 = max_of(top_yaw * c.limits.min_hz, scalar<S>(0.05));
-  c.target_speed_mm_s = max_of((top_speed + top_yaw * reach) * S(2), scalar<S>(10.0));
-}
-
-//! Builds (in c) the configuration of `model` with `legs` (AnyLeg::from_model for
-//! every leg) and gait defaults `params`, for swing shape `shape`. A built-in
-//! model at its defaults takes its velocity limits from the stored table
-//! (stored_velocity_limits.h: no IK, a few thousand cycles); otherwise they
-//! cost a few thousand IK calls: call it at start-up, not per tick.
-template <typename S, uint8_t kLegs, bool kSearch>
-void fill_gait_config(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
-                      SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {
-  if (model.leg_count > kLegs) {  // more legs than this build's walker holds
-    c.leg_count = 0;
-    return;
-  }
-  c.leg_count = model.leg_count;
-  S reach = S(0);
-  for (uint8_t i = 0; i < model.leg_count; ++i) {
-    c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
-    reach = max_of(reach, max_of(abs(c.home[i].x), abs(c.home[i].y)));
-  }
-  gait_config_detail::set_params(c, model, params, shape, reach);
-  gait_config_detail::set_limits(c.limits, model, legs, c.home, params, shape, c.step_height_mm, source);
-  for (uint8_t i = 0; i < model.leg_count; ++i) {
-    S shortest = c.limits.stride_mm(i, 0);
-    for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
-    c.edge_mm[i] = shortest * scalar<S>(0.5);
-  }
-  gait_config_detail::set_speeds(c);
-  finish_gait_config(c);
-}
-
-//! One robot's strides of the stored table ([leg][direction], 1/32 mm):
-//! what a firmware keeps in flash of velocity_limit_table.h.
-struct StoredStrides {
-  uint16_t code[kMaxLegs][kStrideDirections];
-};
-constexpr StoredStrides stored_strides(uint8_t r) {
-  StoredStrides s{};
-  for (uint8_t i = 0; i < kMaxLegs; ++i)
-    for (uint8_t k = 0; k < kStrideDirections; ++k) s.code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
-  return s;
-}
-
-namespace gait_config_detail {
-//! The ramps of stored configuration r: Fixed's from the table (what
-//! finish_gait_config() gives it, computed by tools/gen), float's left to
-//! finish_gait_config() at run time (stored_ramps_given).
+//! Stored configuration r's ramps: Fixed's from the table, float's at run time.
 template <uint8_t kLegs, bool kSearch>
 constexpr void set_stored_ramps(GaitConfig<Fixed, kLegs, kSearch>& c, uint8_t r) {
   using T = detail::VelocityLimitTables<>;
@@ -194,20 +148,45 @@ constexpr void set_stored_ramps(GaitConfig<Fixed, kLegs, kSearch>& c, uint8_t r)
 template <uint8_t kLegs, bool kSearch>
 constexpr void set_stored_ramps(GaitConfig<float, kLegs, kSearch>&, uint8_t) {}
 }  // namespace gait_config_detail
-//! Whether stored_gait_config<S>() includes the ramps (Fixed) or leaves
-//! them to finish_gait_config() (float).
+
+//! The ramps of a configuration whose other fields are set: to a trot's top
+//! speed in one default cycle (first stances stay within their strides).
+template <typename S, uint8_t kLegs, bool kSearch>
+void finish_gait_config(GaitConfig<S, kLegs, kSearch>& c) {
+  const S reach = gait_config_detail::reach_of(c);
+  const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
+  const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
+  c.accel_mm_s2 = max_of(top_speed * c.limits.min_hz, S(1));
+  c.yaw_accel_rad_s2 = max_of(top_yaw * c.limits.min_hz, scalar<S>(0.05));
+  c.target_speed_mm_s = max_of((top_speed + top_yaw * reach) * S(2), scalar<S>(10.0));
+}
+
+//! Builds (in c) the configuration of `model` with `legs` (an AnyLeg per
+//! leg), `params` and `shape`: at start-up (IK search), not per tick.
+template <typename S, uint8_t kLegs, bool kSearch>
+void fill_gait_config(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
+                      SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {
+  if (model.leg_count > kLegs) {
+    c.leg_count = 0;
+    return;
+  }
+  c.leg_count = model.leg_count;
+  for (uint8_t i = 0; i < model.leg_count; ++i) c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
+  gait_config_detail::set_params(c, model, params, shape, gait_config_detail::reach_of(c));
+  gait_config_detail::set_limits(c.limits, model, legs, c.home, params, shape, c.step_height_mm, source);
+  gait_config_detail::set_edges(c, c.limits);
+  gait_config_detail::set_speeds(c);
+  finish_gait_config(c);
+}
+
+//! Whether stored_gait_config<S>() includes the ramps (else finish_gait_config()).
 template <typename S>
 constexpr bool stored_ramps_given() { return false; }
 template <>
 constexpr bool stored_ramps_given<Fixed>() { return true; }
 
-//! What fill_gait_config() gives built-in model r (kAllRobots[r]) at its
-//! gait defaults (kGaitParams[r], the stored velocity limits), as a
-//! constant; for float without the ramps, which finish_gait_config() adds
-//! (stored_ramps_given()): a firmware, whose
-//! model is a constant of the build, keeps it in flash instead of converting
-//! the float model and looking the limits up at start-up. flash_codes: where
-//! the strides are (kSearch false: StrideTable<false>).
+//! What fill_gait_config() gives built-in model r at its gait defaults, as a
+//! constant (stored_ramps_given()). flash_codes: the strides (kSearch false).
 template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r, const uint16_t* flash_codes) {
   namespace enc = velocity_limit_encoding;
@@ -220,13 +199,8 @@ constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r, const uint
     const Vec3<float>& h = model.legs[i].stand_mm;
     c.home[i] = Vec3<S>(scalar<S>(double(h.x)), scalar<S>(double(h.y)), scalar<S>(double(h.z)));
   }
-  const S reach = gait_config_detail::reach_of(c);
-  gait_config_detail::set_params(c, model, params, params.shape, reach);
-  // stored_velocity_limits()'s.
-  c.limits.leg_count = model.leg_count;
-  c.limits.sideways = model.kind != LegKind::kPlanar;
-  c.limits.min_hz = S(1) / scalar<S>(params.cycle_s);
-  c.limits.preferred_stride_mm = scalar<S>(params.step_length_mm);
+  gait_config_detail::set_params(c, model, params, params.shape, gait_config_detail::reach_of(c));
+  c.limits.set_gait(model, scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
   gait_config_detail::set_stored_strides(c.limits, r, flash_codes);
   S servo[3] = {};
   for (uint8_t j = 0; j < 3; ++j)
@@ -234,12 +208,7 @@ constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r, const uint
   c.limits.lift_ms = servo[0];
   c.limits.swing_ms_per_mm = servo[1];
   c.limits.stance_ms_per_mm = servo[2];
-  for (uint8_t i = 0; i < model.leg_count; ++i) {
-    S shortest = enc::stride_of(T::kStride[r][i][0], S());
-    for (uint8_t k = 1; k < VelocityLimits<S>::kDirections; ++k)
-      shortest = min_of(shortest, enc::stride_of(T::kStride[r][i][k], S()));
-    c.edge_mm[i] = shortest * scalar<S>(0.5);
-  }
+  gait_config_detail::set_edges(c, gait_config_detail::TableStrides<S>{r});
   gait_config_detail::set_speeds(c);
   gait_config_detail::set_stored_ramps(c, r);
   return c;
@@ -250,8 +219,7 @@ constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r) {
   return stored_gait_config<S, kLegs, kSearch>(r, &detail::VelocityLimitTables<>::kStride[r][0][0]);
 }
 
-//! The same as a value (fill_gait_config() builds it in place: no copy of
-//! ~600 bytes on the stack, which matters on the AVR).
+//! fill_gait_config() as a value (that one builds in place: no AVR stack copy).
 template <typename S>
 GaitConfig<S> make_gait_config(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params,
                                SwingShape shape, LimitsSource source = LimitsSource::kStoredOrSearch) {

@@ -1,15 +1,9 @@
 //! GaitEngine: per tick, the foot targets of a legged robot walking a gait
-//! table at a commanded velocity (time is a parameter: tick(dt)). Feet are
-//! in the stance frame (kinematics/body_pose.h); body_pose() says where the
-//! body is in it. The command ramps to its plan (speed_ramp.h); feet on the
-//! ground move by the inverse of the body's step (stance.h); a foot lifts
-//! when the phase clock passes its offset (table_phases.h) if enough feet
-//! stay down, swings (swing_feet.h) to its touch-down point (touchdown.h)
-//! and lands when its swing time is over. With the command at zero, a foot
-//! away from home takes one more step until every foot is home and the body
-//! shift (body_shift.h) is back to zero. Gait changes keep feet in the air
-//! on their old swing. Set-up and walking tick: gait_engine_walk.h; feet in
-//! the air: gait_engine_swing.h; body shift and margin: gait_engine_balance.h.
+//! table at a commanded velocity (tick(dt)), in the stance frame
+//! (kinematics/body_pose.h; body_pose() says where the body is in it).
+//! Set-up and walking tick: gait_engine_walk.h; feet in the air:
+//! gait_engine_swing.h; body shift and margin: gait_engine_balance.h; the
+//! behaviour: docs/gaits.md.
 #ifndef STRIDER_GAIT_GAIT_ENGINE_H
 #define STRIDER_GAIT_GAIT_ENGINE_H
 
@@ -28,7 +22,6 @@ namespace strider {
 template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 class GaitEngine {
  public:
-  //! The robot stands with no configuration (configure() before use).
   GaitEngine()
       : phases_(), sit_requested_(false), step_in_place_(false), ramp_(), foot_(), contact_(), pending_(), swing_(),
         stance_elapsed_(), td_(), edge_(), margin_(), margin_fresh_(false), odo_(), held_(false),
@@ -42,33 +35,29 @@ class GaitEngine {
     fill_gait_config(cfg_, model, legs, params, shape);
     configure(cfg_, gait, sitting);
   }
-  //! The same from a configuration in flash (stored_gait_config()), copied
-  //! into place and finished there (finish_gait_config()) if its ramps are not given.
+  //! The same from a configuration in flash (stored_gait_config()).
   void configure_stored(const GaitConfig<S, kLegs, kSearch>* flash_config, const GaitTable& gait, bool sitting = false) {
     flash_copy(&cfg_, flash_config, sizeof cfg_);
-    finish_stored(cfg_);
+    if (!stored_ramps_given<S>()) finish_gait_config(cfg_);
     configure(cfg_, gait, sitting);
   }
 
   //! Velocity (vx, vy [mm/s], wz [rad/s], body frame) at speed_pct [0, 100]
-  //! percent. Clamped to the robot's limits (limited() tells). A non-zero
-  //! command starts walking from standing; zero stops at the end of a step.
+  //! percent, clamped to the robot's limits (limited()).
   void set_command(S vx, S vy, S wz, S speed_pct = scalar<S>(100.0)) {
     constexpr S hundred = scalar<S>(100.0);
-    const S k = clamp(speed_pct, S(0), hundred) / hundred;  // exact at 100 %
+    const S k = clamp(speed_pct, S(0), hundred) / hundred;
     ramp_.cmd_vx = vx * k;
     ramp_.cmd_vy = vy * k;
     ramp_.cmd_wz = wz * k;
     replan();
   }
-  //! Live gait parameters (gait_tuning.h): the swing of the feet that lift
-  //! from now on, its apex [mm] and shape; feet in the air finish theirs.
+  //! The swing of the feet that lift from now on: apex [mm] and shape.
   void set_swing(S step_height_mm, SwingShape shape) {
     cfg_.step_height_mm = step_height_mm;
     cfg_.shape = shape;
   }
-  //! The preferred stride [mm] and the step rate at low speed [Hz]: the
-  //! command is planned again and reached along the ramp.
+  //! The preferred stride [mm] and the step rate at low speed [Hz].
   void set_step(S stride_mm, S min_hz) {
     cfg_.limits.preferred_stride_mm = stride_mm;
     cfg_.limits.min_hz = min_hz;
@@ -76,22 +65,22 @@ class GaitEngine {
   }
   //! Keep stepping in place when the command is zero (default: stop).
   void set_step_in_place(bool on) { step_in_place_ = on; }
-  //! Changes the gait, also while walking (feet in the air finish their swing).
+  //! Changes the gait, also while walking.
   void set_gait(const GaitTable& gait);
   void stand_up() { if (state_ == GaitState::kSitting) state_ = GaitState::kStandingUp; }
-  void sit_down() {  // while walking, stops first
+  void sit_down() {
     sit_requested_ = true;
     set_command(S(0), S(0), S(0));
   }
   //! Body pose offsets to move to (rate limited), also while walking.
   void set_body_offsets(const BodyOffsets<S>& o) {
     posture_.goal = o;
-    posture_.at_goal = false;  // step_pose() compares
+    posture_.at_goal = false;
   }
 
   void tick(S dt) {
     if (!(dt > S(0))) return;
-    if (!posture_.at_goal) posture_.step_pose(cfg_, dt);  // at its goal (the usual case): no call
+    if (!posture_.at_goal) posture_.step_pose(cfg_, dt);
     switch (state_) {
       case GaitState::kSitting: break;
       case GaitState::kStandingUp:
@@ -119,14 +108,12 @@ class GaitEngine {
   const bool* contacts() const { return contact_; }
   //! The body in the stance frame: shift + offsets + sit/stand height.
   BodyPose<S> body_pose() const { return posture_.body_pose(shift_, cfg_); }
-  //! body_pose()'s translation, and whether its roll, pitch and yaw are all
-  //! zero: a walker with a level body needs no more of the pose.
+  //! body_pose()'s translation, and whether its rotation is zero.
   Vec3<S> body_translation() const { return posture_.translation(shift_, cfg_); }
   bool body_level() const { return posture_.level(); }
   S shift_x_mm() const { return shift_.x_mm(); }
   S shift_y_mm() const { return shift_.y_mm(); }
-  //! Static stability margin of the CoM [mm] (stability.h), this tick;
-  //! computed when asked (once per tick): who does not ask does not pay.
+  //! Static stability margin of the CoM [mm], computed when asked.
   S margin_mm() const {
     if (!margin_fresh_) update_margin();
     return margin_;
@@ -138,9 +125,6 @@ class GaitEngine {
   S step_hz() const { return ramp_.hz; }
   //! True when the last command was scaled down to the robot's limits.
   bool limited() const { return ramp_.plan.limited; }
-  //! True when a foot on the ground at the edge of its reach could not lift
-  //! and held the body still this tick (after abrupt changes).
-  bool held() const { return held_; }
   const VelocityPlan<S>& target_plan() const { return ramp_.plan; }
   //! Body odometry since configure(): x, y [mm], heading [rad], its cos and sin.
   S odometry_x() const { return odo_.x; }
@@ -158,9 +142,8 @@ class GaitEngine {
   STRIDER_ALWAYS_INLINE bool beyond_edge(uint8_t i, const Vec3<S>& p) const { return edge_.beyond(cfg_, i, p); }
   //! The share of a leg's longest stride beyond which a foot is at its edge.
   static constexpr double edge_share() { return ReachEdge<S, kLegs>::kEdgeShare; }
-  //! The gait as walked: gait() relabelled for the direction of travel (rebuilt).
+  //! The gait as walked: gait() relabelled for the direction of travel.
   GaitTable table() const { return phases_.table(); }
-  //! The gait as given to configure() or set_gait() (table() may be relabelled).
   const GaitTable& gait() const { return phases_.base; }
   const GaitConfig<S, kLegs, kSearch>& config() const { return cfg_; }
   const SupportPolygon<S, kLegs>& support() const {
@@ -169,10 +152,6 @@ class GaitEngine {
   }
 
  private:
-  // A stored configuration with its ramps (Fixed) needs no finishing.
-  static void finish_stored(GaitConfig<float, kLegs, kSearch>& c) { finish_gait_config(c); }
-  static void finish_stored(GaitConfig<Fixed, kLegs, kSearch>&) {}
-
   void load_table(const GaitTable& t) {
     phases_.load(t, cfg_.leg_count);
     invalidate_touchdown();
@@ -199,9 +178,7 @@ class GaitEngine {
     swing_.unsettle();
   }
 
-  // The walking tick (gait_engine_walk.h, gait_engine_swing.h): parts out of
-  // line keep their locals out of step_walk()'s frame (on the AVR, offsets
-  // past 63 bytes cost extra) and the loops' registers.
+  // The walking tick (gait_engine_walk.h, gait_engine_swing.h).
   void start_walking();
   void step_walk(S dt);
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
@@ -214,7 +191,6 @@ class GaitEngine {
   void update_margin() const;
   void build_support() const;
 
-  // Members without a default here are set by the constructor (zero).
   GaitConfig<S, kLegs, kSearch> cfg_;
   TablePhases<S, kLegs> phases_;
   GaitState state_ = GaitState::kStanding;
@@ -237,7 +213,7 @@ class GaitEngine {
   mutable bool margin_fresh_;
   Odometry<S> odo_;
   BodyShift<S> shift_;
-  bool held_;
+  bool held_;  // a foot at its edge held the body still this tick
   ShiftWindow<S, kLegs> window_;
   BodyPosture<S> posture_;
 };

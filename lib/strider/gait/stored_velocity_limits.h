@@ -1,14 +1,6 @@
-//! Stored velocity limits: the limits of a built-in model at its gait
-//! defaults, read from the table generated on the host
-//! (velocity_limit_table.h) instead of searched with IK at start-up.
-//!
-//! The search (velocity_limits.h) costs thousands of IK calls: 1.4-4 s and
-//! 2.5 KB of stack on the AVR, more than a watchdog or the firmware's stack
-//! allow. The table holds what the float search gives for each model with
-//! its own swing shape, step height, step length and cycle
-//! (gait_params.h); any other model or parameters still need the search.
-//! Fixed gets the float search's strides (within 1 mm or 1 % of its own
-//! search, test/gait), converted exactly.
+//! Stored velocity limits: a built-in model's at its gait defaults, read from
+//! the table generated on the host (velocity_limit_table.h) instead of the
+//! IK search (velocity_search.h: 1.4-4 s and 2.5 KB of stack on the AVR).
 #ifndef STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
 #define STRIDER_GAIT_STORED_VELOCITY_LIMITS_H
 
@@ -21,10 +13,9 @@
 
 namespace strider {
 
-//! The index of `model` in kAllRobots when it is that model (same name and
-//! geometry fingerprint) and `params` with `shape` are its defaults;
-//! kRobotCount otherwise. Compares names, not addresses: taking the address
-//! of every built-in model would put all of them in the AVR's RAM.
+//! The index of `model` in kAllRobots (same name and geometry fingerprint)
+//! when `params` with `shape` are its defaults; kRobotCount otherwise. Not by
+//! address: that would put every built-in model in the AVR's RAM.
 inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& params, SwingShape shape) {
   namespace enc = velocity_limit_encoding;
   using T = detail::VelocityLimitTables<>;
@@ -35,20 +26,15 @@ inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& pa
   enc::geometry_fingerprint(model, print);
   for (uint8_t k = 0; k < enc::kFingerprintWords; ++k)
     if (flash_u16(T::kGeometry[r], k) != print[k]) return kRobotCount;
-  // The defaults are positive (gait_params.h checks): equal values are equal
-  // bits, compared without float library calls on the AVR.
+  // Positive defaults: equal values are equal bits (no float calls on AVR).
   const auto same_value = [](float a, float b) { return detail::float_bits(a) == detail::float_bits(b); };
   const bool same = shape == d.shape && same_value(params.step_height_mm, d.step_height_mm) &&
                     same_value(params.step_length_mm, d.step_length_mm) && same_value(params.cycle_s, d.cycle_s);
   return same ? r : kRobotCount;
 }
 
-//! Fills `out` from the table for `model` with `params` and `shape`, as
-//! compute_velocity_limits() would (min_hz, preferred stride, sideways
-//! included). Returns false, `out` untouched, when the table has no entry.
 namespace stored_limits_detail {
-//! Robot r's strides of the stored table: copied into a table in RAM, or
-//! pointed at in flash.
+//! Robot r's strides: copied into RAM, or pointed at in flash.
 inline void set_strides(StrideTable<true>& t, uint8_t r) {
   for (uint8_t i = 0; i < kMaxLegs; ++i)
     for (uint8_t k = 0; k < kStrideDirections; ++k)
@@ -60,6 +46,8 @@ inline void set_strides(StrideTable<false>& t, uint8_t r) {
 }
 }  // namespace stored_limits_detail
 
+//! Fills `out` from the table, as compute_velocity_limits() would; false,
+//! `out` untouched, when the table has no entry.
 template <typename S, bool kSearch>
 bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, SwingShape shape,
                             VelocityLimits<S, kSearch>& out) {
@@ -67,10 +55,7 @@ bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, S
   const uint8_t r = stored_limits_index(model, params, shape);
   if (r >= kRobotCount) return false;
   using T = detail::VelocityLimitTables<>;
-  out.leg_count = model.leg_count;
-  out.sideways = model.kind != LegKind::kPlanar;
-  out.min_hz = S(1) / scalar<S>(params.cycle_s);
-  out.preferred_stride_mm = scalar<S>(params.step_length_mm);
+  out.set_gait(model, scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
   stored_limits_detail::set_strides(out, r);
   S servo[3];
   for (uint8_t j = 0; j < 3; ++j) {

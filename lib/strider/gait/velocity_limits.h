@@ -1,17 +1,9 @@
 //! Velocity limits of a robot: how long a stride each leg can make in each
 //! direction (from its reachable workspace at the standing pose) and how fast
 //! it can step (from its servos' speed and the joint travel of a step); and
-//! the planner that turns a velocity command into a stride and a step rate.
-//!
-//! The search of the limits: velocity_search.h.
-//!
-//! Planner (plan()): each stance foot moves at r_i = v + w x home_i: a
-//! stride L_i = R_i / f with R_i = |r_i| d. The step rate is 1 / cycle_s at
-//! low speed, raised so that strides stay at the preferred step length, and
-//! kept between R_i / L_max,i (the stride limit in r_i's direction; also
-//! |w| d / kMaxStanceTurnRad) and the servo limit (velocity_search.h). When no rate
-//! satisfies both, the whole command is scaled down (direction and turning
-//! radius kept) and reported as limited. Planar legs drop sideways commands.
+//! the planner that turns a velocity command into a stride and a step rate
+//! (docs/gaits.md, "Velocity commands and limits"; the search:
+//! velocity_search.h).
 #ifndef STRIDER_GAIT_VELOCITY_LIMITS_H
 #define STRIDER_GAIT_VELOCITY_LIMITS_H
 
@@ -26,17 +18,10 @@ namespace strider {
 
 //! Share of a servo's no-load speed a step may use.
 constexpr double kServoSpeedShare = 0.75;
-//! Share of the longest reachable stride a gait may use: the rest absorbs a
-//! tick of overshoot at lift-off, the turning approximations of stance.h and
-//! command changes.
+//! Share of the longest reachable stride a gait may use (the rest absorbs
+//! overshoot at lift-off, stance.h's turning approximations, command changes).
 constexpr double kStrideShare = 0.9;
-//! Most the body may turn during one stance [rad]: feet on the ground move
-//! on arcs about the turning centre, and the straight-line stride check
-//! covers an arc only while it is short: its sag r (1 - cos 0.2) is 2 % of
-//! r (3 mm for sprawl8's 150 mm), inside the 10 % of the stride that
-//! kStrideShare keeps free. (0.25 rad capped sprawl8's trot at 58.9 deg/s,
-//! short of seed 000's 360 deg in 6 s; with 0.4 the servo speed binds at
-//! 82.6 deg/s.)
+//! Most the body may turn during one stance [rad] (docs/gaits.md).
 constexpr double kMaxStanceTurnRad = 0.4;
 
 template <typename S>
@@ -49,42 +34,33 @@ struct VelocityPlan {
 //! Direction k of a stride table is k * 22.5 deg from forward.
 constexpr uint8_t kStrideDirections = 16;
 
-//! Where a robot's stride table lives (the longest stride of leg i along
-//! direction k, in 1/32 mm, velocity_limit_encoding.h: half the RAM of S,
-//! exact in both scalars). In RAM (kInRam): filled by the IK search
-//! (velocity_search.h) or copied from the stored table. Otherwise a pointer
-//! to the stored table in flash (a firmware: no search is built, and the
-//! 192 bytes stay out of RAM); a configuration without stored limits is
-//! refused (gait_config.h's velocity_limits_known()).
+//! A robot's stride table (the longest stride of leg i along direction k,
+//! in 1/32 mm, velocity_limit_encoding.h): in RAM (kInRam), or a pointer to
+//! the stored table in flash (a firmware).
 template <bool kInRam>
 struct StrideTable {
   uint16_t stride_code[kMaxLegs][kStrideDirections] = {};
   uint16_t code(uint8_t leg, uint8_t k) const { return stride_code[leg][k]; }
-  //! Sets leg's stride along k [mm] (rounded to 1/32 mm).
   template <typename S>
   void set_stride_mm(uint8_t leg, uint8_t k, S mm) { stride_code[leg][k] = velocity_limit_encoding::stride_code(mm); }
 };
 template <>
 struct StrideTable<false> {
-  //! The stored table's codes of this robot, [kMaxLegs][kStrideDirections]
-  //! in flash (nullptr: no stride at all).
+  //! [kMaxLegs][kStrideDirections] in flash (nullptr: no stride at all).
   const uint16_t* flash_codes = nullptr;
   uint16_t code(uint8_t leg, uint8_t k) const {
     return flash_codes == nullptr ? uint16_t(0) : flash_u16(flash_codes, uint16_t(leg * kStrideDirections + k));
   }
 };
 
-//! kSearch: the strides in RAM, as the IK search gives them (StrideTable).
 template <typename S, bool kSearch = true>
 struct VelocityLimits : StrideTable<kSearch> {
   static constexpr uint8_t kDirections = kStrideDirections;
 
   constexpr VelocityLimits() : leg_count(0), preferred_stride_mm(), lift_ms(), swing_ms_per_mm(), stance_ms_per_mm() {}
 
-  uint8_t leg_count;  // zero, by the constructors
-  //! False for planar legs (seed 003): they cannot step sideways, so a
-  //! sideways command is dropped (and reported as limited); turning stays,
-  //! its sideways part reported by the walker as clamped.
+  uint8_t leg_count;
+  //! False for planar legs: a sideways command is dropped (limited).
   bool sideways = true;
   S min_hz = S(1);                     //!< default step rate, 1 / cycle_s [Hz]
   S preferred_stride_mm;               //!< step_length_mm [mm]
@@ -92,12 +68,19 @@ struct VelocityLimits : StrideTable<kSearch> {
   S swing_ms_per_mm;                   //!< servo time of a swing per mm of stride [ms/mm]
   S stance_ms_per_mm;                  //!< servo time of a stance per mm of stride [ms/mm]
 
+  //! The fields of the gait defaults and the model's kind.
+  constexpr void set_gait(const RobotModel& model, S step_length_mm, S cycle_s) {
+    leg_count = model.leg_count;
+    sideways = model.kind != LegKind::kPlanar;
+    min_hz = S(1) / cycle_s;
+    preferred_stride_mm = step_length_mm;
+  }
+
   //! Leg i's longest stride along direction k [mm].
   S stride_mm(uint8_t leg, uint8_t k) const { return velocity_limit_encoding::stride_of(this->code(leg, k), S()); }
 
-  //! Leg i's longest stride along (dx, dy) (any length, not both 0) [mm],
-  //! interpolated between the two nearest of the 16 directions, less twice
-  //! the body-shift budget [mm].
+  //! Leg i's longest stride along (dx, dy) (not both 0) [mm], interpolated
+  //! between the two nearest directions, less twice the body-shift budget.
   S leg_stride(uint8_t leg, S dx, S dy, S budget_mm = S(0)) const {
     S a = atan2(dy, dx);  // (-pi, pi]
     if (a < S(0)) a += two_pi<S>();
@@ -109,8 +92,7 @@ struct VelocityLimits : StrideTable<kSearch> {
     return max_of(lo + (hi - lo) * f - budget_mm * S(2), S(0));
   }
 
-  //! The fastest step rate the servos allow for strides of `length_mm` in a
-  //! gait of this duty [Hz] (at most 100).
+  //! The fastest step rate the servos allow for a stride [mm] [Hz].
   S servo_hz(S length_mm, S duty) const {
     const S swing = lift_ms + swing_ms_per_mm * length_mm;
     S f = swing > S(0) ? scalar<S>(1000.0) * (S(1) - duty) / swing : scalar<S>(100.0);
@@ -120,11 +102,8 @@ struct VelocityLimits : StrideTable<kSearch> {
   }
 
   //! The command (vx, vy [mm/s], wz [rad/s]) as the robot can walk it with
-  //! its feet at home[i] [mm, body frame] in a gait of this duty (see the
-  //! file comment). Gaits that shift the body pass their budget [mm] and
-  //! keep_stride = true: their stride stays at most the preferred step
-  //! length (the shift they need grows with the stride), so they walk faster
-  //! only by stepping faster.
+  //! its feet at home[i] [mm, body frame] in a gait of this duty; gaits that
+  //! shift the body pass their budget [mm] and keep_stride (preferred length).
   VelocityPlan<S> plan(const Vec3<S>* home, S vx, S vy, S wz, S duty, S budget_mm = S(0),
                        bool keep_stride = false) const {
     VelocityPlan<S> p{vx, vy, wz, smaller(min_hz, servo_hz(S(0), duty)), false};
@@ -152,10 +131,8 @@ struct VelocityLimits : StrideTable<kSearch> {
     return plan(home, S(0), S(0), scalar<S>(20.0), duty, budget_mm, keep_stride).wz_rad_s;
   }
 
-  // plan()'s two halves, each with few values live at a time (a short stack
-  // frame on the AVR, addressed without pointer adjustments).
-  //! The largest R_i over the legs (0: no leg moves); *rate_lo the step rate
-  //! the legs' stride limits need for p's command.
+  // plan()'s two halves: a short stack frame each on the AVR.
+  //! The largest R_i (0: no leg moves); *rate_lo the rate the strides need.
   STRIDER_NOINLINE S stride_need(const Vec3<S>* home, const VelocityPlan<S>& p, S duty, S budget_mm,
                                  bool keep_stride, S* rate_lo) const {
     S lo = S(0), fastest = S(0);
@@ -164,7 +141,6 @@ struct VelocityLimits : StrideTable<kSearch> {
       const S r = hypot(rx, ry) * duty;
       if (r == S(0)) continue;
       S room = leg_stride(i, rx, ry, budget_mm);
-      // Only body-shifting gaits keep the stride.
       if (keep_stride) room = smaller(room, preferred_stride_mm);
       lo = room > S(0) ? larger(lo, r / room) : scalar<S>(1000.0);
       fastest = larger(fastest, r);
@@ -173,11 +149,9 @@ struct VelocityLimits : StrideTable<kSearch> {
     return fastest;
   }
 
-  //! The step rate for p's command and, when the servos cannot keep up at
-  //! any rate, the command scaled down.
+  //! The step rate for p's command, scaled down if the servos need it.
   STRIDER_NOINLINE void fit(VelocityPlan<S>& p, S rate_lo, S fastest, S duty) const {
-    // Scale k so that some rate f >= k rate_lo meets the servo limits:
-    // f lift + swing_per_mm k R <= 1000 (1 - d) at f = k rate_lo, and the stance.
+    // The largest k with a rate f >= k rate_lo inside the servo limits.
     const S swing_room = scalar<S>(1000.0) * (S(1) - duty);
     S k = S(1);
     const S swing_need = lift_ms * rate_lo + swing_ms_per_mm * fastest;
@@ -197,9 +171,7 @@ struct VelocityLimits : StrideTable<kSearch> {
     }
   }
 
-  // max_of() and min_of() as calls in plan() and servo_hz(): they run on a
-  // command change, not per tick, and an inline comparison of two Fixed
-  // costs more flash than a call on the AVR.
+  // Calls, not inline comparisons: less flash on the AVR, off the tick path.
   static STRIDER_NOINLINE S larger(S a, S b) { return max_of(a, b); }
   static STRIDER_NOINLINE S smaller(S a, S b) { return min_of(a, b); }
 };

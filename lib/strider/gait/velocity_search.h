@@ -1,28 +1,8 @@
 //! The IK search of a robot's velocity limits (VelocityLimits,
-//! velocity_limits.h), at configuration time, never per tick.
-//!
-//! Stride: for each leg and each of 16 directions, a binary search (IK at
-//! configuration time, never per tick) for the longest stride L whose stance
-//! ends (home -+ L/2 along the direction, on the ground) and swing (the
-//! trajectory's points at s = 1/6 .. 5/6, apex included) all solve with IK
-//! status ok; a 2-DOF leg's targets are first projected onto its reachable
-//! set (reach_projection.h): what the projection moves is reported while
-//! walking, not limited here (a planar leg's sideways stride, a sprawling
-//! leg's slide). kStrideShare of it is used; gaits that shift the body keep
-//! a budget of reach free on top.
-//!
-//! Servo speed: a swing of stride L at step rate f (duty d) turns joint j at
-//! most T_j(L) f / (1 - d) [rad/s], T_j = max |dq_j/ds| over the swing (9
-//! samples; s the swing phase); a stance at |q_j(end) - q_j(start)| f / d.
-//! T_j is convex in L (the joint rates are |J^-1 dp/ds|, dp/ds linear in L),
-//! so the chord through L = 0 and the longest stride bounds it from above:
-//! T_j(L) <= T_j(0) + slope_j L. With w_j = kServoSpeedShare x the part's
-//! no-load speed (robots/servo_parts.h; a loaded servo is slower):
-//!   swing:  f (lift_ms + swing_ms_per_mm L) <= 1000 (1 - d)
-//!   stance: stance_ms_per_mm L f <= 1000 d
-//! where lift_ms = max_j T_j(0) / w_j, swing_ms_per_mm = max_j slope_j / w_j
-//! and stance_ms_per_mm = max_j travel_j / (L w_j) over legs and directions.
-//! Legs mirrored across the body's x-z plane share their searches.
+//! velocity_limits.h), at configuration time, never per tick: per leg and
+//! direction the longest stride whose stance ends and swing all solve, and
+//! the servo time a step takes (docs/gaits.md, "Velocity commands and
+//! limits").
 #ifndef STRIDER_GAIT_VELOCITY_SEARCH_H
 #define STRIDER_GAIT_VELOCITY_SEARCH_H
 
@@ -35,17 +15,22 @@ namespace velocity_limits_detail {
 //! Swing phase samples of the stride check.
 constexpr uint8_t kSwingSamples = 5;
 
+//! Leg's joints q for a body-frame target, projected as walking does.
+template <typename S>
+IkStatus joints_at(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& body_target,
+                   typename AnyLeg<S>::Joints& q) {
+  S moved;
+  Vec3<S> at;
+  return leg.ik(proj.apply(leg.mount().body_to_leg(body_target), moved), q, at);
+}
 template <typename S>
 bool reaches(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& body_target) {
-  S moved;
-  const Vec3<S> t = proj.apply(leg.mount().body_to_leg(body_target), moved);
   typename AnyLeg<S>::Joints q;
-  Vec3<S> at;
-  return leg.ik(t, q, at) == IkStatus::kOk;
+  return joints_at(leg, proj, body_target, q) == IkStatus::kOk;
 }
 
-//! The point of a stride of length L along unit (dx, dy) at swing phase s
-//! (s < 0: the stance end -L/2, s > 1: the stance end +L/2).
+//! The point of a stride L along unit (dx, dy) at swing phase s (s < 0,
+//! s > 1: the stance ends -L/2, +L/2).
 template <typename S>
 Vec3<S> stride_point(const Vec3<S>& home, S dx, S dy, S L, SwingShape shape, S step_mm, S s) {
   if (s < S(0)) return Vec3<S>(home.x - dx * L * scalar<S>(0.5), home.y - dy * L * scalar<S>(0.5), home.z);
@@ -55,8 +40,7 @@ Vec3<S> stride_point(const Vec3<S>& home, S dx, S dy, S L, SwingShape shape, S s
   return Vec3<S>(home.x + dx * along, home.y + dy * along, home.z + sp.w * swing_apex_mm(shape, L, step_mm));
 }
 
-//! The leg that is leg i mirrored across the body's x-z plane (mount, yaw,
-//! standing foot and joint ranges mirrored), or i itself when none is.
+//! Leg i's mirror image across the body's x-z plane, or i when none is.
 inline uint8_t mirror_twin(const RobotModel& m, uint8_t i) {
   const LegModel& a = m.legs[i];
   auto near = [](float p, float q) { return p - q <= 1e-3f && q - p <= 1e-3f; };
@@ -69,14 +53,6 @@ inline uint8_t mirror_twin(const RobotModel& m, uint8_t i) {
     return j;
   }
   return i;
-}
-
-template <typename S>
-void joints_at(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<S>& body_target,
-               typename AnyLeg<S>::Joints& q) {
-  S moved;
-  Vec3<S> at;
-  leg.ik(proj.apply(leg.mount().body_to_leg(body_target), moved), q, at);
 }
 
 template <typename S>
@@ -93,24 +69,18 @@ bool stride_ok(const AnyLeg<S>& leg, const ReachProjection<S>& proj, const Vec3<
 
 }  // namespace velocity_limits_detail
 
-//! The limits of `model` with `legs` (AnyLeg from the model) and standing
-//! feet home[i] [mm, body frame], for a swing shape and step height [mm];
-//! step_length_mm and cycle_s are the gait defaults (gait_params.h).
+//! The limits of `model` with `legs` and standing feet home[i] [mm, body
+//! frame], for a swing shape, step height and length [mm] and cycle [s].
 template <typename S>
 VelocityLimits<S> compute_velocity_limits(const RobotModel& model, const AnyLeg<S>* legs, const Vec3<S>* home,
                                           SwingShape shape, S step_height_mm, S step_length_mm, S cycle_s) {
   namespace d = velocity_limits_detail;
   VelocityLimits<S> lim;
-  lim.leg_count = model.leg_count;
-  lim.sideways = model.kind != LegKind::kPlanar;
-  lim.min_hz = S(1) / cycle_s;
-  lim.preferred_stride_mm = step_length_mm;
+  lim.set_gait(model, step_length_mm, cycle_s);
   const ReachProjection<S> proj = ReachProjection<S>::make(model);
   const S top = scalar<S>(2.0 * double(model.links.l1_mm + model.links.l2_mm + model.links.l3_mm));
   for (uint8_t i = 0; i < model.leg_count; ++i) {
-    // A leg mirrored across the body's x-z plane from one already done (every
-    // built-in model is symmetric) has the mirrored strides: direction k of
-    // one is direction -k of the other, and the same joint travel.
+    // A mirrored twin already done: its strides, direction k as -k.
     const uint8_t twin = d::mirror_twin(model, i);
     if (twin < i) {
       for (uint8_t k = 0; k < VelocityLimits<S>::kDirections; ++k)

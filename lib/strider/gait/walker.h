@@ -1,10 +1,6 @@
 //! Walker: a whole robot walking: gait engine -> body pose -> reachable-set
-//! projection (2-DOF legs) -> leg IK, per tick, with each leg's joints and
-//! status.
-//! Per leg it reports a LegResult (leg_result.h).
-//! Its build profile P (robots/build_profile.h) says how many legs it holds,
-//! whether the results keep the feet (a firmware keeps only the joints,
-//! status and contact) and how many IK solvers (one per leg geometry).
+//! projection (2-DOF legs) -> leg IK, per tick, with each leg's LegResult
+//! (leg_result.h), sized by its build profile P (robots/build_profile.h).
 #ifndef STRIDER_GAIT_WALKER_H
 #define STRIDER_GAIT_WALKER_H
 
@@ -28,11 +24,8 @@ class Walker {
  public:
   Walker() : dof_(0), turn_(), proj_() {}
 
-  //! Builds the legs, the configuration (velocity limits: a few thousand IK
-  //! calls) and the engine. Returns false for a gait of another leg count,
-  //! or velocity limits this build cannot give (gait_config.h). solve_now
-  //! false leaves the legs' IK to a later refresh() (the firmware's start-up
-  //! solves them once its copy of the model is off the stack).
+  //! Builds the legs, the configuration and the engine: false when they do
+  //! not fit. solve_now false leaves the legs' IK to a later refresh().
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
                  bool sitting = false, bool solve_now = true) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !velocity_limits_known<P::kSearch>(model, params, shape) || !build_legs(model))
@@ -42,11 +35,7 @@ class Walker {
     return true;
   }
 
-  //! The same with `model`'s configuration at its gait defaults from flash
-  //! (GaitEngine::configure_stored(); for Fixed with its ramps): no conversion of the
-  //! float model's gait figures, no limits look-up. The caller makes sure
-  //! that flash_config is stored_gait_config() of this model (a firmware:
-  //! at compile time).
+  //! The same with the configuration from flash (stored_gait_config()).
   bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>* flash_config,
                         bool sitting = false, bool solve_now = true) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !build_legs(model)) return false;
@@ -55,8 +44,7 @@ class Walker {
     return true;
   }
 
-  //! The same with the legs from flash too (walker_legs() of the model,
-  //! which the caller makes sure of): no conversion of the float model at all.
+  //! The same with the legs from flash too (walker_legs() of the model).
   bool configure_stored(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>* flash_config,
                         bool sitting = false, bool solve_now = true) {
     if (!build_legs(flash_legs, gait.leg_count)) return false;
@@ -65,10 +53,7 @@ class Walker {
     return true;
   }
 
-  //! The same with a configuration built before (make_gait_config): no IK
-  //! search, so a robot can switch configurations quickly. The legs are
-  //! built from `model` every time (a copy of a few fields each; a model is
-  //! not recognised by its address, which a copy that is gone may share).
+  //! The same with a configuration built before (make_gait_config).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>& config,
                  bool sitting = false) {
     if (model.leg_count > kLegs || gait.leg_count != model.leg_count || config.leg_count != model.leg_count)
@@ -80,8 +65,7 @@ class Walker {
   }
 
   //! Starts over with the legs built before and `config` (which may be the
-  //! engine's own), without the model: false when no legs are built or the
-  //! leg counts differ.
+  //! engine's own): false when no legs are built or the leg counts differ.
   bool restart(const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>& config, bool sitting = false) {
     if (dof_ == 0 || gait.leg_count != config.leg_count || config.leg_count != leg_count()) return false;
     engine_.configure(config, gait, sitting);
@@ -91,10 +75,8 @@ class Walker {
 
   GaitEngine<S, kLegs, P::kSearch>& engine() { return engine_; }
   const GaitEngine<S, kLegs, P::kSearch>& engine() const { return engine_; }
-  //! Leg i as one AnyLeg: its solver at its mount (a copy: legs of one
-  //! geometry may share their solver, P::kSolvers).
+  //! Leg i as one AnyLeg: its solver at its mount (a copy).
   AnyLeg<S> leg_model(uint8_t i) const { return legs_.leg(i); }
-  //! Where leg i sits on the body.
   const LegMount<S>& leg_mount(uint8_t i) const { return legs_.mount(i); }
   //! Leg i's IK for a target in its leg frame (AnyLeg::ik).
   IkStatus leg_ik(uint8_t i, const Vec3<S>& target, typename AnyLeg<S>::Joints& q, Vec3<S>& reached,
@@ -110,18 +92,15 @@ class Walker {
     solve();
   }
 
-  //! Every leg's IK for the engine's targets as they are (no tick).
   void refresh() { solve(); }
 
   const Result& leg(uint8_t i) const { return out_[i]; }
   //! Every leg's result, leg_count() of them (ServoStage::frame()).
   const Result* results() const { return out_; }
-  //! A body-frame point [mm] in leg i's frame, as the walker computes it
-  //! (LegMount::body_to_leg with fewer products for the usual mounts).
+  //! A body-frame point [mm] in leg i's frame, as the walker computes it.
   Vec3<S> to_leg(uint8_t i, const Vec3<S>& body_mm) const { return to_leg_unchecked(i, body_mm); }
   //! Static stability margin [mm] (negative: CoM outside the support).
   S margin_mm() const { return engine_.margin_mm(); }
-  //! The worst status over all legs this tick.
   IkStatus worst_status() const {
     IkStatus w = IkStatus::kOk;
     for (uint8_t i = 0; i < leg_count(); ++i) w = worst(w, out_[i].status);
@@ -130,9 +109,7 @@ class Walker {
 
  private:
   void solve() {
-    // A level body (the usual case; integer tests of float bits, as a float
-    // comparison is a call on the AVR): its translation only, no whole pose
-    // and no rotation to build.
+    // A level body (the usual case): its translation only, no rotation.
     if (engine_.body_level()) {
       const Vec3<S> shift = engine_.body_translation();
       solve_legs(nullptr, shift);
@@ -143,24 +120,18 @@ class Walker {
     solve_legs(&body, pose.translation_mm);
   }
 
-  //! Every leg for the body posed by `body` (nullptr: not turned, only
-  //! moved by `shift` [mm]). Vectors are copied field by field, as avr-gcc
-  //! copies a whole Vec3 with a byte loop.
+  //! Every leg for the body posed by `body` (nullptr: only moved by `shift`
+  //! [mm]). Vectors are copied field by field (avr-gcc loops over bytes).
   void solve_legs(const Transform<S>* body, const Vec3<S>& shift) {
-    // The body at the stance frame's origin (a trot or tripod standing tall):
-    // the feet are already in the body frame.
+    // The body at the stance frame's origin: the feet are in the body frame.
     const bool still = leg_ik::is_zero(shift.x) && leg_ik::is_zero(shift.y) && leg_ik::is_zero(shift.z);
     const bool projects = proj_.projects();
     Scratch scratch;  // nothing when the results keep the feet
-    // Results and feet by pointer (no index products per leg); the legs the
-    // fast IK does not take go to solve_leg(), whose locals stay out of
-    // this loop's stack frame.
     Result* r = out_;
     const Vec3<S>* p = engine_.feet();
     const bool* contact = engine_.contacts();
     const uint8_t n = leg_count();
     for (uint8_t i = 0; i < n; ++i, ++r, ++p) {
-      // The body-frame target and the foot reached: r's (kFeet) or the scratch (leg_result.h).
       Vec3<S>& t = target_of(*r, scratch);
       if (body != nullptr) {
         t = foot_in_body(*body, *p);
@@ -172,9 +143,7 @@ class Walker {
         t.z = sub_inline(p->z, shift.z);
       }
       r->contact = contact[i];
-      // A 3-DOF leg with a fast path for a body-frame target (Fixed
-      // coxa/femur/tibia: no turn into the leg frame) that reaches it as
-      // given: the foot is the target, nothing to transform.
+      // Fast IK of a body-frame target (Fixed coxa/femur/tibia), reached.
       if (!projects && legs_.solver(i).ik_body_fast(legs_.mount(i), t, r->q, ik_options_)) {
         set_clamp(*r, S(0));
         set_ik_status(*r, IkStatus::kOk);
@@ -186,20 +155,16 @@ class Walker {
     }
   }
 
-  //! solve_legs()'s leg i for its body-frame target (in r or the scratch)
-  //! when the fast IK does not take it.
+  //! solve_legs()'s leg i when the fast IK does not take it.
   STRIDER_NOINLINE void solve_leg(uint8_t i, Result& r, Scratch& scratch, bool projects) {
     const Vec3<S> leg_target = to_leg_unchecked(i, target_of(r, scratch));
     if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
-      // The point reached (leg frame) goes into foot, which the IK
-      // leaves alone when it is unreachable, and is then replaced by its
-      // body-frame point: no local to clear and copy.
+      // The point reached goes into foot (leg frame, then body frame).
       set_clamp(r, S(0));
       const IkStatus ik = legs_.solver(i).ik(leg_target, r.q, foot_of(r, scratch), ik_options_);
       set_ik_status(r, ik);
       r.status = ik;
-      // A target reached as given is the body-frame target itself: no
-      // transform back (4 products).
+      // A target reached as given is the body-frame target itself.
       if (!kFeet || ik == IkStatus::kUnreachable) return;
       if (same(foot_of(r, scratch), leg_target)) {
         copy(target_of(r, scratch), foot_of(r, scratch));
@@ -221,9 +186,7 @@ class Walker {
     r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
   }
 
-  //! The engine's configuration from the model, built in place. The search
-  //! (P::kSearch) needs an AnyLeg per leg: shared solvers build them on the
-  //! stack.
+  //! The engine's configuration from the model (an AnyLeg per leg).
   void configure_engine(const RobotModel& model, const GaitParams& params, SwingShape shape, const GaitTable& gait,
                         bool sitting) {
     if (P::kSearch && legs_.per_leg() == nullptr) {
@@ -256,8 +219,7 @@ class Walker {
   }
   Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const { return to_body_turned(turn_[i], legs_.mount(i), p); }
 
-  // Same bits (an IK that reached its target copies it): for float no
-  // comparison calls; a +0 against -0 only takes the transform back.
+  // Same bits (an IK that reached its target copies it): no float compare.
   STRIDER_ALWAYS_INLINE static bool same(const Vec3<S>& a, const Vec3<S>& b) {
     return leg_ik::same_bits(a.x, b.x) && leg_ik::same_bits(a.y, b.y) && leg_ik::same_bits(a.z, b.z);
   }
@@ -271,8 +233,7 @@ class Walker {
     return true;
   }
 
-  //! The legs from flash (no copy of the whole constant on the stack);
-  //! false when they do not fit or have another leg count than the gait's.
+  //! The legs from flash; false when they do not fit the gait or this build.
   bool build_legs(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, uint8_t gait_legs) {
     dof_ = 0;
     const uint8_t legs = flash_u8(&flash_legs->leg_count);
@@ -285,12 +246,11 @@ class Walker {
     return true;
   }
 
-  // dof_, turn_ and proj_ are zero, by the constructors.
   uint8_t dof_;  // joints per leg; 0 before the legs are built
   walker_detail::LegSolvers<S, kLegs, P::kSolvers> legs_;
   MountTurn turn_[kLegs];  // of each leg's mount (mount_turn.h)
   ReachProjection<S> proj_;
-  IkOptions<S> ik_options_{};  // the defaults, built once rather than per leg and tick
+  IkOptions<S> ik_options_{};  // the defaults, built once
   GaitEngine<S, kLegs, P::kSearch> engine_;
   Result out_[kLegs];
 };

@@ -1,7 +1,6 @@
 //! The walker's leg storage: an AnyLeg per leg, or one IK solver per leg
-//! geometry with each leg's mount and side (the profile's kSolvers), and the
-//! same built from a model at compile time for a firmware's flash
-//! (walker_legs()).
+//! geometry with each leg's mount and side (the profile's kSolvers); built
+//! at compile time for a firmware's flash (walker_legs()).
 #ifndef STRIDER_GAIT_WALKER_LEGS_H
 #define STRIDER_GAIT_WALKER_LEGS_H
 
@@ -10,8 +9,7 @@
 
 namespace strider {
 
-//! Legs i and j of `model` solve alike (one solver for both): the same
-//! joint limits and, for abduction legs, the same side.
+//! Legs i and j of `model` solve alike: same joint limits (and side).
 constexpr bool same_leg_solver(const RobotModel& model, uint8_t i, uint8_t j) {
   const LegModel& a = model.legs[i];
   const LegModel& b = model.legs[j];
@@ -20,27 +18,22 @@ constexpr bool same_leg_solver(const RobotModel& model, uint8_t i, uint8_t j) {
     if (!(a.joint[k].min_deg == b.joint[k].min_deg) || !(a.joint[k].max_deg == b.joint[k].max_deg)) return false;
   return true;
 }
-//! The first leg of `model` that solves like leg i (i itself when none before it does).
+//! The first leg of `model` that solves like leg i.
 constexpr uint8_t leg_solver_of(const RobotModel& model, uint8_t i) {
   uint8_t j = 0;
   while (j < i && !same_leg_solver(model, i, j)) ++j;
   return j;
 }
-//! How many distinct leg solvers `model` needs.
-constexpr uint8_t leg_solver_count(const RobotModel& model) {
+//! How many distinct leg solvers the legs before leg `end` of `model` need.
+constexpr uint8_t leg_solver_count(const RobotModel& model, uint8_t end = kMaxLegs) {
   uint8_t n = 0;
-  for (uint8_t i = 0; i < model.leg_count && i < kMaxLegs; ++i)
+  for (uint8_t i = 0; i < model.leg_count && i < end; ++i)
     if (leg_solver_of(model, i) == i) ++n;
   return n;
 }
-
 //! The index of leg i's solver among `model`'s leg solvers.
 constexpr uint8_t leg_solver_index(const RobotModel& model, uint8_t i) {
-  const uint8_t first = leg_solver_of(model, i);
-  uint8_t n = 0;
-  for (uint8_t k = 0; k < first; ++k)
-    if (leg_solver_of(model, k) == k) ++n;
-  return n;
+  return leg_solver_count(model, leg_solver_of(model, i));
 }
 //! The first leg of `model`'s leg solver n (model.leg_count when there is none).
 constexpr uint8_t leg_of_solver(const RobotModel& model, uint8_t n) {
@@ -60,8 +53,7 @@ struct MakeIndices<0, I...> {
   using type = Indices<I...>;
 };
 
-//! The walker's legs (see the file comment). constant(): the legs but for
-//! the mounts' cos and sin (mount_trig()).
+//! constant(): the legs but for the mounts' cos and sin (mount_trig()).
 template <typename S, uint8_t kLegs, uint8_t kSolvers, bool kShared = (kSolvers < kLegs)>
 struct LegSolvers {
   static_assert(kSolvers >= 1 && kSolvers <= kLegs, "kSolvers: 1 to kLegs");
@@ -124,8 +116,7 @@ bool build_legs(const RobotModel& model, Legs& legs) {
 
 }  // namespace walker_detail
 
-//! A walker's legs built from a model at compile time (walker_legs()), kept
-//! in a firmware's flash (Walker::configure_stored()).
+//! A walker's legs built at compile time, kept in a firmware's flash.
 template <typename S, uint8_t kLegs = kMaxLegs, uint8_t kSolvers = kLegs>
 struct WalkerLegs {
   walker_detail::LegSolvers<S, kLegs, kSolvers> legs;  // the mounts without their cos and sin

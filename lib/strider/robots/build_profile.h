@@ -11,30 +11,21 @@
 
 namespace strider {
 
-//! The host's profile, for any model: state for kMaxLegs legs, an IK
-//! solver per leg, leg results with their feet, a servo tick-map range per
-//! joint, and everything built from the model at start-up.
+//! The host's profile, for any model.
 template <typename S>
 struct HostProfile {
   using Scalar = S;
   static constexpr uint8_t kLegs = kMaxLegs;
-  //! Leg solvers: as many as legs (an AnyLeg per leg), or fewer for legs of
-  //! one geometry sharing one (walker_legs.h).
+  //! Leg solvers: one per leg, or fewer shared by legs of one geometry.
   static constexpr uint8_t kSolvers = kLegs;
-  //! The walker's leg results keep each leg's target, reached foot, IK
-  //! status and clamp (host tools and tests read them).
+  //! The leg results keep each leg's target, foot, IK status and clamp.
   static constexpr bool kFeet = true;
-  //! Servo tick-map ranges shared by the joints of a slot (0: one per
-  //! joint; the joints per leg for legs of one geometry, servo_tick_map.h).
+  //! Servo tick-map ranges shared by a slot's joints (0: one per joint).
   static constexpr uint8_t kTickSlots = 0;
   static constexpr uint8_t kJoints = kMaxLegs * kMaxLegDof;  //!< most servos driven
-  //! The velocity limits of any model and gait parameters by the IK search,
-  //! their strides in RAM; false: only the stored limits of the built-in
-  //! models at their defaults, read from flash (gait/velocity_limits.h).
+  //! Velocity limits by the IK search, strides in RAM (else stored, in flash).
   static constexpr bool kSearch = true;
-  //! Which of the model's constants the profile holds (FirmwareProfile's
-  //! kGaitConfig, kWalkerLegsInFlash, kChannels, kDefaultGait, kAvoidClearMm);
-  //! the others are built from the model at start-up.
+  //! Which of the model's constants the profile holds (else built at start-up).
   static constexpr bool kStoredConfig = false;
   static constexpr bool kStoredLegs = false;
   static constexpr bool kStoredChannels = false;
