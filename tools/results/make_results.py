@@ -120,11 +120,12 @@ def main():
     sim = slow(lambda: sim_metrics(build, a.reuse), "Seed 000: speed and turning (simulator)",
                "Seed 003: distances walked, table 5 (simulator)", "Simulator against pybullet and MuJoCo")
 
-    def from_pso(fn):
+    def using(data, fn):
+        """fn(data) for a section, or the reason a slow source was not measured."""
         def run():
-            if isinstance(pso, NotMeasured):
-                raise pso
-            return fn(pso)
+            if isinstance(data, NotMeasured):
+                raise data
+            return fn(data)
         return run
 
     parts, summary = [], []
@@ -138,18 +139,12 @@ def main():
 
     add("Seed 000: speed and turning (simulator)", seed000, sim)
     pad = slow(lambda: pad_data(build, a.reuse), *SECTION_GROUPS["pad"])
-
-    def from_pad():
-        if isinstance(pad, NotMeasured):
-            raise pad
-        return pad_table(pad)
-
-    add("Phone pad per model (simulator, firmware mode)", from_pad)
+    add("Phone pad per model (simulator, firmware mode)", using(pad, pad_table))
     add("Seed 001: body pose ranges", needs_cli(seed001), a.quick)
     add("Seed 002: foot positions, tables 4-9", needs_cli(seed002))
-    add("Seed 003: PSO joint angles, table 4", from_pso(seed003_pso))
+    add("Seed 003: PSO joint angles, table 4", using(pso, seed003_pso))
     add("Seed 003: distances walked, table 5 (simulator)", seed003_distance, sim)
-    add("PSO: Strider against pyswarms", from_pso(pso_vs_pyswarms))
+    add("PSO: Strider against pyswarms", using(pso, pso_vs_pyswarms))
     def avr_section():
         if a.no_slow:
             raise NotMeasured("skipped in this run (--no-slow)")
@@ -161,13 +156,7 @@ def main():
         parts.append(f"## Simulator scenarios\n\n{sim_table(sim)}\n")
     add("Simulator against pybullet and MuJoCo", physics_check, sim, cli_path, a.reuse)
     tune = slow(lambda: gait_tune_data(build, a.reuse), *SECTION_GROUPS["gait"])
-
-    def from_tune():
-        if isinstance(tune, NotMeasured):
-            raise tune
-        return gait_tuning(tune)
-
-    add("Gait tuning by PSO (simulator rollouts)", from_tune)
+    add("Gait tuning by PSO (simulator rollouts)", using(tune, gait_tuning))
 
     stamp = (f"{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC from commit {git_describe()} on "
              f"{cpu_name()}{' (--quick: reduced samples)' if a.quick else ''}"
