@@ -28,8 +28,6 @@ struct Shared : strider::HostProfile<S> {
 };
 template <typename S>
 using Walker = strider::Walker<S, Shared<S>>;
-template <typename S>
-using WalkerLegs = strider::WalkerLegs<S, 6, 1>;
 
 template <typename S>
 class WalkerShared : public ::testing::Test {};
@@ -94,103 +92,6 @@ TYPED_TEST(WalkerShared, LegsAreTheirOwnAnyLegs) {
         EXPECT_TRUE(same_bits(fk.x, fk_ref.x) && same_bits(fk.y, fk_ref.y) && same_bits(fk.z, fk_ref.z));
       }
     }
-  }
-}
-
-// The legs as compile-time constants (walker_legs: the firmware's) in this
-// layout are the legs converted from the model at run time, bit for bit:
-// mounts, sides, limits, IK and FK; and the walker walks alike with them.
-constexpr WalkerLegs<Fixed> kHexapodLegs = strider::walker_legs<Fixed, 6, 1>(strider::kHexapod18);
-constexpr WalkerLegs<Fixed> kSpiderLegs = strider::walker_legs<Fixed, 6, 1>(strider::kSpider12);
-constexpr WalkerLegs<Fixed> kMammalLegs = strider::walker_legs<Fixed, 6, 1>(strider::kMammal8);
-constexpr WalkerLegs<float> kHexapodLegsFloat = strider::walker_legs<float, 6, 1>(strider::kHexapod18);
-static_assert(kHexapodLegs.ok && kSpiderLegs.ok && kMammalLegs.ok && kHexapodLegsFloat.ok, "walker_legs: one solver");
-static_assert(!strider::walker_legs<Fixed, 6, 1>(strider::kDog12).ok && !strider::walker_legs<Fixed, 6, 1>(strider::kSprawl8).ok,
-              "walker_legs: more geometries than solvers");
-
-template <typename S>
-void expect_constant_legs_alike(const RobotModel& m, const WalkerLegs<S>& legs) {
-  SCOPED_TRACE(m.name);
-  strider::GaitParams p;
-  ASSERT_TRUE(strider::gait_params_of(m, &p));
-  const strider::GaitTable* g = strider::find_gait(m, p.default_gait);
-  ASSERT_NE(g, nullptr);
-  const uint8_t r = strider::stored_limits_index(m, p, p.shape);
-  ASSERT_LT(r, strider::kRobotCount);
-  const strider::GaitConfig<S> cfg = strider::stored_gait_config<S>(r);
-  Walker<S> converted, constant;
-  ASSERT_TRUE(converted.configure_stored(m, *g, &cfg));
-  ASSERT_TRUE(constant.configure_stored(&legs, *g, &cfg));
-  ASSERT_EQ(converted.dof(), constant.dof());
-  ASSERT_EQ(converted.leg_count(), constant.leg_count());
-  for (uint8_t i = 0; i < m.leg_count; ++i) {
-    const strider::LegMount<S>& a = converted.leg_mount(i);
-    const strider::LegMount<S>& b = constant.leg_mount(i);
-    EXPECT_TRUE(same_bits(a.origin_mm.x, b.origin_mm.x) && same_bits(a.origin_mm.y, b.origin_mm.y) &&
-                same_bits(a.origin_mm.z, b.origin_mm.z) && same_bits(a.yaw_rad, b.yaw_rad) &&
-                same_bits(a.cos_yaw, b.cos_yaw) && same_bits(a.sin_yaw, b.sin_yaw))
-        << "leg " << int(i);
-    const AnyLeg<S> la = converted.leg_model(i), lb = constant.leg_model(i);
-    EXPECT_EQ(la.kind(), lb.kind());
-    EXPECT_EQ(la.side(), lb.side());
-    for (uint8_t j = 0; j < strider::kMaxLegDof; ++j)
-      EXPECT_TRUE(same_bits(la.limits().lo[j], lb.limits().lo[j]) && same_bits(la.limits().hi[j], lb.limits().hi[j]));
-    const Vec3<S> home = la.mount().body_to_leg(Vec3<S>::from(m.legs[i].stand_mm));
-    for (int k = 0; k < 125; ++k) {
-      const Vec3<S> t(home.x + strider::scalar<S>(12.0 * (k % 5 - 2)), home.y + strider::scalar<S>(12.0 * (k / 5 % 5 - 2)),
-                      home.z + strider::scalar<S>(12.0 * (k / 25 - 2)));
-      typename AnyLeg<S>::Joints qa, qb;
-      Vec3<S> at_a, at_b;
-      const IkStatus sa = converted.leg_ik(i, t, qa, at_a), sb = constant.leg_ik(i, t, qb, at_b);
-      ASSERT_EQ(sa, sb);
-      if (sa == IkStatus::kUnreachable) continue;
-      for (uint8_t j = 0; j < m.dof(); ++j) EXPECT_TRUE(same_bits(qa[j], qb[j])) << "leg " << int(i);
-      const Vec3<S> fa = la.fk_body(qa), fb = lb.fk_body(qb);
-      EXPECT_TRUE(same_bits(fa.x, fb.x) && same_bits(fa.y, fb.y) && same_bits(fa.z, fb.z));
-    }
-  }
-  converted.engine().set_command(strider::scalar<S>(40.0), strider::scalar<S>(10.0), strider::scalar<S>(0.2));
-  constant.engine().set_command(strider::scalar<S>(40.0), strider::scalar<S>(10.0), strider::scalar<S>(0.2));
-  converted.engine().stand_up();
-  constant.engine().stand_up();
-  for (int tick = 0; tick < 300; ++tick) {
-    converted.tick(strider::scalar<S>(0.02));
-    constant.tick(strider::scalar<S>(0.02));
-    for (uint8_t i = 0; i < m.leg_count; ++i) {
-      ASSERT_EQ(converted.leg(i).status, constant.leg(i).status);
-      for (uint8_t j = 0; j < m.dof(); ++j)
-        ASSERT_TRUE(same_bits(converted.leg(i).q[j], constant.leg(i).q[j])) << "tick " << tick << " leg " << int(i);
-    }
-  }
-}
-TEST(WalkerSharedConstants, LegsAreTheModelsConvertedAtRunTime) {
-  expect_constant_legs_alike<Fixed>(strider::kHexapod18, kHexapodLegs);
-  expect_constant_legs_alike<Fixed>(strider::kSpider12, kSpiderLegs);
-  expect_constant_legs_alike<Fixed>(strider::kMammal8, kMammalLegs);
-  expect_constant_legs_alike<float>(strider::kHexapod18, kHexapodLegsFloat);
-}
-
-// The stage's channels as constants in this layout (a range per slot) are
-// the channels made from the model at run time, and map alike.
-constexpr strider::JointChannels<Fixed, 18, 3> kHexapodChannels = strider::joint_channels<Fixed, 18, 3>(strider::kHexapod18);
-static_assert(kHexapodChannels.count == 18 && strider::JointChannels<Fixed, 18, 3>::kRanges == 3, "joint_channels: slots");
-static_assert(strider::joint_channels<Fixed, 18, 3>(strider::kDog12).count == 0, "joint_channels: legs of two geometries");
-struct HexapodChannels : Shared<Fixed> {
-  static constexpr bool kStoredChannels = true;
-  static constexpr const strider::JointChannels<Fixed, 18, 3>& kChannels = kHexapodChannels;
-};
-TEST(ServoTickSlots, ConstantChannelsAreTheModelsConvertedAtRunTime) {
-  strider::ServoStage<Fixed, Shared<Fixed>> converted;
-  strider::ServoStage<Fixed, HexapodChannels> constant;
-  ASSERT_TRUE(converted.configure(strider::kHexapod18));
-  ASSERT_TRUE(constant.configure(strider::kHexapod18));
-  ASSERT_EQ(converted.joint_count(), constant.joint_count());
-  for (uint8_t k = 0; k < 18; ++k) {
-    const strider::ServoChannel<Fixed> a = converted.channel(k), b = constant.channel(k);
-    EXPECT_TRUE(a.channel == b.channel && a.direction == b.direction && a.zero_rad == b.zero_rad &&
-                a.centre_rad == b.centre_rad && a.min_rad == b.min_rad && a.max_rad == b.max_rad &&
-                a.us_per_rad == b.us_per_rad && a.min_pulse_us == b.min_pulse_us && a.max_pulse_us == b.max_pulse_us)
-        << int(k);
   }
 }
 

@@ -92,48 +92,6 @@ TYPED_TEST(AnyLegTest, DispatchesToTheModelsLegType) {
   }
 }
 
-// constant(): from_model()'s leg as a compile-time constant, the same bit
-// for bit once mount_trig() adds its mount's cos and sin.
-constexpr AnyLeg<Fixed> kHexapodLeg4 = AnyLeg<Fixed>::constant(kHexapod18, 4);
-static_assert(kHexapodLeg4.side() == kHexapod18.legs[4].side, "AnyLeg::constant: a constant");
-template <typename S>
-bool same_bits(S a, S b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-TYPED_TEST(AnyLegTest, ConstantIsTheLegFromTheModel) {
-  using S = TypeParam;
-  for (const RobotModel* m : kAllRobots) {
-    for (uint8_t i = 0; i < m->leg_count; ++i) {
-      AnyLeg<S> converted;
-      ASSERT_TRUE(AnyLeg<S>::from_model(*m, i, converted));
-      AnyLeg<S> constant = AnyLeg<S>::constant(*m, i);
-      constant.mount_trig();
-      EXPECT_EQ(constant.kind(), converted.kind());
-      EXPECT_EQ(constant.side(), converted.side());
-      const LegMount<S>& a = converted.mount();
-      const LegMount<S>& b = constant.mount();
-      EXPECT_TRUE(same_bits(a.origin_mm.x, b.origin_mm.x) && same_bits(a.origin_mm.y, b.origin_mm.y) &&
-                  same_bits(a.origin_mm.z, b.origin_mm.z) && same_bits(a.yaw_rad, b.yaw_rad) &&
-                  same_bits(a.cos_yaw, b.cos_yaw) && same_bits(a.sin_yaw, b.sin_yaw))
-          << m->name << " leg " << int(i);
-      for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j)
-        EXPECT_TRUE(same_bits(constant.limits().lo[j], converted.limits().lo[j]) &&
-                    same_bits(constant.limits().hi[j], converted.limits().hi[j]));
-      for (const Vec3<S>& t : probes<S>(m->legs[i])) {
-        typename AnyLeg<S>::Joints qa{}, qb{};
-        Vec3<S> ra, rb;
-        const IkStatus sa = converted.ik(t, qa, ra), sb = constant.ik(t, qb, rb);
-        ASSERT_EQ(sa, sb) << m->name;
-        if (sa == IkStatus::kUnreachable) continue;
-        for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) EXPECT_TRUE(same_bits(qa[j], qb[j])) << m->name;
-        EXPECT_TRUE(same_bits(ra.x, rb.x) && same_bits(ra.y, rb.y) && same_bits(ra.z, rb.z)) << m->name;
-        const Vec3<S> fa = converted.fk_body(qa), fb = constant.fk_body(qb);
-        EXPECT_TRUE(same_bits(fa.x, fb.x) && same_bits(fa.y, fb.y) && same_bits(fa.z, fb.z)) << m->name;
-      }
-    }
-  }
-}
-
 TYPED_TEST(AnyLegTest, BodyFrameGoesThroughTheMount) {
   using S = TypeParam;
   for (const RobotModel* m : kAllRobots) {

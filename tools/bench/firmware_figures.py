@@ -4,8 +4,9 @@
 For every model's firmware ELF: flash and static RAM from avr-size; the
 longest control tick, the deepest stack (the firmware paints its free RAM at
 start-up and reports `stack_peak` in `status`) and the overruns from a run on
-tools/vbench that boots, stands, walks forward, turns and strafes; the largest
-I2C frame and its time at 400 kHz from the bytes sent (simavr does not time
+tools/vbench that boots, stands, walks forward, turns and strafes, and from a
+second run that changes the servos' PWM frequency (400 Hz and back) while
+walking; the largest I2C frame of the first run and its time at 400 kHz from the bytes sent (simavr does not time
 TWI realistically). Merges them into avr.json under "firmware" and prints a
 table against the budgets of the real Mega (256 KB flash, 8 KB SRAM).
 
@@ -49,6 +50,27 @@ at 12.2 send strafe 50\\n
 at 12.9 send status\\n
 """
 DURATION_S = 13.4
+# A second run for the tick around a settings change: the servos' PWM at 400
+# Hz (where the tick map cannot hold the built-in servos' longest pulses and
+# each frame maps them the slow way) with a walk and a turn, then back to 50
+# Hz (the outputs rescaled, the map refitted a leg per frame). Its tick,
+# stack and overruns count; its I2C frames, the boards' prescale bursts, are
+# not servo frames.
+PWM_SCRIPT = """\
+at 0 range 1500
+at 8 send speed 100\\n
+at 8.1 send cal start\\n
+at 8.2 send cal pwm 400\\n
+at 8.3 send cal save\\n
+at 8.5 send walk 80\\n
+at 9.3 send turn 40\\n
+at 10.1 send cal start\\n
+at 10.2 send cal pwm 50\\n
+at 10.3 send cal save\\n
+at 10.6 send walk 80\\n
+at 11.4 send status\\n
+"""
+PWM_DURATION_S = 11.9
 
 
 def avr_size(size_tool, elf):
@@ -63,12 +85,12 @@ def avr_size(size_tool, elf):
     return flash, ram
 
 
-def run_vbench(vbench, elf):
+def run_vbench(vbench, elf, script_text=SCRIPT, duration_s=DURATION_S):
     with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
-        f.write(SCRIPT)
+        f.write(script_text)
         script = f.name
     try:
-        out = subprocess.run([vbench, "--elf", elf, "--script", script, "--duration", str(DURATION_S), "--log"],
+        out = subprocess.run([vbench, "--elf", elf, "--script", script, "--duration", str(duration_s), "--log"],
                              capture_output=True, text=True, timeout=600).stdout
     finally:
         os.unlink(script)
@@ -108,6 +130,11 @@ def main():
         flash, ram = avr_size(args.size_tool, elf)
         fig = {"flash_bytes": flash, "ram_static_bytes": ram}
         fig.update(run_vbench(args.vbench, elf))
+        pwm = run_vbench(args.vbench, elf, PWM_SCRIPT, PWM_DURATION_S)
+        for key in ("tick_us_max", "tick_cycles_max", "stack_peak_bytes"):
+            fig[key] = max(fig[key], pwm[key])
+        fig["overruns"] += pwm["overruns"]
+        fig["unexpected_resets"] += pwm["unexpected_resets"]
         figures[model] = fig
 
     data = {}

@@ -47,8 +47,8 @@ int main() {
   std::printf("#ifndef STRIDER_GAIT_VELOCITY_LIMIT_TABLE_H\n#define STRIDER_GAIT_VELOCITY_LIMIT_TABLE_H\n\n");
   std::printf("#include <stdint.h>\n\n#include \"../math/flash_table.h\"\n\n");
   std::printf("namespace strider {\nnamespace detail {\n\n");
-  // In the class, constexpr: a firmware reads its model's entries at compile
-  // time (gait_config.h's stored_gait_config()).
+  // Static members of a class template: one copy however many translation
+  // units include the header.
   std::printf("template <typename Dummy = void>\nstruct VelocityLimitTables {\n");
   std::printf("  //! Longest stride of leg i along direction k of robot r (kAllRobots order;\n");
   std::printf("  //! legs past the model's count zero).\n");
@@ -79,30 +79,6 @@ int main() {
     std::printf("},  // %s\n", strider::kAllRobots[r]->name);
   }
   std::printf("  };\n");
-  // The ramps finish_gait_config() gives the Fixed configuration of these
-  // limits (stored_gait_config<Fixed>() with the strides and servo figures
-  // just found): a firmware keeps them in flash and finishes nothing.
-  std::printf("  //! accel_mm_s2, yaw_accel_rad_s2, target_speed_mm_s of robot r in Fixed\n");
-  std::printf("  //! (finish_gait_config() of its stored configuration).\n");
-  std::printf("  static constexpr uint16_t kRamp[%d][6] STRIDER_PROGMEM = {\n", int(kRobotCount));
-  for (uint8_t r = 0; r < kRobotCount; ++r) {
-    using strider::Fixed;
-    strider::GaitConfig<Fixed> c = strider::stored_gait_config<Fixed>(r);
-    for (uint8_t i = 0; i < kMaxLegs; ++i)
-      for (int k = 0; k < kDirections; ++k) c.limits.stride_code[i][k] = all[r].stride_code[i][k];
-    c.limits.lift_ms = enc::q16_of(enc::q16_code(all[r].lift_ms), Fixed());
-    c.limits.swing_ms_per_mm = enc::q16_of(enc::q16_code(all[r].swing_ms_per_mm), Fixed());
-    c.limits.stance_ms_per_mm = enc::q16_of(enc::q16_code(all[r].stance_ms_per_mm), Fixed());
-    strider::finish_gait_config(c);
-    const Fixed v[3] = {c.accel_mm_s2, c.yaw_accel_rad_s2, c.target_speed_mm_s};
-    std::printf("      {");
-    for (int j = 0; j < 3; ++j) {
-      const uint32_t q = uint32_t(v[j].raw());
-      std::printf("%s%u, %u", j ? ", " : "", unsigned(q & 0xFFFFu), unsigned(q >> 16));
-    }
-    std::printf("},  // %s\n", strider::kAllRobots[r]->name);
-  }
-  std::printf("  };\n");
   std::printf("  //! Geometry fingerprint of robot r (velocity_limit_encoding.h).\n");
   std::printf("  static constexpr uint16_t kGeometry[%d][%d] STRIDER_PROGMEM = {\n", int(kRobotCount),
               int(enc::kFingerprintWords));
@@ -117,7 +93,6 @@ int main() {
   std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kStride[%d][%d][%d];\n",
               int(kRobotCount), int(kMaxLegs), kDirections);
   std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kServo[%d][6];\n", int(kRobotCount));
-  std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kRamp[%d][6];\n", int(kRobotCount));
   std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kGeometry[%d][%d];\n",
               int(kRobotCount), int(enc::kFingerprintWords));
   std::printf("\n}  // namespace detail\n}  // namespace strider\n\n#endif  // STRIDER_GAIT_VELOCITY_LIMIT_TABLE_H\n");

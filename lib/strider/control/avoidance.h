@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 
+#include "../robots/robot_model.h"
 #include "hal_interfaces.h"
 #include "reply.h"
 #include "sonar_filter.h"
@@ -34,6 +35,20 @@ struct AvoidConfig {
 
 constexpr AvoidConfig default_avoid_config() { return AvoidConfig{true, 200, 400, 50, 600, 0, 5000, 300}; }
 constexpr uint8_t kAvoidMinSlowPct = 25;  //!< forward speed at the edge of the stop distance [%]
+
+//! A model's clear_mm: the widest standing foot's distance from the body's
+//! centre line plus kAvoidClearMarginMm [mm].
+constexpr float kAvoidClearMarginMm = 40.0f;
+constexpr uint16_t avoid_clear_mm(const RobotModel& m) {
+  float w = 0.0f;
+  for (uint8_t i = 0; i < m.leg_count && i < kMaxLegs; ++i) {
+    const float y = m.legs[i].stand_mm.y;
+    if (y > w) w = y;
+    if (-y > w) w = -y;
+  }
+  w += kAvoidClearMarginMm;
+  return w < 60000.0f ? uint16_t(w + 0.5f) : uint16_t(60000);
+}
 
 enum class AvoidState : uint8_t {
   kPassThrough = 0,  //!< disabled, or not walking forward

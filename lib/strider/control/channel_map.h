@@ -39,10 +39,10 @@ constexpr int8_t joint_direction(const RobotModel& m, uint8_t leg, uint8_t j) {
   return m.legs[leg].side == BodySide::kRight && !joint_axis_vertical(m.kind, j) ? int8_t(-1) : int8_t(1);
 }
 
-//! The servo channel of joint j of leg `leg` in scalar S, with its servo's
-//! figures (servo_travel() reads flash, which a constant cannot: travel_of()).
+//! The servo channel of joint j of leg `leg` in scalar S.
 template <typename S>
-constexpr ServoChannel<S> joint_channel_constant(const RobotModel& m, uint8_t leg, uint8_t j, const ServoTravel& spec) {
+ServoChannel<S> make_joint_channel(const RobotModel& m, uint8_t leg, uint8_t j) {
+  const ServoTravel spec = servo_travel(m.servo[j]);
   return ServoChannel<S>{
       joint_channel(m, leg, j),
       joint_direction(m, leg, j),
@@ -58,29 +58,19 @@ constexpr ServoChannel<S> joint_channel_constant(const RobotModel& m, uint8_t le
       spec.min_pulse_us,
       spec.max_pulse_us};
 }
-template <typename S>
-ServoChannel<S> make_joint_channel(const RobotModel& m, uint8_t leg, uint8_t j) {
-  return joint_channel_constant<S>(m, leg, j, servo_travel(m.servo[j]));
-}
-template <typename S>
-constexpr ServoChannel<S> joint_channel_constant(const RobotModel& m, uint8_t leg, uint8_t j) {
-  return joint_channel_constant<S>(m, leg, j, servo_parts_detail::travel_of(m.servo[j]));
-}
 
 //! The model's joint count when make_channel_map() can map it, else 0 (more
 //! joints than kMaxServoJoints, or a joint range wider than its servo's
-//! travel); travel: servo_travel(), or travel_of() in a constant.
-constexpr uint8_t channel_map_count_constant(const RobotModel& m,
-                                             ServoTravel (*travel)(ServoPart) = servo_parts_detail::travel_of) {
+//! travel).
+inline uint8_t channel_map_count(const RobotModel& m) {
   if (m.joint_count() > kMaxServoJoints) return 0;
   for (uint8_t leg = 0; leg < m.leg_count; ++leg)
     for (uint8_t j = 0; j < m.dof(); ++j) {
       const JointRange& r = m.legs[leg].joint[j];
-      if (r.max_deg - r.min_deg > travel(m.servo[j]).travel_deg) return 0;
+      if (r.max_deg - r.min_deg > servo_travel(m.servo[j]).travel_deg) return 0;
     }
   return m.joint_count();
 }
-inline uint8_t channel_map_count(const RobotModel& m) { return channel_map_count_constant(m, servo_travel); }
 
 //! Where a model is kept: in RAM (host tools, the simulator), or in flash
 //! (the firmware: STRIDER_PROGMEM, read through a copy).

@@ -21,7 +21,6 @@
 #include "controller.h"
 #include "gait_tuner.h"
 #include "link_ports.h"
-#include "model_constants.h"
 #include "robot_app_sink.h"
 #include "robot_sensing.h"
 #include "servo_board_watch.h"
@@ -45,8 +44,9 @@ class RobotApp {
 
  public:
   //! Reads the settings from store (EEPROM) but touches no other hardware.
-  //! The model is read at start-up (begin(), set_gait_params()) only.
-  RobotApp(const RobotModel& model, Output& out, Store& store, ModelMemory where = ModelMemory::kRam)
+  //! The model is read at start-up (begin(), set_gait_params()) only. Out
+  //! of line: the settings' copy is off the stack before begin() runs.
+  STRIDER_NOINLINE RobotApp(const RobotModel& model, Output& out, Store& store, ModelMemory where = ModelMemory::kRam)
       : model_(model),
         model_in_flash_(where == ModelMemory::kFlash),
         boards_(0),
@@ -190,39 +190,15 @@ class RobotApp {
     copy_model(&model);
     name_ = model.name;
     boards_ = pca_board_count(model);
-    controller_.set_avoid_clear_mm(P::kAvoidClearMm != 0 ? P::kAvoidClearMm : avoid_clear_mm(model));  // the copy: model_ may be in flash
-    const char* error = configure_walker(model, Stored<P::kStoredConfig>());
+    controller_.set_avoid_clear_mm(avoid_clear_mm(model));  // the copy: model_ may be in flash
+    const char* error = configure_walker(model);
     return error != nullptr ? error : configure_stage(model) ? nullptr : text::kErrServos;
   }
-  // The walker from the model (only the one called is built).
-  template <bool kOn>
-  struct Stored {};
-  const char* configure_walker(const RobotModel& model, Stored<false>) {
+  //! The walker at the model's gait defaults, sitting, its legs' IK not yet solved.
+  const char* configure_walker(const RobotModel& model) {
     GaitParams params;
     if (!gait_params_of(model, &params)) return text::kErrGait;
     return motion_.configure(model, params, false) ? nullptr : text::kErrModel;
-  }
-  // A stored configuration needs only the default gait's name.
-  const char* configure_walker(const RobotModel& model, Stored<true>) {
-    GaitName gait;
-    if (!default_gait(model, &gait, Stored<P::kStoredGait>())) return text::kErrGait;
-    return configure_walker(model, gait.text, Stored<P::kStoredLegs>()) ? nullptr : text::kErrModel;
-  }
-  static bool default_gait(const RobotModel&, GaitName* gait, Stored<true>) {
-    flash_copy(gait, &P::kDefaultGait, sizeof *gait);
-    return true;
-  }
-  static bool default_gait(const RobotModel& model, GaitName* gait, Stored<false>) {
-    GaitParams params;
-    if (!gait_params_of(model, &params)) return false;
-    for (uint8_t i = 0; i < kGaitNameBytes; ++i) gait->text[i] = params.default_gait[i];
-    return true;
-  }
-  bool configure_walker(const RobotModel& model, const char* gait, Stored<false>) {
-    return motion_.configure_stored(model, gait, &P::kGaitConfig, false);
-  }
-  bool configure_walker(const RobotModel& model, const char* gait, Stored<true>) {
-    return motion_.configure_stored(model, gait, &P::kGaitConfig, &P::kWalkerLegsInFlash, false);
   }
   // Not inlined: the stage's temporaries are not on the stack with the
   // walker's configuration. The stage reads the model again (model_, not

@@ -17,9 +17,9 @@
 
 #include <stdint.h>
 
+#include "../gait/walker_legs.h"
 #include "../robots/build_profile.h"
 #include "channel_map.h"
-#include "joint_channels.h"
 #include "servo_boards.h"
 #include "servo_frame.h"
 #include "servo_tick_map.h"
@@ -28,12 +28,17 @@
 namespace strider {
 
 constexpr uint16_t kSoftStartStepMs = 250;   //!< one leg's servos switched on per step [ms]
+constexpr uint16_t kFramePeriodMs = 20;  //!< nominal frame period for the slew limit [ms] (50 Hz)
+
+//! A joint's slew step per frame [us]: a pulse change at the servo's top
+//! speed over one frame (500-2500 us over 180 deg), rounded.
+inline uint16_t servo_step_us(ServoPart part) {
+  return uint16_t(servo_travel(part).speed_deg_s * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f) + 0.5f);
+}
 
 //! Its build profile P (robots/build_profile.h) gives the most joints
-//! (servos) it drives (a firmware: its model's joint count), the tick map's
-//! slots and whether the channels are a constant in flash (P::kChannels,
-//! joint_channels() of the model given to configure()) or made from the
-//! model when needed (make_joint_channel()).
+//! (servos) it drives (a firmware: its model's joint count) and the tick
+//! map's slots.
 //!
 //! RAM: the stage keeps no servo channels (servo_map.h) of its own, only
 //! the tick map's constants, which a frame needs. The channels are rebuilt
@@ -45,8 +50,6 @@ template <typename S, typename P = HostProfile<S>>
 class ServoStage {
   static constexpr uint8_t N = P::kJoints;
   static constexpr uint8_t kSlots = P::kTickSlots;
-  static constexpr bool kHasChannels = P::kStoredChannels;
-  using Source = JointChannelSource<S, P>;
 
  public:
   ServoStage()
@@ -62,7 +65,9 @@ class ServoStage {
     // Joint k = leg dof + j: slot j when the tick map has dof slots, for
     // legs of one geometry (the same limits: one range per slot); fit_legs()
     // configures leg 0 first.
-    count_ = Source::count(model);
+    // Slots: none, or one per joint of a leg for legs of one geometry.
+    const bool fits = model.joint_count() <= N && (kSlots == 0 || (kSlots == model.dof() && leg_solver_count(model) == 1));
+    count_ = fits ? channel_map_count(model) : uint8_t(0);
     model_ = source != nullptr ? source : &model;
     where_ = where;
     dof_ = model.dof();
@@ -128,7 +133,7 @@ class ServoStage {
   ServoChannel<S> channel(uint8_t k) const {
     RobotModel m;
     read_model(*model_, where_, &m);
-    return Source::channel(m, uint8_t(k / dof_), uint8_t(k % dof_), k);
+    return make_joint_channel<S>(m, uint8_t(k / dof_), uint8_t(k % dof_));
   }
   bool on(uint8_t k) const { return ticks_[k] != kOff; }
   uint16_t ticks(uint8_t k) const { return on(k) ? ticks_[k] : uint16_t(0); }   //!< last written [PCA9685 ticks], 0 off
@@ -151,7 +156,8 @@ class ServoStage {
   //! ends with out.flush().
   template <typename Leg, typename Output>
   ServoStatus frame(const Leg* legs, uint32_t now_ms, Output& out) {
-    if (pwm_pending_) apply_pwm(out);
+    const bool new_pwm = pwm_pending_;
+    if (new_pwm) apply_pwm(out);
     if (relax_pending_) {
       for (uint8_t k = 0; k < count_; ++k) {
         out.relax(tick_map_.channel(k));
@@ -165,9 +171,10 @@ class ServoStage {
     }
     // New settings: every output holds its pulse (rescaled to a new PWM
     // period at once) while the map's constants are rebuilt, a leg per frame
-    // (a whole map is ~20 ms of float work on the AVR: more than a tick).
+    // from the next one (a whole map is ~20 ms of float work on the AVR:
+    // more than a tick).
     if (fitted_legs_ < legs_) {
-      fit_legs(1);
+      if (!new_pwm) fit_legs(1);
     } else {
       status_ = fast_ ? write_legs(legs, out, nullptr) : write_legs_slowly(legs, out);
     }
@@ -190,7 +197,7 @@ class ServoStage {
         const uint8_t k = uint8_t(leg * dof_ + j);
         const ServoCommand cmd = model == nullptr
                                      ? tick_map_.map(k, j, r.q[j])
-                                     : map_joint(Source::channel(*model, leg, j, k), r.q[j],
+                                     : map_joint(make_joint_channel<S>(*model, leg, j), r.q[j],
                                                  trim_from_decideg<S>(settings_->trim_decideg[k]), timing_);
         worst_status = worst(worst_status, cmd.status);
         uint16_t next = cmd.ticks;
@@ -208,19 +215,9 @@ class ServoStage {
   }
   template <typename Leg, typename Output>
   STRIDER_NOINLINE ServoStatus write_legs_slowly(const Leg* legs, Output& out) {
-    return write_legs_slowly(legs, out, Given<kHasChannels>());
-  }
-  template <bool kOn>
-  struct Given {};
-  template <typename Leg, typename Output>
-  ServoStatus write_legs_slowly(const Leg* legs, Output& out, Given<false>) {
     RobotModel m;
     read_model(*model_, where_, &m);
     return write_legs(legs, out, &m);
-  }
-  template <typename Leg, typename Output>
-  ServoStatus write_legs_slowly(const Leg* legs, Output& out, Given<true>) {
-    return write_legs(legs, out, model_);  // only a flag: the channels come from P::kChannels
   }
 
   //! The tick map's constants for the timing and trims of up to n more
@@ -228,20 +225,13 @@ class ServoStage {
   //! fast_ says whether the map holds every joint.
   STRIDER_NOINLINE void fit_legs(uint8_t n) {
     if (count_ == 0 || fitted_legs_ >= legs_) return;  // a model that does not fit; nothing to do
-    fit_legs(n, Given<kHasChannels>());
-  }
-  void fit_legs(uint8_t n, Given<false>) {
     RobotModel m;
     read_model(*model_, where_, &m);
-    fit_legs(n, m);
-  }
-  void fit_legs(uint8_t n, Given<true>) { fit_legs(n, *model_); }  // the model is not read
-  void fit_legs(uint8_t n, const RobotModel& m) {
     for (; n != 0 && fitted_legs_ < legs_; --n, ++fitted_legs_)
       for (uint8_t j = 0; j < dof_; ++j) {
         const uint8_t k = uint8_t(fitted_legs_ * dof_ + j);
         const S trim = trim_from_decideg<S>(settings_->trim_decideg[k]);
-        if (tick_map_.configure_joint(k, Source::channel(m, fitted_legs_, j, k), trim, timing_) != ServoTickStatus::kOk)
+        if (tick_map_.configure_joint(k, make_joint_channel<S>(m, fitted_legs_, j), trim, timing_) != ServoTickStatus::kOk)
           unfit_ = true;
       }
     if (fitted_legs_ == legs_) fast_ = !unfit_;
@@ -267,7 +257,7 @@ class ServoStage {
     }
     for (uint8_t j = 0; j < dof_; ++j) {
       // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
-      const uint16_t t = timing_.pulse_ticks(Source::step_us(part_[j], j));
+      const uint16_t t = timing_.pulse_ticks(servo_step_us(part_[j]));
       step_[j] = t == 0 ? uint16_t(1) : t;
     }
   }

@@ -49,31 +49,6 @@ class WalkerMotion {
     return true;
   }
 
-  //! The same at the model's gait defaults with their configuration from
-  //! flash (Walker::configure_stored(): a firmware's constant), starting in
-  //! `default_gait` (the defaults' default_gait).
-  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S, P::kLegs, P::kSearch>* flash_config,
-                        bool solve_now = true) {
-    GaitTable gait;
-    if (!load_gait(model, default_gait, &gait) ||
-        !walker_.configure_stored(model, gait, flash_config, true, solve_now))
-      return false;
-    configured(model);
-    return true;
-  }
-
-  //! The same with the walker's legs from flash too (walker_legs() of the
-  //! model: a firmware's constant).
-  bool configure_stored(const RobotModel& model, const char* default_gait, const GaitConfig<S, P::kLegs, P::kSearch>* flash_config,
-                        const WalkerLegs<S, P::kLegs, P::kSolvers>* flash_legs, bool solve_now = true) {
-    GaitTable gait;
-    if (!load_gait(model, default_gait, &gait) ||
-        !walker_.configure_stored(flash_legs, gait, flash_config, true, solve_now))
-      return false;
-    configured(model);
-    return true;
-  }
-
   Walker<S, P>& walker() { return walker_; }
   const Walker<S, P>& walker() const { return walker_; }
   const GaitTable& gait() const { return walker_.engine().gait(); }

@@ -57,14 +57,6 @@ enum class LimitsSource : uint8_t {
   kSearch = 1           //!< always the IK search (velocity_limits.h)
 };
 
-//! Robot r's strides of the stored table, as a constant (a firmware's flash).
-constexpr StrideTable<true> stored_strides(uint8_t r) {
-  StrideTable<true> t{};
-  for (uint8_t i = 0; i < kMaxLegs; ++i)
-    for (uint8_t k = 0; k < kStrideDirections; ++k) t.stride_code[i][k] = detail::VelocityLimitTables<>::kStride[r][i][k];
-  return t;
-}
-
 namespace gait_config_detail {
 template <typename S>
 constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
@@ -115,38 +107,15 @@ void set_limits(VelocityLimits<S, false>& lim, const RobotModel& model, const An
                 const GaitParams& params, SwingShape shape, S, LimitsSource) {
   if (!stored_velocity_limits(model, params, shape, lim)) lim = VelocityLimits<S, false>();
 }
-//! Half of each leg's shortest stride, stride(i, k) [mm] along direction k.
-template <typename S, uint8_t kLegs, bool kSearch, typename Strides>
-constexpr void set_edges(GaitConfig<S, kLegs, kSearch>& c, const Strides& strides) {
+//! Half of each leg's shortest stride of the limits [mm].
+template <typename S, uint8_t kLegs, bool kSearch>
+void set_edges(GaitConfig<S, kLegs, kSearch>& c) {
   for (uint8_t i = 0; i < c.leg_count; ++i) {
-    S shortest = strides.stride_mm(i, 0);
-    for (uint8_t k = 1; k < kStrideDirections; ++k) shortest = min_of(shortest, strides.stride_mm(i, k));
+    S shortest = c.limits.stride_mm(i, 0);
+    for (uint8_t k = 1; k < kStrideDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
     c.edge_mm[i] = shortest * scalar<S>(0.5);
   }
 }
-//! Robot r's strides of the stored table, read at compile time.
-template <typename S>
-struct TableStrides {
-  uint8_t r;
-  constexpr S stride_mm(uint8_t i, uint8_t k) const {
-    return velocity_limit_encoding::stride_of(detail::VelocityLimitTables<>::kStride[r][i][k], S());
-  }
-};
-//! Robot r's strides at compile time: copied, or pointed at (flash_codes).
-constexpr void set_stored_strides(StrideTable<true>& t, uint8_t r, const uint16_t*) { t = stored_strides(r); }
-constexpr void set_stored_strides(StrideTable<false>& t, uint8_t, const uint16_t* flash_codes) {
-  t.flash_codes = flash_codes;
-}
-//! Stored configuration r's ramps: Fixed's from the table, float's at run time.
-template <uint8_t kLegs, bool kSearch>
-constexpr void set_stored_ramps(GaitConfig<Fixed, kLegs, kSearch>& c, uint8_t r) {
-  using T = detail::VelocityLimitTables<>;
-  c.accel_mm_s2 = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][0]) | (uint32_t(T::kRamp[r][1]) << 16)));
-  c.yaw_accel_rad_s2 = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][2]) | (uint32_t(T::kRamp[r][3]) << 16)));
-  c.target_speed_mm_s = Fixed::from_raw(int32_t(uint32_t(T::kRamp[r][4]) | (uint32_t(T::kRamp[r][5]) << 16)));
-}
-template <uint8_t kLegs, bool kSearch>
-constexpr void set_stored_ramps(GaitConfig<float, kLegs, kSearch>&, uint8_t) {}
 }  // namespace gait_config_detail
 
 //! The ramps of a configuration whose other fields are set: to a trot's top
@@ -174,49 +143,9 @@ void fill_gait_config(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model,
   for (uint8_t i = 0; i < model.leg_count; ++i) c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
   gait_config_detail::set_params(c, model, params, shape, gait_config_detail::reach_of(c));
   gait_config_detail::set_limits(c.limits, model, legs, c.home, params, shape, c.step_height_mm, source);
-  gait_config_detail::set_edges(c, c.limits);
+  gait_config_detail::set_edges(c);
   gait_config_detail::set_speeds(c);
   finish_gait_config(c);
-}
-
-//! Whether stored_gait_config<S>() includes the ramps (else finish_gait_config()).
-template <typename S>
-constexpr bool stored_ramps_given() { return false; }
-template <>
-constexpr bool stored_ramps_given<Fixed>() { return true; }
-
-//! What fill_gait_config() gives built-in model r at its gait defaults, as a
-//! constant (stored_ramps_given()). flash_codes: the strides (kSearch false).
-template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
-constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r, const uint16_t* flash_codes) {
-  namespace enc = velocity_limit_encoding;
-  using T = detail::VelocityLimitTables<>;
-  const RobotModel& model = *kAllRobots[r];
-  const GaitParams& params = kGaitParams[r];
-  GaitConfig<S, kLegs, kSearch> c{};
-  c.leg_count = model.leg_count;
-  for (uint8_t i = 0; i < model.leg_count; ++i) {
-    const Vec3<float>& h = model.legs[i].stand_mm;
-    c.home[i] = Vec3<S>(scalar<S>(double(h.x)), scalar<S>(double(h.y)), scalar<S>(double(h.z)));
-  }
-  gait_config_detail::set_params(c, model, params, params.shape, gait_config_detail::reach_of(c));
-  c.limits.set_gait(model, scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
-  gait_config_detail::set_stored_strides(c.limits, r, flash_codes);
-  S servo[3] = {};
-  for (uint8_t j = 0; j < 3; ++j)
-    servo[j] = enc::q16_of(uint32_t(T::kServo[r][2 * j]) | (uint32_t(T::kServo[r][2 * j + 1]) << 16), S());
-  c.limits.lift_ms = servo[0];
-  c.limits.swing_ms_per_mm = servo[1];
-  c.limits.stance_ms_per_mm = servo[2];
-  gait_config_detail::set_edges(c, gait_config_detail::TableStrides<S>{r});
-  gait_config_detail::set_speeds(c);
-  gait_config_detail::set_stored_ramps(c, r);
-  return c;
-}
-
-template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
-constexpr GaitConfig<S, kLegs, kSearch> stored_gait_config(uint8_t r) {
-  return stored_gait_config<S, kLegs, kSearch>(r, &detail::VelocityLimitTables<>::kStride[r][0][0]);
 }
 
 //! fill_gait_config() as a value (that one builds in place: no AVR stack copy).

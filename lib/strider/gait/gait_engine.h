@@ -35,13 +35,6 @@ class GaitEngine {
     fill_gait_config(cfg_, model, legs, params, shape);
     configure(cfg_, gait, sitting);
   }
-  //! The same from a configuration in flash (stored_gait_config()).
-  void configure_stored(const GaitConfig<S, kLegs, kSearch>* flash_config, const GaitTable& gait, bool sitting = false) {
-    flash_copy(&cfg_, flash_config, sizeof cfg_);
-    if (!stored_ramps_given<S>()) finish_gait_config(cfg_);
-    configure(cfg_, gait, sitting);
-  }
-
   //! Velocity (vx, vy [mm/s], wz [rad/s], body frame) at speed_pct [0, 100]
   //! percent, clamped to the robot's limits (limited()).
   void set_command(S vx, S vy, S wz, S speed_pct = scalar<S>(100.0)) {

@@ -80,22 +80,19 @@ static_assert(gait_params_detail::values_sane(), "kGaitParams: positive sizes an
 
 //! Entry r (< kRobotCount) of kGaitParams, copied out of flash on the AVR.
 inline GaitParams gait_params_at(uint8_t r) {
-#if defined(__AVR__)
   GaitParams p;
-  uint8_t* to = reinterpret_cast<uint8_t*>(&p);
-  const uint8_t* from = reinterpret_cast<const uint8_t*>(&kGaitParams[r]);
-  for (uint8_t i = 0; i < sizeof p; ++i) to[i] = flash_u8(from + i);
+  flash_copy(&p, &kGaitParams[r], sizeof p);
   return p;
-#else
-  return kGaitParams[r];
-#endif
 }
 
 //! The index of `model`'s gait defaults in kGaitParams (by name), or
 //! kRobotCount for a model not listed.
 inline uint8_t gait_params_index(const RobotModel& model) {
-  for (uint8_t i = 0; i < kRobotCount; ++i)
-    if (strcmp(gait_params_at(i).robot, model.name) == 0) return i;
+  for (uint8_t i = 0; i < kRobotCount; ++i) {
+    char robot[kRobotNameBytes];  // the name alone: a whole GaitParams is a large stack frame on the AVR
+    flash_copy(robot, kGaitParams[i].robot, sizeof robot);
+    if (strcmp(robot, model.name) == 0) return i;
+  }
   return kRobotCount;
 }
 
@@ -104,7 +101,7 @@ inline uint8_t gait_params_index(const RobotModel& model) {
 inline bool gait_params_of(const RobotModel& model, GaitParams* out) {
   const uint8_t i = gait_params_index(model);
   if (i >= kRobotCount) return false;
-  *out = gait_params_at(i);
+  flash_copy(out, &kGaitParams[i], sizeof *out);
   return true;
 }
 

@@ -64,15 +64,6 @@ struct VelocityLimitTables {
       {33755, 207, 61500, 3, 7125, 2},  // hexapod18
       {28546, 118, 42092, 2, 54274, 1},  // spider12
   };
-  //! accel_mm_s2, yaw_accel_rad_s2, target_speed_mm_s of robot r in Fixed
-  //! (finish_gait_config() of its stored configuration).
-  static constexpr uint16_t kRamp[5][6] STRIDER_PROGMEM = {
-      {60056, 429, 52639, 1, 14178, 1011},  // sprawl8
-      {50860, 115, 39180, 0, 29888, 642},  // mammal8
-      {9291, 340, 47166, 0, 34976, 1334},  // dog12
-      {11376, 184, 45160, 0, 35160, 640},  // hexapod18
-      {40325, 220, 16397, 1, 62078, 826},  // spider12
-  };
   //! Geometry fingerprint of robot r (velocity_limit_encoding.h).
   static constexpr uint16_t kGeometry[5][8] STRIDER_PROGMEM = {
       {1024, 880, 1440, 0, 0, 560, 1793, 64384},  // sprawl8
@@ -87,8 +78,6 @@ template <typename Dummy>
 constexpr uint16_t VelocityLimitTables<Dummy>::kStride[5][6][16];
 template <typename Dummy>
 constexpr uint16_t VelocityLimitTables<Dummy>::kServo[5][6];
-template <typename Dummy>
-constexpr uint16_t VelocityLimitTables<Dummy>::kRamp[5][6];
 template <typename Dummy>
 constexpr uint16_t VelocityLimitTables<Dummy>::kGeometry[5][8];
 

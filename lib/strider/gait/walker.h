@@ -35,24 +35,6 @@ class Walker {
     return true;
   }
 
-  //! The same with the configuration from flash (stored_gait_config()).
-  bool configure_stored(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>* flash_config,
-                        bool sitting = false, bool solve_now = true) {
-    if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !build_legs(model)) return false;
-    engine_.configure_stored(flash_config, gait, sitting);
-    reset_legs(solve_now);
-    return true;
-  }
-
-  //! The same with the legs from flash too (walker_legs() of the model).
-  bool configure_stored(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>* flash_config,
-                        bool sitting = false, bool solve_now = true) {
-    if (!build_legs(flash_legs, gait.leg_count)) return false;
-    engine_.configure_stored(flash_config, gait, sitting);
-    reset_legs(solve_now);
-    return true;
-  }
-
   //! The same with a configuration built before (make_gait_config).
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitConfig<S, kLegs, P::kSearch>& config,
                  bool sitting = false) {
@@ -187,7 +169,9 @@ class Walker {
   }
 
   //! The engine's configuration from the model (an AnyLeg per leg).
-  void configure_engine(const RobotModel& model, const GaitParams& params, SwingShape shape, const GaitTable& gait,
+  // Out of line, as build_legs(): at a firmware's start-up the stack holds
+  // the model's copy, and the two frames come one after the other.
+  STRIDER_NOINLINE void configure_engine(const RobotModel& model, const GaitParams& params, SwingShape shape, const GaitTable& gait,
                         bool sitting) {
     if (P::kSearch && legs_.per_leg() == nullptr) {
       AnyLeg<S> legs[kLegs];
@@ -224,25 +208,12 @@ class Walker {
     return leg_ik::same_bits(a.x, b.x) && leg_ik::same_bits(a.y, b.y) && leg_ik::same_bits(a.z, b.z);
   }
 
-  bool build_legs(const RobotModel& model) {
+  STRIDER_NOINLINE bool build_legs(const RobotModel& model) {
     dof_ = 0;
     if (!walker_detail::build_legs(model, legs_)) return false;
     for (uint8_t i = 0; i < model.leg_count; ++i) turn_[i] = mount_turn_of(legs_.mount(i));
     proj_ = ReachProjection<S>::make(model);
     dof_ = model.dof();
-    return true;
-  }
-
-  //! The legs from flash; false when they do not fit the gait or this build.
-  bool build_legs(const WalkerLegs<S, kLegs, P::kSolvers>* flash_legs, uint8_t gait_legs) {
-    dof_ = 0;
-    const uint8_t legs = flash_u8(&flash_legs->leg_count);
-    if (flash_u8(&flash_legs->ok) == 0 || legs > kLegs || legs != gait_legs) return false;
-    flash_copy(&legs_, &flash_legs->legs, sizeof legs_);
-    legs_.mount_trig();
-    for (uint8_t i = 0; i < legs; ++i) turn_[i] = mount_turn_of(legs_.mount(i));
-    flash_copy(&proj_, &flash_legs->proj, sizeof proj_);
-    dof_ = flash_u8(&flash_legs->dof);
     return true;
   }
 

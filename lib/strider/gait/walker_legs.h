@@ -1,11 +1,9 @@
 //! The walker's leg storage: an AnyLeg per leg, or one IK solver per leg
-//! geometry with each leg's mount and side (the profile's kSolvers); built
-//! at compile time for a firmware's flash (walker_legs()).
+//! geometry with each leg's mount and side (the profile's kSolvers).
 #ifndef STRIDER_GAIT_WALKER_LEGS_H
 #define STRIDER_GAIT_WALKER_LEGS_H
 
 #include "../kinematics/any_leg.h"
-#include "reach_projection.h"
 
 namespace strider {
 
@@ -44,29 +42,13 @@ constexpr uint8_t leg_of_solver(const RobotModel& model, uint8_t n) {
 
 namespace walker_detail {
 
-template <uint8_t... I>
-struct Indices {};
-template <uint8_t N, uint8_t... I>
-struct MakeIndices : MakeIndices<uint8_t(N - 1), uint8_t(N - 1), I...> {};
-template <uint8_t... I>
-struct MakeIndices<0, I...> {
-  using type = Indices<I...>;
-};
-
-//! constant(): the legs but for the mounts' cos and sin (mount_trig()).
+//! The legs of a model: an AnyLeg per leg.
 template <typename S, uint8_t kLegs, uint8_t kSolvers, bool kShared = (kSolvers < kLegs)>
 struct LegSolvers {
   static_assert(kSolvers >= 1 && kSolvers <= kLegs, "kSolvers: 1 to kLegs");
-  static constexpr LegSolvers constant(const RobotModel& model) {
-    return constant(model, typename MakeIndices<kLegs>::type());
-  }
-  template <uint8_t... I>
-  static constexpr LegSolvers constant(const RobotModel& model, Indices<I...>) {
-    return LegSolvers{{AnyLeg<S>::constant(model, I)...}};
-  }
-  static constexpr bool fits(const RobotModel& model) { return model.leg_count <= kLegs; }
-  void mount_trig() {
-    for (uint8_t i = 0; i < kLegs; ++i) legs[i].mount_trig();
+  static bool fits(const RobotModel& model) { return model.leg_count <= kLegs; }
+  void build(const RobotModel& model) {  // legs past the model's are left as they are, unused
+    for (uint8_t i = 0; i < model.leg_count; ++i) AnyLeg<S>::from_model(model, i, legs[i]);
   }
   const AnyLeg<S>& solver(uint8_t i) const { return legs[i]; }
   const LegMount<S>& mount(uint8_t i) const { return legs[i].mount(); }
@@ -75,24 +57,19 @@ struct LegSolvers {
 
   AnyLeg<S> legs[kLegs];
 };
+//! The legs of a model whose legs share kSolvers geometries: a solver per
+//! geometry, each leg's mount and side.
 template <typename S, uint8_t kLegs, uint8_t kSolvers>
 struct LegSolvers<S, kLegs, kSolvers, true> {
-  static constexpr LegSolvers constant(const RobotModel& model) {
-    return constant(model, typename MakeIndices<kSolvers>::type(), typename MakeIndices<kLegs>::type());
-  }
-  template <uint8_t... N, uint8_t... I>
-  static constexpr LegSolvers constant(const RobotModel& model, Indices<N...>, Indices<I...>) {
-    return LegSolvers{{AnyLeg<S>::constant(model, leg_of_solver(model, N))...},
-                      {AnyLeg<S>::constant(model, I).mount()...},
-                      {(I < model.leg_count ? model.legs[I].side : BodySide::kLeft)...},
-                      {(I < model.leg_count ? leg_solver_index(model, I) : uint8_t(0))...}};
-  }
-  static constexpr bool fits(const RobotModel& model) {
-    return model.leg_count <= kLegs && leg_solver_count(model) <= kSolvers;
-  }
-  void mount_trig() {
-    for (uint8_t n = 0; n < kSolvers; ++n) solvers[n].mount_trig();
-    for (uint8_t i = 0; i < kLegs; ++i) mounts[i] = LegMount<S>::make(mounts[i].origin_mm, mounts[i].yaw_rad);
+  static bool fits(const RobotModel& model) { return model.leg_count <= kLegs && leg_solver_count(model) <= kSolvers; }
+  void build(const RobotModel& model) {
+    for (uint8_t n = 0; n < kSolvers; ++n) AnyLeg<S>::from_model(model, leg_of_solver(model, n), solvers[n]);
+    for (uint8_t i = 0; i < kLegs; ++i) {
+      const bool used = i < model.leg_count;
+      mounts[i] = used ? AnyLeg<S>::mount_of(model, i) : LegMount<S>::make(Vec3<S>(), S(0));
+      sides[i] = used ? model.legs[i].side : BodySide::kLeft;
+      of[i] = used ? leg_solver_index(model, i) : uint8_t(0);
+    }
   }
   const AnyLeg<S>& solver(uint8_t i) const { return solvers[of[i]]; }
   const LegMount<S>& mount(uint8_t i) const { return mounts[i]; }
@@ -109,28 +86,11 @@ struct LegSolvers<S, kLegs, kSolvers, true> {
 template <typename Legs>
 bool build_legs(const RobotModel& model, Legs& legs) {
   if (!Legs::fits(model)) return false;
-  legs = Legs::constant(model);
-  legs.mount_trig();
+  legs.build(model);
   return true;
 }
 
 }  // namespace walker_detail
-
-//! A walker's legs built at compile time, kept in a firmware's flash.
-template <typename S, uint8_t kLegs = kMaxLegs, uint8_t kSolvers = kLegs>
-struct WalkerLegs {
-  walker_detail::LegSolvers<S, kLegs, kSolvers> legs;  // the mounts without their cos and sin
-  ReachProjection<S> proj;
-  uint8_t leg_count;
-  uint8_t dof;
-  bool ok;  // the model fits (kLegs, kSolvers)
-};
-template <typename S, uint8_t kLegs = kMaxLegs, uint8_t kSolvers = kLegs>
-constexpr WalkerLegs<S, kLegs, kSolvers> walker_legs(const RobotModel& model) {
-  using Legs = walker_detail::LegSolvers<S, kLegs, kSolvers>;
-  return WalkerLegs<S, kLegs, kSolvers>{Legs::constant(model), ReachProjection<S>::make(model), model.leg_count,
-                                        model.dof(), Legs::fits(model)};
-}
 
 }  // namespace strider
 

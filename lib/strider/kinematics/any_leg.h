@@ -27,26 +27,31 @@ class AnyLeg {
   //! A zero-length sprawl leg at the body centre; assign from from_model().
   AnyLeg() : kind_(LegKind::kSprawl), side_(BodySide::kLeft), mount_{Vec3<S>(), S(0), S(1), S(0)} {}
 
-  //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S).
-  //! Returns false and leaves `out` alone when index >= model.leg_count.
+  //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S) in
+  //! place. Returns false and leaves `out` alone when index >= model.leg_count.
   static bool from_model(const RobotModel& model, uint8_t index, AnyLeg& out) {
     if (index >= model.leg_count || index >= kMaxLegs) return false;
-    out = constant(model, index);
-    out.mount_trig();
+    const LegModel& lm = model.legs[index];
+    const LinkLengths& k = model.links;
+    out.kind_ = model.kind;
+    out.side_ = lm.side;
+    out.mount_ = mount_of(model, index);
+    switch (model.kind) {
+      case LegKind::kSprawl:
+        return make_leg(out.legs_.sprawl, k, lm);
+      case LegKind::kPlanar:
+        return make_leg(out.legs_.planar, k, lm);
+      case LegKind::kCoxaFemurTibia:
+        return make_leg(out.legs_.cft, k, lm);
+      case LegKind::kAbduction:
+        return make_leg(out.legs_.abduction, k, lm);
+    }
     return true;
   }
-
-  //! from_model()'s leg as a constant, but for the mount's cos and sin (left
-  //! 0 until mount_trig()). An index past the legs gives the default leg.
-  static constexpr AnyLeg constant(const RobotModel& model, uint8_t index) {
-    return index >= model.leg_count || index >= kMaxLegs ? AnyLeg(LegKind::kSprawl, BodySide::kLeft, LegMount<S>{Vec3<S>(), S(0), S(0), S(0)}, Legs())
-               : AnyLeg(model.kind, model.legs[index].side,
-                        LegMount<S>{vec_of(model.legs[index].mount_mm),
-                                    deg_to_rad<S>(model.legs[index].mount_yaw_deg), S(0), S(0)},
-                        constant_legs(model, model.legs[index]));
+  //! Where leg `index` of `model` is mounted (index < model.leg_count).
+  static LegMount<S> mount_of(const RobotModel& model, uint8_t index) {
+    return LegMount<S>::make(Vec3<S>::from(model.legs[index].mount_mm), deg_to_rad<S>(model.legs[index].mount_yaw_deg));
   }
-  //! The leg with its mount's cos and sin (constant()'s legs).
-  void mount_trig() { mount_ = LegMount<S>::make(mount_.origin_mm, mount_.yaw_rad); }
 
   LegKind kind() const { return kind_; }
   uint8_t dof() const { return dof_of(kind_); }
@@ -126,6 +131,26 @@ class AnyLeg {
     }
     return l;
   }
+  // Each leg type from the model's links and leg, out of line: one type's
+  // temporaries at a time on the AVR's start-up stack.
+  STRIDER_NOINLINE static bool make_leg(SprawlLeg<S>& to, const LinkLengths& k, const LegModel& lm) {
+    to = SprawlLeg<S>::make(scalar<S>(k.l1_mm), scalar<S>(k.l2_mm), limits_of<2>(lm));
+    return true;
+  }
+  STRIDER_NOINLINE static bool make_leg(PlanarLeg<S>& to, const LinkLengths& k, const LegModel& lm) {
+    to = PlanarLeg<S>::make(scalar<S>(k.l1_mm), scalar<S>(k.l2_mm), limits_of<2>(lm));
+    return true;
+  }
+  STRIDER_NOINLINE static bool make_leg(CoxaFemurTibiaLeg<S>& to, const LinkLengths& k, const LegModel& lm) {
+    to = CoxaFemurTibiaLeg<S>::make(scalar<S>(k.d1_mm), scalar<S>(k.l1_mm), scalar<S>(k.l2_mm), scalar<S>(k.l3_mm),
+                                    limits_of<3>(lm));
+    return true;
+  }
+  STRIDER_NOINLINE static bool make_leg(AbductionLeg<S>& to, const LinkLengths& k, const LegModel& lm) {
+    to = AbductionLeg<S>::make(scalar<S>(k.l1_mm), scalar<S>(k.l2_mm), scalar<S>(k.l3_mm), limits_of<3>(lm),
+                               lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight);
+    return true;
+  }
   template <uint8_t N>
   static void copy_limits(const JointLimits<S, N>& from, JointLimits<S, kMaxDof>& to) {
     for (uint8_t j = 0; j < N; ++j) to.lo[j] = from.lo[j], to.hi[j] = from.hi[j];
@@ -190,44 +215,13 @@ class AnyLeg {
   }
 
   // One leg of the four kinds; kind_ says which member is live.
-  template <LegKind kKind>
-  struct KindTag {};
   union Legs {
-    constexpr Legs() : sprawl() {}
-    constexpr Legs(const SprawlLeg<S>& l, KindTag<LegKind::kSprawl>) : sprawl(l) {}
-    constexpr Legs(const PlanarLeg<S>& l, KindTag<LegKind::kPlanar>) : planar(l) {}
-    constexpr Legs(const CoxaFemurTibiaLeg<S>& l, KindTag<LegKind::kCoxaFemurTibia>) : cft(l) {}
-    constexpr Legs(const AbductionLeg<S>& l, KindTag<LegKind::kAbduction>) : abduction(l) {}
+    Legs() : sprawl() {}
     SprawlLeg<S> sprawl;
     PlanarLeg<S> planar;
     CoxaFemurTibiaLeg<S> cft;
     AbductionLeg<S> abduction;
   };
-
-  constexpr AnyLeg(LegKind kind, BodySide side, const LegMount<S>& mount, const Legs& legs)
-      : kind_(kind), side_(side), mount_(mount), legs_(legs) {}
-  // Vec3<S>::from(), as a constant.
-  static constexpr Vec3<S> vec_of(const Vec3<float>& v) {
-    return Vec3<S>(scalar<S>(double(v.x)), scalar<S>(double(v.y)), scalar<S>(double(v.z)));
-  }
-  // The leg types of `model`.
-  static constexpr Legs constant_legs(const RobotModel& model, const LegModel& lm) {
-    return model.kind == LegKind::kSprawl
-               ? Legs(SprawlLeg<S>::make(scalar<S>(model.links.l1_mm), scalar<S>(model.links.l2_mm), limits_of<2>(lm)),
-                      KindTag<LegKind::kSprawl>())
-           : model.kind == LegKind::kPlanar
-               ? Legs(PlanarLeg<S>::make(scalar<S>(model.links.l1_mm), scalar<S>(model.links.l2_mm), limits_of<2>(lm)),
-                      KindTag<LegKind::kPlanar>())
-           : model.kind == LegKind::kCoxaFemurTibia
-               ? Legs(CoxaFemurTibiaLeg<S>::make(scalar<S>(model.links.d1_mm), scalar<S>(model.links.l1_mm),
-                                                 scalar<S>(model.links.l2_mm), scalar<S>(model.links.l3_mm),
-                                                 limits_of<3>(lm)),
-                      KindTag<LegKind::kCoxaFemurTibia>())
-               : Legs(AbductionLeg<S>::make(scalar<S>(model.links.l1_mm), scalar<S>(model.links.l2_mm),
-                                            scalar<S>(model.links.l3_mm), limits_of<3>(lm),
-                                            lm.side == BodySide::kLeft ? LegSide::kLeft : LegSide::kRight),
-                      KindTag<LegKind::kAbduction>());
-  }
 
   LegKind kind_;
   BodySide side_;

@@ -1,7 +1,7 @@
 //! A build's profile: the compile-time choices that size and shape its
 //! walker, servo stage and RobotApp, given to them as one template argument.
 //! HostProfile is every host build's default; a firmware's is its model's
-//! (control/firmware_profile.h), which also holds the model's constants in flash.
+//! (control/firmware_profile.h).
 #ifndef STRIDER_ROBOTS_BUILD_PROFILE_H
 #define STRIDER_ROBOTS_BUILD_PROFILE_H
 
@@ -25,12 +25,6 @@ struct HostProfile {
   static constexpr uint8_t kJoints = kMaxLegs * kMaxLegDof;  //!< most servos driven
   //! Velocity limits by the IK search, strides in RAM (else stored, in flash).
   static constexpr bool kSearch = true;
-  //! Which of the model's constants the profile holds (else built at start-up).
-  static constexpr bool kStoredConfig = false;
-  static constexpr bool kStoredLegs = false;
-  static constexpr bool kStoredChannels = false;
-  static constexpr bool kStoredGait = false;
-  static constexpr uint16_t kAvoidClearMm = 0;  //!< 0: avoid_clear_mm() of the model at start-up
 };
 
 }  // namespace strider

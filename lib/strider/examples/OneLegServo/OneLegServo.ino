@@ -30,13 +30,9 @@ constexpr unsigned long kFrameUs = 20000ul;
 constexpr int kHalfCycleFrames = 50;      // 1 s one way, 1 s back
 constexpr float kLineHalfMm = 20.0f;      // the foot runs y = -20..+20 mm
 
-// The leg and its servo channels, built from the model at compile time.
-const AnyLeg<Fixed> kLegSolver = AnyLeg<Fixed>::constant(kHexapod18, kLeg);
-const ServoChannel<Fixed> kChannels[3] = {
-    joint_channel_constant<Fixed>(kHexapod18, kLeg, 0),
-    joint_channel_constant<Fixed>(kHexapod18, kLeg, 1),
-    joint_channel_constant<Fixed>(kHexapod18, kLeg, 2),
-};
+// The leg and its servo channels, built from the model.
+AnyLeg<Fixed> legSolver;
+ServoChannel<Fixed> channels[3];
 // The standing foot in the leg frame [mm] (x 120, y 0, z -90).
 constexpr Vec3<float> kStand = body_point_in_leg(kHexapod18.legs[kLeg], kHexapod18.legs[kLeg].stand_mm);
 
@@ -47,6 +43,8 @@ int frame;
 
 void setup() {
   Serial.begin(115200);
+  AnyLeg<Fixed>::from_model(kHexapod18, kLeg, legSolver);
+  for (uint8_t j = 0; j < 3; ++j) channels[j] = make_joint_channel<Fixed>(kHexapod18, kLeg, j);
   pwm.begin();
   // Strider computes the ticks from the oscillator (pca9685_timing.h); the
   // frequency given to the library brings back exactly Strider's prescale.
@@ -69,12 +67,12 @@ void loop() {
 
   AnyLeg<Fixed>::Joints q;
   Vec3<Fixed> reached;
-  const IkStatus status = kLegSolver.ik(target, q, reached);
+  const IkStatus status = legSolver.ik(target, q, reached);
   if (status == IkStatus::kUnreachable) return;  // keep the last pose
 
   uint16_t ticks[3];
   for (uint8_t j = 0; j < 3; ++j) {
-    const ServoCommand cmd = map_joint(kChannels[j], q[j], Fixed(0), timing);
+    const ServoCommand cmd = map_joint(channels[j], q[j], Fixed(0), timing);
     ticks[j] = cmd.ticks;
     pwm.setPWM(cmd.channel % kPcaChannelsPerBoard, 0, cmd.ticks);
   }
