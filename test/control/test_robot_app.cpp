@@ -698,14 +698,15 @@ TEST(RobotAppEeprom, BootNoticeNamesTheRecord) {
 
 namespace {
 
-// The flash copies of the state names equal the host-side to_string().
+// The flash copies of the state names are the protocol's (docs/protocol.md)
+// and equal the host-side to_string() where there is one.
 TEST(FlashNames, EqualToString) {
-  for (uint8_t i = 0; i < 6; ++i)
-    EXPECT_STREQ(strider::to_flash(strider::AvoidState(i)).p, strider::to_string(strider::AvoidState(i)));
-  for (uint8_t i = 0; i < 4; ++i)
-    EXPECT_STREQ(strider::to_flash(strider::RobotMode(i)).p, strider::to_string(strider::RobotMode(i)));
-  for (uint8_t i = 0; i < 7; ++i)
-    EXPECT_STREQ(strider::to_flash(strider::SettingsStatus(i)).p, strider::to_string(strider::SettingsStatus(i)));
+  const char* const avoid[] = {"pass", "forward", "sidestep", "clearing", "blocked", "sensor_fault"};
+  for (uint8_t i = 0; i < 6; ++i) EXPECT_STREQ(strider::to_flash(strider::AvoidState(i)).p, avoid[i]);
+  const char* const mode[] = {"standing", "walking", "relaxed", "calibrating"};
+  for (uint8_t i = 0; i < 4; ++i) EXPECT_STREQ(strider::to_flash(strider::RobotMode(i)).p, mode[i]);
+  const char* const settings[] = {"ok", "empty", "corrupt", "old_version", "invalid", "write_failed", "no_space"};
+  for (uint8_t i = 0; i < 7; ++i) EXPECT_STREQ(strider::to_flash(strider::SettingsStatus(i)).p, settings[i]);
   for (uint8_t i = 0; i < 6; ++i)
     EXPECT_STREQ(strider::text::to_flash(strider::GaitState(i)).p, strider::to_string(strider::GaitState(i)));
   for (uint8_t i = 0; i < 4; ++i)

@@ -61,8 +61,6 @@ enum class AvoidState : uint8_t {
 
 constexpr char kAvoidStateNames[] STRIDER_PROGMEM = "pass\0forward\0sidestep\0clearing\0blocked\0sensor_fault";
 inline FlashText to_flash(AvoidState s) { return flash_name(kAvoidStateNames, 6, uint8_t(s)); }
-//! The name on a host (where flash is ordinary memory).
-inline const char* to_string(AvoidState s) { return to_flash(s).p; }
 
 class Avoidance {
  public:

@@ -36,8 +36,6 @@ enum class RobotMode : uint8_t { kStanding = 0, kWalking = 1, kRelaxed = 2, kCal
 
 constexpr char kRobotModeNames[] STRIDER_PROGMEM = "standing\0walking\0relaxed\0calibrating";
 inline FlashText to_flash(RobotMode m) { return flash_name(kRobotModeNames, 4, uint8_t(m)); }
-//! The name on a host (where flash is ordinary memory).
-inline const char* to_string(RobotMode m) { return to_flash(m).p; }
 
 //! `err <e> <reason>`.
 inline void write_error(ReplyWriter& w, ControlError e, FlashText reason) { write_error(w, uint8_t(e), reason); }

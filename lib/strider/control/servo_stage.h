@@ -63,9 +63,8 @@ class ServoStage {
   //! does not fit.
   bool configure(const RobotModel& model, const RobotModel* source = nullptr, ModelMemory where = ModelMemory::kRam) {
     // Joint k = leg dof + j: slot j when the tick map has dof slots, for
-    // legs of one geometry (the same limits: one range per slot); fit_legs()
-    // configures leg 0 first.
-    // Slots: none, or one per joint of a leg for legs of one geometry.
+    // legs of one geometry (the same limits: one range per slot), else none;
+    // fit_legs() configures leg 0 first.
     const bool fits = model.joint_count() <= N && (kSlots == 0 || (kSlots == model.dof() && leg_solver_count(model) == 1));
     count_ = fits ? channel_map_count(model) : uint8_t(0);
     model_ = source != nullptr ? source : &model;

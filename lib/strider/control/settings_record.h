@@ -28,8 +28,6 @@ enum class SettingsStatus : uint8_t {
 constexpr char kSettingsStatusNames[] STRIDER_PROGMEM =
     "ok\0empty\0corrupt\0old_version\0invalid\0write_failed\0no_space";
 inline FlashText to_flash(SettingsStatus s) { return flash_name(kSettingsStatusNames, 7, uint8_t(s)); }
-//! The name on a host (where flash is ordinary memory).
-inline const char* to_string(SettingsStatus s) { return to_flash(s).p; }
 
 constexpr uint8_t kSettingsMagic0 = 'S';
 constexpr uint8_t kSettingsMagic1 = 'T';

@@ -98,22 +98,12 @@ class WalkerMotion {
   //! The servos went limp: the robot is (physically) down. Starts over sitting,
   //! keeping gait, body pose and height, so that re-enabled servos meet the pose
   //! the legs are nearest to and stand up from there.
-  void sit_now() {
-    have_command_ = false;
-    const GaitTable gait = walker_.engine().gait();  // a copy: restart() overwrites the engine's
-    walker_.restart(gait, walker_.engine().config(), true);
-    walker_.engine().set_body_offsets(offsets_);
-  }
+  void sit_now() { restart(true); }
 
   //! The servos hold a standing robot (the boards kept their pulses through
   //! an MCU reset): starts over standing, so that the legs go from where they
   //! are to the standing pose instead of down to the sitting one.
-  void stand_now() {
-    have_command_ = false;
-    const GaitTable gait = walker_.engine().gait();
-    walker_.restart(gait, walker_.engine().config(), false);
-    walker_.engine().set_body_offsets(offsets_);
-  }
+  void stand_now() { restart(false); }
 
   //! Rises from sitting (no effect unless sitting).
   void stand_up() { walker_.engine().stand_up(); }
@@ -196,6 +186,13 @@ class WalkerMotion {
       have_command_ = false;
       set_velocity(last_);
     }
+  }
+
+  void restart(bool sitting) {
+    have_command_ = false;
+    const GaitTable gait = walker_.engine().gait();  // a copy: restart() overwrites the engine's
+    walker_.restart(gait, walker_.engine().config(), sitting);
+    walker_.engine().set_body_offsets(offsets_);
   }
 
   //! The speed correction of the model and the gait in force.
