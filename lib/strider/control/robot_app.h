@@ -35,9 +35,7 @@ namespace strider {
 // trims change).
 
 //! P: the build profile (robots/build_profile.h): the walker's and the
-//! servo stage's shape, and which of the model's constants it holds in
-//! flash (a firmware's, control/firmware_profile.h); the others are built
-//! from the model at start-up.
+//! servo stage's shape (a firmware's: control/firmware_profile.h).
 template <typename S, typename Output, typename Store, typename P = HostProfile<S>>
 class RobotApp {
   class Sink;
