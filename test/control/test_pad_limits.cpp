@@ -35,7 +35,7 @@ const PadCase kCases[] = {
     {&strider::kHexapod18, 155.0, 36.0},  // tripod: 161 mm/s, turns at most 37.4 deg/s
     {&strider::kSpider12, 27.0, 12.0},    // walk: 28.0-28.4 mm/s, 12.5 deg/s at most
     {&strider::kMammal8, 20.0, 60.0},     // walk: 21.3-21.5 mm/s at most; turning not listed
-    {&strider::kDog12, 110.0, 60.0},      // trot: ~115 mm/s at most; turning not listed
+    {&strider::kDog12, 120.0, 20.0},      // crawl: 116-135 mm/s, turns at most ~21 deg/s
 };
 
 TEST(PadLimits, FullSliderIsTheSpeedTheModelMakes) {

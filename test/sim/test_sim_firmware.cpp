@@ -243,3 +243,14 @@ TEST(SimFirmware, Spider12PadMakesItsCommandedSpeed) {
   expect_pad("spider12", STRIDER_SIM_SPIDER12_ELF, 'q', 'F', 27.0);
   expect_pad("spider12", STRIDER_SIM_SPIDER12_ELF, 'q', 'G', 12.0);
 }
+
+// dog12's crawl (its default: a trot tips its tall body over the diagonal)
+// on the pad: its 100 % is the crawl's top, 120 mm/s and 20 deg/s
+// (speed_correction.h); turning at 20 % and both ways at 100 %, within
+// 10 %, and under 10 % sideways at 100 %.
+TEST(SimFirmware, Dog12PadMakesItsCommandedSpeed) {
+  expect_pad("dog12", STRIDER_SIM_DOG12_ELF, '2', 'G', 4.0);
+  const Steady full = expect_pad("dog12", STRIDER_SIM_DOG12_ELF, 'q', 'F', 120.0);
+  EXPECT_LT(std::fabs(full.lateral_mm), 0.10 * full.distance_mm);
+  expect_pad("dog12", STRIDER_SIM_DOG12_ELF, 'q', 'G', 20.0);
+}

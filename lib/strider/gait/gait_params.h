@@ -49,8 +49,8 @@ constexpr GaitParams kGaitParams[kRobotCount] STRIDER_PROGMEM = {
     // or 15 mm the faster shift slides the feet (docs/simulator.md).
     {"mammal8", "walk", SwingShape::kEllipse, 20.0f, 30.0f, 2.0f, 0.0f, 5.0f, 0.0f, 0.0f, 11.0f, 20.0f, 40.0f,
      1.5f},
-    // dog12 (seed 001): seed 001's own swing path is a rectangle (section 3.2).
-    {"dog12", "trot", SwingShape::kRectangle, 50.0f, 120.0f, 1.2f, 0.0f, 15.0f, 0.0f, 0.0f, 10.0f, 40.0f,
+    // dog12 (seed 001): the seed's rectangle swing (section 3.2); it crawls (a trot tips: docs/simulator.md).
+    {"dog12", "crawl", SwingShape::kRectangle, 50.0f, 120.0f, 1.0f, 0.0f, 15.0f, 0.0f, 0.0f, 10.0f, 40.0f,
      100.0f, 2.0f},
     {"hexapod18", "tripod", SwingShape::kCycloid, 30.0f, 60.0f, 1.0f, 0.0f, 5.0f, 0.0f, 0.0f, 10.0f, 0.0f,
      50.0f, 1.5f},

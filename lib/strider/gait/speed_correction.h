@@ -53,9 +53,9 @@ constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGM
     // mammal8 walk, not corrected: walk 2/4/10/15.5/20 -> 1.5/3.0/9.5/15.9/
     // 21.4 mm/s, its limit 21.4 mm/s; turning in place it hardly moves.
     {"mammal8", "walk", 10000, 10000, 0, 200, 0},
-    // dog12 trot, not corrected: walk 77.5/155 -> 72.9/114.6 mm/s; its turn
-    // rate falls with the command (6/12/30 -> 4.8/6.5/1.4 deg/s).
-    {"dog12", "trot", 10000, 10000, 0, 1100, 0},
+    // dog12 crawl: the gait at 17/30/70/137 mm/s -> 8.9/24.1/69/115.5 mm/s;
+    // turn 2.2/4.4/11/22 -> 1.4/3.9/9/19.4 deg/s (its limits 144, 23.5).
+    {"dog12", "crawl", 9000, 9100, 35, 1200, 200},
 };
 
 //! The entry of (robot, gait) into *c; false for a pair not listed.
