@@ -55,7 +55,7 @@ struct NullSink {
   strider::LevelCalStart start_level_cal() { return strider::LevelCalStart::kNoImu; }
   void apply_settings(const strider::Settings& s) { g_sink = uint16_t(s.pwm_hz); }
   void write_status(strider::ReplyWriter& w) { w.text(" sink=null"); }
-  const char* gait_names() const { return kNullGaits; }
+  void write_gait_names(strider::ReplyWriter& w) const { w.text(strider::FlashText{kNullGaits}); }
   const char* gait_name() const { return "trot"; }
   bool tune(strider::TuneParam, int32_t v) { return v > 0; }
   strider::TuneRange tune_range(strider::TuneParam) const { return strider::TuneRange{1, 2}; }

@@ -183,7 +183,10 @@ std::string error_reply(const std::string& line) {
   if (ev.size() != 1u || ev[0].result != ParseResult::kError) return "no error";
   char buf[strider::kMaxReplyBytes];
   strider::ReplyWriter w(buf, sizeof buf);
-  strider::write_parse_error(w, ev[0].command, "walk trot pace crawl");
+  struct Gaits {
+    void write_gait_names(strider::ReplyWriter& to) const { to.text("walk trot pace crawl"); }
+  } gaits;
+  strider::write_parse_error(w, ev[0].command, &gaits);
   return w.c_str();
 }
 

@@ -534,7 +534,10 @@ TYPED_TEST(RobotAppTest, HelpAndRefusalsNameWhatTheModelReaches) {
       r.send(1, line + "\n");
       return r.lines.on(1).back();
     };
-    const std::string gaits = m->leg_count == 6 ? "tripod ripple wave" : "walk trot pace crawl";
+    // mammal8's presets (gait_presets.h) follow its gaits.
+    const std::string gaits = m->leg_count == 6                      ? "tripod ripple wave"
+                              : std::strcmp(m->name, "mammal8") == 0 ? "walk trot pace crawl walk10 trot10 pace10"
+                                                                     : "walk trot pace crawl";
     const std::string heights = std::to_string(reach.height_min_mm) + ".." + std::to_string(reach.height_max_mm);
     const std::string help = reply("help");
     EXPECT_NE(help.find("; gaits " + gaits + "; height " + heights), std::string::npos) << help;

@@ -112,7 +112,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser>, public Mot
   STRIDER_NOINLINE bool handle(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
     if (r == ParseResult::kNothing) return false;
     if (r == ParseResult::kError) {
-      write_parse_error(w, c, sink_.gait_names());
+      write_parse_error(w, c, &sink_);
       return true;
     }
     if (c.kind != CommandKind::kRcEcho) deadman_.feed(now_ms);
@@ -242,7 +242,7 @@ class Controller : private controller_detail::ParserSlot<kOwnParser>, public Mot
       case CommandKind::kHelp: {
         const MotionReach& r = sink_.reach();
         w.text(FlashText{text::kOkHelp_}).text(FlashText{text::kCommandList});
-        w.text(FlashText{text::kHelpGaits_}).text(FlashText{sink_.gait_names()});
+        sink_.write_gait_names(w.text(FlashText{text::kHelpGaits_}));
         w.format(FlashText{text::kHelpHeightFmt}, r.height_min_mm, r.height_max_mm);
         return;
       }

@@ -56,9 +56,15 @@ constexpr char kGait_[] STRIDER_PROGMEM = "gait ";
 
 }  // namespace text
 
+//! A sink that names no gaits (write_parse_error() without one).
+struct NoGaitNames {
+  void write_gait_names(ReplyWriter&) const {}
+};
+
 //! `err <code> <reason>: <valid values>` for a parser error of c; gaits:
-//! the model's gait names, for `gait`'s NAME.
-inline void write_parse_error(ReplyWriter& w, const Command& c, const char* gaits_in_flash = nullptr) {
+//! what names the model's gaits for `gait`'s NAME (a MotionSink, motion_modes.h).
+template <typename Gaits = NoGaitNames>
+void write_parse_error(ReplyWriter& w, const Command& c, const Gaits* gaits = nullptr) {
   const uint8_t code = uint8_t(c.error);
   const bool empty = c.error == ParseError::kUnknownCommand && c.usage == Usage::kEmptyLine;
   write_error(w, code, empty ? FlashText{text::kEmptyLine} : flash_name(kParseErrorNames, kParseErrorCount, code));
@@ -67,8 +73,8 @@ inline void write_parse_error(ReplyWriter& w, const Command& c, const char* gait
     w.text(FlashText{text::kCommandList});
   } else if (code >= uint8_t(ParseError::kLineTooLong)) {
     w.text(flash_name(text::kLinkErrorHints, text::kLinkErrorHintCount, uint8_t(code - uint8_t(ParseError::kLineTooLong))));
-  } else if (c.usage == Usage::kGait && gaits_in_flash != nullptr) {
-    w.text(FlashText{text::kGait_}).text(FlashText{gaits_in_flash});
+  } else if (c.usage == Usage::kGait && gaits != nullptr) {
+    gaits->write_gait_names(w.text(FlashText{text::kGait_}));
   } else if (c.usage != Usage::kNone) {
     w.text(flash_name(text::kUsageHints, text::kUsageHintCount, uint8_t(c.usage)));
   } else {

@@ -4,7 +4,9 @@
 #define STRIDER_CONTROL_GAIT_COMMANDS_H
 
 #include <stdint.h>
+#include <string.h>
 
+#include "../gait/gait_presets.h"
 #include "../gait/gait_tuning.h"
 #include "command.h"
 #include "reply_texts.h"
@@ -12,11 +14,21 @@
 
 namespace strider {
 
+//! The gait presets of the model called `robot` (gait_presets.h), each
+//! after a space.
+inline void write_gait_presets(ReplyWriter& w, const char* robot) {
+  GaitPreset p;
+  for (uint8_t i = 0; robot != nullptr && i < kGaitPresetCount; ++i) {
+    flash_copy(&p, &kGaitPresets[i], sizeof p);
+    if (strcmp(p.robot, robot) == 0) w.ch(' ').text(p.name);
+  }
+}
+
 template <typename Sink>
 void apply_gait(Sink& sink, const Command& c, ReplyWriter& w) {
   if (!sink.set_gait(c.word)) {
     write_error(w, ControlError::kUnknownGait, FlashText{text::kUnknownGait_});
-    w.text(FlashText{sink.gait_names()});
+    sink.write_gait_names(w);
     return;
   }
   w.text(FlashText{text::kOkGait_}).text(c.word);

@@ -15,7 +15,7 @@
 //!   bool set_body_height(int32_t height); // [0.1 mm]; false: out of the robot's range
 //!   bool set_level(bool on);              // hold the body level; false: no IMU
 //!   LevelCalStart start_level_cal();      // `cal level` (kStarted: level_cal_done() replies)
-//!   const char* gait_names();             // the robot's gaits, space-separated, in flash
+//!   void write_gait_names(ReplyWriter& w);  // its gaits and gait presets, space-separated
 //!   const MotionReach& reach();           // heights and angles it reaches
 //!   void apply_settings(const Settings& s);  // trims, oscillator, PWM frequency
 //!   void write_status(ReplyWriter& w);    // appends its own ` key=value` fields to `status`

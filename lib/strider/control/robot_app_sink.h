@@ -78,7 +78,10 @@ class RobotAppSink {
   bool set_body_height(int32_t h) { return app_.motion_.set_body_height(h); }
   bool set_level(bool on) { return app_.sensing_.set_level(on, app_.motion_); }
   LevelCalStart start_level_cal() { return app_.sensing_.start_level_cal(app_.motion_, app_.stage_.all_on()); }
-  const char* gait_names() const { return strider::gait_names(app_.motion_.walker().leg_count()); }
+  void write_gait_names(ReplyWriter& w) const {
+    w.text(FlashText{strider::gait_names(app_.motion_.walker().leg_count())});
+    write_gait_presets(w, app_.motion_.robot());
+  }
   const MotionReach& reach() const { return app_.motion_.reach(); }
   void apply_settings(const Settings& s) { app_.stage_.set_settings(s); }
   void write_status(ReplyWriter& w) {

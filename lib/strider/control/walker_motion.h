@@ -52,6 +52,7 @@ class WalkerMotion {
   Walker<S, P>& walker() { return walker_; }
   const Walker<S, P>& walker() const { return walker_; }
   const GaitTable& gait() const { return walker_.engine().gait(); }
+  const char* robot() const { return robot_; }  //!< the model's name; nullptr before configure()
 
   //! Protocol velocity -> engine command (the controller applied the speed %).
   //! An unchanged one (an RC button the phone app repeats) is not planned

@@ -68,7 +68,7 @@ struct FakeMotionSink {
   }
   // What it pretends the legs reach: 10..150 mm (set_body_height() above).
   strider::MotionReach reach_mm_deg{10, 150, {-20, -15, -30}, {20, 12, 30}};
-  const char* gait_names() const { return "walk trot pace crawl"; }
+  void write_gait_names(strider::ReplyWriter& w) const { w.text("walk trot pace crawl"); }
   // Live gait parameters: it takes step heights of 1.00..20.00 mm and any
   // other value, and records what it took.
   int32_t tuned[strider::kTuneParamCount] = {};
