@@ -30,7 +30,6 @@ struct DlsOptions {
   }
 };
 
-//! What a solve did (optional output).
 template <typename S>
 struct DlsReport {
   uint16_t iterations = 0;  //!< steps tried

@@ -34,7 +34,6 @@ struct ServoSpec {
   float mass_g;             //!< [g]
 };
 
-//! The figures of a part (6 V values, see the file comment).
 constexpr ServoSpec servo_spec(ServoPart part) {
   // SG90: 1.8 kg cm and 0.1 s/60 deg are its 4.8 V figures (no 6 V rating).
   return part == ServoPart::kSg90     ? ServoSpec{"SG90", 180.0f, 500, 2500, 1.8f, 0.10f, 9.0f}
