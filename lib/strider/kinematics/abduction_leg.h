@@ -1,10 +1,8 @@
 //! AbductionLeg: the 3-DOF dog leg of seed 001 (Shahriar): abduction t1,
 //! hip t2, knee t3; abduction link La at 90 deg to the femur Lb, tibia Lc.
 //! Origin on the abduction axis x (forward), y left, z up; t1 in [0, 2 pi)
-//! is the angle of La about +x from +y. The angle conventions, FK, IK (the
-//! two-link problem of two_link.h in the leg plane, no asin/acos), the
-//! clamping of seed 001's math_error_handler and where Strider departs from
-//! the seed: docs/kinematics.md, "3-DOF abduction leg".
+//! is the angle of La about +x from +y. Conventions, FK, IK and where Strider
+//! departs from the seed: docs/kinematics.md, "3-DOF abduction leg".
 #ifndef STRIDER_KINEMATICS_ABDUCTION_LEG_H
 #define STRIDER_KINEMATICS_ABDUCTION_LEG_H
 
@@ -76,8 +74,8 @@ struct AbductionLeg {
   S la_fine_sq;             //!< La^2 in fine units
   leg_ik::TwoLink<S> link;  //!< femur and tibia in working units
 
-  //! Fine units (reach in [32, 64)) for A^2 - La^2, which cancels when the
-  //! foot is level with the hip (A near La): 8x finer than working units.
+  //! Fine units, 8x finer than working units, for A^2 - La^2, which cancels
+  //! when the foot is level with the hip.
   static constexpr int8_t kFineBits = 3;
 
   //! The leg with its cached working-unit constants. Always build legs here.
@@ -147,8 +145,7 @@ struct AbductionLeg {
       sol[0] += two_pi<S>();
       if (!(sol[0] < two_pi<S>())) sol[0] = S(0);  // -tiny + 2 pi rounds to 2 pi
     }
-    // In the leg plane: backward = -x, down = d = p (the seed's -z), and
-    // D^2 = x^2 + p^2 with p^2 already at hand (fine units^2 -> units^2).
+    // In the leg plane: backward = -x, down = p; D^2 = x^2 + p^2.
     const S back = units::to_unit(-target.x, unit_shift);
     const S d2 = back * back + units::to_unit(p_sq > S(0) ? p_sq : S(0), int8_t(2 * kFineBits));
     if (link.solve(back, units::to_unit(p, kFineBits), d2, KneeBranch::kPositive, sol[1], sol[2])) clamped = true;

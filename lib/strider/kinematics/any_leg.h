@@ -27,8 +27,7 @@ class AnyLeg {
   //! A zero-length sprawl leg at the body centre; assign from from_model().
   AnyLeg() : kind_(LegKind::kSprawl), side_(BodySide::kLeft), mount_{Vec3<S>(), S(0), S(1), S(0)} {}
 
-  //! Builds leg `index` of `model` (converting mm/deg to mm/rad in S) in
-  //! place. Returns false and leaves `out` alone when index >= model.leg_count.
+  //! Builds leg `index` of `model` in place; false, `out` untouched, past leg_count.
   static bool from_model(const RobotModel& model, uint8_t index, AnyLeg& out) {
     if (index >= model.leg_count || index >= kMaxLegs) return false;
     const LegModel& lm = model.legs[index];
@@ -73,7 +72,6 @@ class AnyLeg {
     return l;
   }
 
-  //! True when every used joint lies inside its limits.
   bool within_limits(const Joints& q) const {
     const JointLimits<S, kMaxDof> l = limits();
     for (uint8_t j = 0; j < dof(); ++j)
@@ -86,9 +84,8 @@ class AnyLeg {
     return visit([&q](const auto& leg) { return leg.fk(narrow(q, leg.limits)); }, Vec3<S>());
   }
 
-  //! IK in the leg frame: the leg type's solver. Writes q and reached [mm]
-  //! unless the status is kUnreachable. Out of line: a firmware's LTO would
-  //! otherwise copy the dispatch into each caller.
+  //! IK in the leg frame; writes q and reached [mm] unless kUnreachable. Out
+  //! of line: a firmware's LTO would otherwise copy the dispatch into each caller.
   STRIDER_NOINLINE IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
                                const IkOptions<S>& opt = IkOptions<S>()) const {
     return visit([&](const auto& leg) { return solve(leg, target, q, reached, opt); }, IkStatus::kUnreachable);
@@ -96,13 +93,11 @@ class AnyLeg {
 
   //! ik_body()'s fast path alone, for the walker's tick: true, with q
   //! written, when the leg solved the body-frame target [mm] exactly inside
-  //! the joint limits; false leaves q alone (then ik() decides). Fixed
-  //! coxa/femur/tibia legs only (leg_ik::cft_solve_turned()).
+  //! the joint limits; false leaves q alone. Fixed coxa/femur/tibia legs only.
   STRIDER_ALWAYS_INLINE bool ik_body_fast(const Vec3<S>& target_body, Joints& q, const IkOptions<S>& opt) const {
     return ik_body_fast(mount_, target_body, q, opt);
   }
-  //! The same for this solver placed at another mount (legs of one geometry
-  //! share one solver and keep their own mounts).
+  //! The same for this solver placed at another mount.
   STRIDER_ALWAYS_INLINE bool ik_body_fast(const LegMount<S>& mount, const Vec3<S>& target_body, Joints& q,
                                           const IkOptions<S>& opt) const {
     return kind_ == LegKind::kCoxaFemurTibia && !(opt.max_clamp_mm < S(0)) &&
@@ -131,8 +126,7 @@ class AnyLeg {
     }
     return l;
   }
-  // Each leg type from the model's links and leg, out of line: one type's
-  // temporaries at a time on the AVR's start-up stack.
+  // Out of line: one leg type's temporaries at a time on the AVR's start-up stack.
   STRIDER_NOINLINE static bool make_leg(SprawlLeg<S>& to, const LinkLengths& k, const LegModel& lm) {
     to = SprawlLeg<S>::make(scalar<S>(k.l1_mm), scalar<S>(k.l2_mm), limits_of<2>(lm));
     return true;
@@ -201,8 +195,7 @@ class AnyLeg {
     return s;
   }
 
-  // ik_body_fast(): Fixed coxa/femur/tibia legs only; differences in place
-  // (a Vec3 difference is an out-of-line call on the AVR).
+  // Differences in place: a Vec3 difference is an out-of-line call on the AVR.
   template <typename Leg>
   static bool body_fast(const Leg&, const LegMount<float>&, const Vec3<float>&, Joints&) {
     return false;
@@ -211,7 +204,7 @@ class AnyLeg {
   STRIDER_ALWAYS_INLINE static bool body_fast(const Leg& leg, const LegMount<Fixed>& m, const Vec3<Fixed>& p,
                                               Joints& q) {
     const Vec3<Fixed> d(sub_inline(p.x, m.origin_mm.x), sub_inline(p.y, m.origin_mm.y), sub_inline(p.z, m.origin_mm.z));
-    return leg_ik::cft_solve_turned(leg, d, m.yaw_rad, q);
+    return leg_ik::cft_solve_fast(leg, d, &m.yaw_rad, q);
   }
 
   // One leg of the four kinds; kind_ says which member is live.

@@ -1,8 +1,6 @@
 //! Body pose kinematics: move and tilt the body while the feet stay on the
 //! ground (seed 001 section 2.3 with algorithm 2; seed 000 eqs 9-11 are the
-//! translation-only case). A stance-frame foot p is p' = R^T (p - t) in the
-//! moved body frame, then in its leg frame through the mount (frames:
-//! docs/kinematics.md).
+//! translation-only case; frames: docs/kinematics.md).
 #ifndef STRIDER_KINEMATICS_BODY_POSE_H
 #define STRIDER_KINEMATICS_BODY_POSE_H
 
@@ -20,7 +18,6 @@ struct BodyPose {
   S yaw_rad;               //!< about z [rad]
   RotationOrder order;     //!< how R is composed (math/rotation.h)
 
-  //! The neutral pose: identity.
   static constexpr BodyPose zero() {
     return BodyPose{Vec3<S>(), S(0), S(0), S(0), RotationOrder::kZYX};
   }
@@ -43,10 +40,9 @@ Vec3<S> foot_in_body(const Transform<S>& body, const Vec3<S>& foot_stance_mm) {
   return body.apply_inverse(foot_stance_mm);
 }
 
-//! For `count` legs (4 or 6, any count works): each stance foot
-//! feet_stance_mm[i] in the moved body frame (optional feet_body_mm) and in
-//! its leg frame feet_leg_mm[i] through mounts[i]. Products stay below a few
-//! hundred mm, so Fixed does not overflow for robot-sized bodies.
+//! Each of `count` stance feet in the moved body frame (optional feet_body_mm)
+//! and in its leg frame through mounts[i] [mm]; robot-sized bodies keep Fixed
+//! products far from overflow.
 template <typename S>
 void body_pose_feet(const BodyPose<S>& pose, const Vec3<S>* feet_stance_mm, const LegMount<S>* mounts,
                     uint8_t count, Vec3<S>* feet_leg_mm, Vec3<S>* feet_body_mm = nullptr) {

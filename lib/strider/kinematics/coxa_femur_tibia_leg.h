@@ -1,11 +1,9 @@
 //! CoxaFemurTibiaLeg: the 3-DOF hexapod leg of seed 002 (Qingsheng and
 //! Andika 2018), also seed 004's hip yaw / hip elevation / knee leg.
-//! Origin on the coxa (yaw) axis, z up, x along the coxa at t1 = 0; d1 is the
-//! height of the femur axis, l1 the coxa, l2 the femur, l3 the tibia. t1 yaws
+//! Origin on the coxa (yaw) axis, z up, x along the coxa at t1 = 0. t1 yaws
 //! about z, t2 and t3 pitch femur and tibia, positive upward; all zero: leg
-//! stretched out horizontally. IK: t1 = atan2(py, px) (eq 12), then the
-//! two-link problem h = rho - l1, v = pz - d1 (eq 11), branch t3 <= 0 by
-//! default. On the yaw axis t1 is 0; a target inside the annulus' hole is
+//! stretched out. IK: t1 = atan2(py, px) (eq 12), then the two-link problem
+//! h = rho - l1, v = pz - d1 (eq 11); a target inside the annulus' hole is
 //! tried facing away (t1 + pi). Seed 004 as this leg: docs/kinematics.md.
 #ifndef STRIDER_KINEMATICS_COXA_FEMUR_TIBIA_LEG_H
 #define STRIDER_KINEMATICS_COXA_FEMUR_TIBIA_LEG_H
@@ -20,8 +18,8 @@ namespace leg_ik {
 //! "Leg IK fast path"): a kOk solve of a target off the yaw axis, in front of
 //! it and strictly inside the femur-tibia annulus; else false (and float).
 //! With yaw, the target is in axes turned by *yaw about z against the leg
-//! frame (cft_solve_turned()): t1 is its angle less *yaw, and only a solve
-//! inside the joint limits counts.
+//! frame (a walker's offset from the mount): t1 is its angle less *yaw, and
+//! only a solve inside the joint limits counts.
 template <typename Leg, typename S>
 bool cft_solve_fast(const Leg&, const Vec3<S>&, const S*, JointVector<S, 3>&) {
   return false;
@@ -55,13 +53,6 @@ STRIDER_NOINLINE_NOCLONE bool cft_solve_fast(const Leg& leg, const Vec3<Fixed>& 
   sol[1] = q[1];
   sol[2] = q[2];
   return true;
-}
-
-//! The fast path for a target d in axes turned by yaw about z against the
-//! leg frame (a walker's offset from the mount before the mount's yaw).
-template <typename Leg, typename S>
-STRIDER_ALWAYS_INLINE bool cft_solve_turned(const Leg& leg, const Vec3<S>& d, const S& yaw, JointVector<S, 3>& q) {
-  return cft_solve_fast(leg, d, &yaw, q);
 }
 
 }  // namespace leg_ik
@@ -103,8 +94,7 @@ struct CoxaFemurTibiaLeg {
   //! joint limits. Writes q and reached unless kUnreachable.
   IkStatus ik(const Vec3<S>& target, Joints& q, Vec3<S>& reached,
               const IkOptions<S>& opt = IkOptions<S>()) const {
-    // Fixed's fast path (within ik_general()'s bounds while max_clamp >= 0)
-    // writes q only when it succeeds.
+    // Fixed's fast path, within ik_general()'s bounds while max_clamp >= 0.
     if (!(opt.max_clamp_mm < S(0)) && leg_ik::cft_solve_fast(*this, target, static_cast<const S*>(nullptr), q)) {
       if (!leg_ik::limits_contain(limits, q)) return leg_ik::finish(*this, target, q, false, opt, q, reached);
       leg_ik::copy_point(target, reached);  // what finish() does for an exact solve inside the limits
@@ -150,9 +140,7 @@ struct CoxaFemurTibiaLeg {
     return leg_ik::finish(*this, target, sol, clamped, opt, q, reached);
   }
 
-  // The target is inside the hole of the femur-tibia annulus on the near side
-  // (h = rho - l1, D^2 = d2). Facing away (h = -rho - l1), is it nearer the
-  // annulus? [unit^2]
+  // For a target inside the annulus' hole: is facing away nearer? [unit^2]
   bool far_side_is_nearer(S d2_near, S d2_far) const {
     if (!(d2_far > link.outer2)) return true;
     const S miss_near = abs(link.a1 - link.a2) - sqrt(d2_near);

@@ -1,8 +1,7 @@
 //! DhChain: a serial chain of N <= 6 revolute joints in standard DH
-//! parameters (math/dh.h), with joint limits and a base transform that maps
-//! DH frame 0 into the chain's reference frame. Joint i turns about z of
-//! frame i-1; the tip is the origin of frame N, at base * A1(q1) * ... *
-//! AN(qN) (seed 002 eq 4, seed 000 eq 3).
+//! parameters (math/dh.h), with joint limits and a base transform (DH frame
+//! 0 in the chain's reference frame); the tip is the origin of frame N, at
+//! base * A1(q1) * ... * AN(qN) (seed 002 eq 4, seed 000 eq 3).
 #ifndef STRIDER_KINEMATICS_DH_CHAIN_H
 #define STRIDER_KINEMATICS_DH_CHAIN_H
 
@@ -26,7 +25,6 @@ class DhChain {
   using Joints = JointVector<S, N>;
   using Limits = JointLimits<S, N>;
 
-  //! A chain with zero links, unlimited joints and the identity base.
   DhChain() : base_(Transform<S>::identity()), limits_(Limits::unlimited()) {
     for (uint8_t i = 0; i < N; ++i) set_link(i, DhParams<S>{S(0), S(0), S(0), S(0)});
   }

@@ -15,8 +15,7 @@ template <typename S>
 struct DlsOptions {
   S tolerance_mm = ScalarTraits<S>::ik_tolerance_mm();  //!< reached when closer [mm]
   S max_clamp_mm = scalar<S>(25.0);  //!< farther from the reached point: unreachable [mm]
-  //! Initial damping lambda relative to the length scale L (dimensionless);
-  //! it adapts within [0.0025, 8] (Fixed) or [1e-4, 1e3] (float).
+  //! Initial damping lambda relative to the length scale L (dimensionless).
   S damping = scalar<S>(ScalarTraits<S>::kIsFixed ? 0.05 : 0.01);
   S max_step_rad = scalar<S>(0.5);  //!< largest joint change per iteration [rad]
   uint16_t max_iterations = 200;    //!< steps tried in total, over all attempts
@@ -31,7 +30,6 @@ struct DlsOptions {
   }
 };
 
-//! What a solve did (optional output).
 template <typename S>
 struct DlsReport {
   uint16_t iterations = 0;  //!< steps tried
@@ -39,9 +37,8 @@ struct DlsReport {
   S residual_mm = S(0);     //!< |target - reached| [mm]
 };
 
-//! Solves the tip of `chain` onto `target` [mm, chain reference frame],
-//! starting from q [rad]. Writes q and reached (= fk(q returned)) unless the
-//! status is kUnreachable.
+//! Solves the tip of `chain` onto `target` [mm] starting from q [rad];
+//! writes q and reached unless kUnreachable.
 template <typename S, uint8_t N>
 IkStatus dls_ik(const DhChain<S, N>& chain, const Vec3<S>& target, JointVector<S, N>& q,
                 Vec3<S>& reached, const DlsOptions<S>& opt = DlsOptions<S>(),
@@ -78,8 +75,7 @@ IkStatus dls_ik(const DhChain<S, N>& chain, const Vec3<S>& target, JointVector<S
   Prng rng(opt.seed);
   uint16_t it = 0;
   uint8_t restarts = 0, rejects = 0, slow = 0;
-  // Each attempt gets an equal share of the budget: an attempt creeping
-  // along an ill-conditioned valley is cut short, a fresh start is cheaper.
+  // An equal share of the budget per attempt: a fresh start beats creeping.
   const uint16_t attempt_budget =
       max_of(uint16_t(16), uint16_t(opt.max_iterations / (uint16_t(opt.restarts) + 1u)));
   uint16_t attempt_start = 0;

@@ -27,9 +27,6 @@ Vec3<S> mul_pow2(const Vec3<S>& v, int n) {
   return Vec3<S>(mul_pow2(v.x, n), mul_pow2(v.y, n), mul_pow2(v.z, n));
 }
 
-template <typename S>
-S max_abs(const Vec3<S>& v) { return max_of(abs(v.x), max_of(abs(v.y), abs(v.z))); }
-
 // Solves the symmetric positive definite system a y = b by elimination
 // without pivoting (LDL^T). False when a pivot is not positive.
 template <typename S>
@@ -73,16 +70,14 @@ void random_joints(Prng& rng, const JointLimits<S, N>& lim, JointVector<S, N>& q
   }
 }
 
-// The DLS step for error e [mm] and the Jacobian js already divided by
-// 2^k_jac: dq = js^T (js js^T + lambda_sq I)^-1 e 2^-k_jac. The error is first
-// shifted by 2^t into [0.125, 0.25) so that Fixed keeps its bits and
-// js^T y stays far from overflow; locked joints get no column and no step.
-// False when the solve fails.
+// dq = js^T (js js^T + lambda_sq I)^-1 e 2^-k_jac for error e [mm] and js
+// already divided by 2^k_jac; e is first scaled into [0.125, 0.25) so that
+// Fixed keeps its bits. Locked joints get no step. False when the solve fails.
 template <typename S, uint8_t N>
 bool dls_step(const PositionJacobian<S, N>& js, const bool (&locked)[N], const Vec3<S>& e, int k_jac,
               S lambda_sq, JointVector<S, N>& dq) {
   for (uint8_t i = 0; i < N; ++i) dq[i] = S(0);
-  S m = max_abs(e);
+  S m = max_of(abs(e.x), max_of(abs(e.y), abs(e.z)));
   if (!(m > S(0))) return true;
   int t = 0;
   while (m < scalar<S>(0.125) && t < 48) { m = m * S(2); ++t; }

@@ -1,8 +1,5 @@
-//! Building blocks shared by the analytic leg solvers (sprawl, planar,
-//! coxa/femur/tibia, abduction): bounds of a sane target, cheap comparisons,
-//! revolute joint limits, and the common end of ik() (status of a missed
-//! target, limits, outputs). Working units: math/working_units.h; the planar
-//! two-link problem: two_link.h.
+//! Building blocks shared by the analytic leg solvers: bounds of a sane
+//! target, cheap comparisons, joint limits, and the common end of ik().
 #ifndef STRIDER_KINEMATICS_LEG_IK_COMMON_H
 #define STRIDER_KINEMATICS_LEG_IK_COMMON_H
 
@@ -15,13 +12,11 @@ namespace strider {
 
 namespace leg_ik {
 
-//! |v| <= bound [mm] (bound >= 0), false for NaN and infinities; float
-//! compares the bits (float_bits.h), not the values.
+//! |v| <= bound [mm] (bound >= 0), false for NaN and infinities; float on the bits.
 inline bool within(float v, float bound) { return detail::magnitude_bits(v) <= detail::float_bits(bound); }
 inline bool within(Fixed v, Fixed bound) { return abs(v) <= bound; }
 
-//! a < b and v == 0 on the bits for float, as within(); the same results
-//! for every value but NaN, which never passes within().
+//! a < b and v == 0, on the bits for float (NaN never passes within()).
 STRIDER_ALWAYS_INLINE bool lt(float a, float b) { return detail::float_less(a, b); }
 STRIDER_ALWAYS_INLINE bool lt(Fixed a, Fixed b) { return a < b; }
 STRIDER_ALWAYS_INLINE bool is_zero(float v) { return detail::float_is_zero(v); }
@@ -30,13 +25,12 @@ STRIDER_ALWAYS_INLINE bool is_zero(Fixed v) { return v.raw() == 0; }
 STRIDER_ALWAYS_INLINE bool same_bits(float a, float b) { return detail::float_bits(a) == detail::float_bits(b); }
 STRIDER_ALWAYS_INLINE bool same_bits(Fixed a, Fixed b) { return a == b; }
 
-//! Whether a sum of squares [unit^2] is too small for Fixed's sqrt to keep
-//! its precision (a length under 1/4 unit; then units::norm()).
+//! A sum of squares [unit^2] too small for Fixed's sqrt (then units::norm()).
 constexpr bool tiny_square(float) { return false; }
 constexpr bool tiny_square(Fixed sq) { return sq < Fixed(0.0625); }
 
-//! Scales a Fixed pair by a power of two so that its larger magnitude is at
-//! least 1: the same angle, and products that keep ~16 significant bits.
+//! Scales a Fixed pair by 2^k so that its larger magnitude is >= 1: the same
+//! angle, and products that keep ~16 significant bits.
 inline void lift_pair(float&, float&) {}
 inline void lift_pair(Fixed& a, Fixed& b) {
   uint32_t m = Fixed::abs_raw(a.raw());
@@ -48,8 +42,7 @@ inline void lift_pair(Fixed& a, Fixed& b) {
   b = b.scaled_pow2(k);
 }
 
-//! The status of a target missed by miss_mm (its distance to the point solved
-//! for): within tolerance kOk, within max_clamp kClamped, else kUnreachable.
+//! The status of a target missed by miss_mm: kOk, kClamped or kUnreachable.
 template <typename S>
 IkStatus miss_status(S miss_mm, const IkOptions<S>& opt) {
   if (!(miss_mm <= opt.max_clamp_mm)) return IkStatus::kUnreachable;
@@ -91,8 +84,7 @@ bool within_limits(const JointLimits<S, N>& lim, const JointVector<S, N>& q) {
   return true;
 }
 
-//! JointLimits::contains for the fast paths, inlined and unrolled (avr-gcc's
-//! loop reloads every joint just stored).
+//! JointLimits::contains unrolled (avr-gcc's loop reloads every joint just stored).
 template <uint8_t I, uint8_t N>
 struct LimitsFrom {
   template <typename S>
@@ -120,16 +112,14 @@ STRIDER_ALWAYS_INLINE void copy_point(const Vec3<S>& p, Vec3<S>& reached) {
   reached.z = p.z;
 }
 
-//! A free angle (yaw with the foot on the yaw axis): the preferred value
-//! clamped into the limits, which is not a joint-limit hit.
+//! A free angle (yaw with the foot on the yaw axis), not a joint-limit hit.
 template <typename S, uint8_t N>
 S free_angle(const JointLimits<S, N>& lim, uint8_t i, S preferred) {
   return clamp(preferred, lim.lo[i], lim.hi[i]);
 }
 
-//! Clamps sol into the joint limits and, when that moved a joint, sets
-//! at = fk(sol); kJointLimit only when the foot moved by more than the
-//! tolerance, and kOk only while the target is still within it.
+//! Clamps sol into the limits and then sets at = fk(sol); kJointLimit only
+//! when that moved the foot by more than the tolerance.
 template <typename Leg, typename S>
 IkStatus apply_limits(const Leg& leg, const Vec3<S>& target, typename Leg::Joints& sol, Vec3<S>& at,
                       IkStatus status, const IkOptions<S>& opt) {
@@ -142,9 +132,7 @@ IkStatus apply_limits(const Leg& leg, const Vec3<S>& target, typename Leg::Joint
 }
 
 //! The common end of every analytic ik(): sol solves the nearest reachable
-//! point, which may differ from the target when clamped (then measured
-//! through fk; else the target is reported as reached). Status from the miss
-//! distance and the limits; outputs untouched on kUnreachable.
+//! point (measured through fk when clamped); outputs untouched on kUnreachable.
 template <typename Leg, typename S>
 IkStatus finish(const Leg& leg, const Vec3<S>& target, typename Leg::Joints sol, bool clamped,
                 const IkOptions<S>& opt, typename Leg::Joints& q, Vec3<S>& reached) {

@@ -1,12 +1,9 @@
 //! PlanarLeg: the 2-DOF planar (mammal) leg of seed 003 (Srinivas et al.
 //! 2021): hip pitch t1, knee t2, links a1 and a2 in one vertical plane.
-//! Origin on the hip axis, x forward, z up, y left; both joints turn about
-//! -y (a positive angle turns a link from +x toward +z); t1 = -pi/2, t2 = 0
-//! hangs straight down. FK is eq 3 (the foot has y = 0), IK eqs 4-5 as the
-//! two-link problem of two_link.h with `branch` the sign of t2 (eq 4 as
-//! printed belongs to the other branch: docs/kinematics.md, "2-DOF planar
-//! leg"). A target off the leg plane is projected onto it, so |y| counts in
-//! the miss distance.
+//! Origin on the hip axis, x forward, z up; both joints turn about -y; t1 =
+//! -pi/2, t2 = 0 hangs straight down. FK eq 3, IK eqs 4-5 with `branch` the
+//! sign of t2; a target off the leg plane is projected onto it
+//! (docs/kinematics.md, "2-DOF planar leg").
 #ifndef STRIDER_KINEMATICS_PLANAR_LEG_H
 #define STRIDER_KINEMATICS_PLANAR_LEG_H
 
@@ -64,8 +61,7 @@ struct PlanarLeg {
   }
 
  private:
-  // The integer two-link path (two_link.h) for a Fixed target in the leg
-  // plane; float, and every other case, takes the general path.
+  // The integer two-link path for a Fixed target in the leg plane.
   static bool solve_fast(const Vec3<float>&, JointVector<float, kDof>&) { return false; }
   template <typename T>
   bool solve_fast(const Vec3<T>& target, JointVector<T, kDof>& sol) const {

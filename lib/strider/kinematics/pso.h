@@ -1,8 +1,6 @@
 //! Particle swarm optimisation, global-best topology (seed 003 section 4.1,
-//! algorithm 1, table 3), for D <= 6 dimensions and up to Capacity particles
-//! in fixed arrays (no heap), in pyswarms' form of eq 12. The update, the
-//! bounds and why they differ from the seed: docs/kinematics.md, "Generic
-//! chains".
+//! algorithm 1, table 3), for D <= 6 dimensions in fixed arrays, in pyswarms'
+//! form of eq 12 (docs/kinematics.md, "Generic chains").
 #ifndef STRIDER_KINEMATICS_PSO_H
 #define STRIDER_KINEMATICS_PSO_H
 
@@ -32,11 +30,9 @@ struct PsoParams {
   S cost_threshold = S(0);          //!< stop once best cost < this (0: never, for costs >= 0)
   S velocity_clamp = S(0);          //!< |v_d| <= this * (hi_d - lo_d); 0: no clamp
   uint32_t seed = 1;                //!< PRNG seed
-  //! Where particle 0 starts instead of its uniform draw (clamped to the
-  //! box; nullptr: uniform), e.g. a known guess, which the result then beats or equals.
+  //! Where particle 0 starts (clamped to the box; nullptr: a uniform draw).
   const JointVector<S, D>* start = nullptr;
 
-  //! The same bounds for every dimension.
   void set_bounds(S lo_all, S hi_all) {
     for (uint8_t d = 0; d < D; ++d) {
       lo[d] = lo_all;
@@ -71,8 +67,7 @@ class ParticleSwarm {
   }
 
   //! The same with a cost vectorised over the swarm, as pyswarms' costs are:
-  //! cost(const Point* x, uint8_t n, S* c) sets c[i] to the cost of x[i] for
-  //! every i < n (one call per iteration, so a cost may batch its math).
+  //! cost(const Point* x, uint8_t n, S* c) sets c[i] to the cost of x[i].
   template <typename SwarmCost>
   PsoResult<S, D> minimize_swarm(const PsoParams<S, D>& p, SwarmCost&& cost) {
     PsoResult<S, D> r;
@@ -125,8 +120,7 @@ class ParticleSwarm {
   };
 
   // Uniform in [0, 1) from one draw: float 24 bits, Fixed 16, double 32
-  // (a second draw would add no randomness to xorshift32's 32 bits of
-  // state; on the AVR double is float).
+  // (a second draw adds no randomness to xorshift32's 32 bits of state).
   static float unit(Prng& rng, float*) { return rng.uniform<float>(); }
   static Fixed unit(Prng& rng, Fixed*) { return rng.uniform<Fixed>(); }
   static double unit(Prng& rng, double*) {
@@ -171,9 +165,8 @@ class ParticleSwarm {
   S cost_[Capacity];  // this iteration's costs
 };
 
-//! PSO as inverse kinematics: the cost of joints q is the distance from
-//! fk(q) to the target [mm] (seed 003 eq 15); Fk is any functor
-//! Vec3<S>(const JointVector<S, D>&).
+//! PSO as inverse kinematics: the cost of joints q is |fk(q) - target| [mm]
+//! (seed 003 eq 15).
 template <typename S, typename Fk>
 struct FkDistanceCost {
   const Fk* fk;

@@ -1,11 +1,9 @@
 //! SprawlLeg: the 2-DOF sprawling leg of seed 000 (Atique et al. 2018).
 //! Origin on the hip yaw axis, z up; t1 yaws the leg about z (eq 7), t2
 //! pitches the shank (eq 8), the thigh a1 stays horizontal; t1 = t2 = 0 puts
-//! the foot at (a1 + a2, 0, 0). The foot lives on a torus: a target off it is
-//! clamped onto it, the near and the far half (t1 + pi) both tried, and the
-//! singular points are handled as docs/kinematics.md, "2-DOF sprawling leg",
-//! says. Squares are taken in working units chosen per call, so the plain
-//! aggregate {a1_mm, a2_mm, limits} needs no cached constants.
+//! the foot at (a1 + a2, 0, 0). A target off the foot's torus is clamped onto
+//! it, near and far half (t1 + pi) both tried (docs/kinematics.md, "2-DOF
+//! sprawling leg"); working units are chosen per call, so nothing is cached.
 #ifndef STRIDER_KINEMATICS_SPRAWL_LEG_H
 #define STRIDER_KINEMATICS_SPRAWL_LEG_H
 
@@ -37,7 +35,7 @@ bool sprawl_solve_fast(const Leg&, const Vec3<S>&, JointVector<S, 2>&, S&) {
 template <typename Leg>
 STRIDER_ALWAYS_INLINE bool sprawl_solve_fast(const Leg& leg, const Vec3<Fixed>& target, JointVector<Fixed, 2>& sol,
                                              Fixed& miss_mm) {
-  // Lengths of 2^14 mm and more take the general path (their raw sum could overflow).
+  // Lengths of 2^14 mm and more could overflow their raw sum.
   const uint32_t ra1 = uint32_t(leg.a1_mm.raw()), ra2 = uint32_t(leg.a2_mm.raw());
   if (ra1 >= 0x40000000UL || ra2 >= 0x40000000UL) return false;
   const int8_t n = units::unit_shift(Fixed::from_raw(int32_t(ra1 + ra2)));

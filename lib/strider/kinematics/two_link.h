@@ -11,8 +11,7 @@
 
 namespace strider {
 
-//! Which of the two elbow-up/elbow-down solutions a two-link IK returns: the
-//! sign of the knee joint angle.
+//! Which of its two solutions a two-link IK returns: the sign of the knee angle.
 enum class KneeBranch : uint8_t {
   kPositive = 0,  //!< knee angle in [0, pi]
   kNegative = 1   //!< knee angle in [-pi, 0]
@@ -84,11 +83,9 @@ struct TwoLink {
   }
 };
 
-//! The two-link solution for (h, v) [wide units] strictly inside the
-//! annulus, with the identities of TwoLink::solve in 16/32-bit integers.
-//! Returns false, leaving ta and tb alone, when the point is not strictly
-//! inside or the links are 8 units or longer: then use solve().
-//! kSharedAtan2 calls the out-of-line lean atan2 instead of inlining it.
+//! TwoLink::solve in 16/32-bit integers for (h, v) [wide units] strictly
+//! inside the annulus; false, ta and tb untouched, otherwise or for links of
+//! 8 units or more. kSharedAtan2 calls the out-of-line lean atan2.
 template <bool kSharedAtan2 = false>
 STRIDER_ALWAYS_INLINE bool solve_wide_inline(const TwoLink<Fixed>& link, int32_t h, int32_t v, KneeBranch branch,
                                              Fixed& ta, Fixed& tb) {

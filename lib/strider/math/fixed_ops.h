@@ -1,8 +1,7 @@
 //! Integer building blocks shared by the Fixed elementary functions: unsigned
-//! 16/32-bit arithmetic only (bit-identical on host and AVR), shifts in whole
-//! bytes plus a few bits, as avr-gcc 5.4 loops over every bit of a 32-bit
-//! shift (docs/fixed-point.md, "Design for the ATmega2560"). `int` is 16 bits
-//! on the AVR: every intermediate above 0xFFFF is a uint32_t.
+//! 16/32-bit arithmetic only, shifts in whole bytes plus a few bits (avr-gcc
+//! 5.4 loops over every bit of a 32-bit shift; docs/fixed-point.md, "Design
+//! for the ATmega2560"). `int` is 16 bits on the AVR.
 #ifndef STRIDER_MATH_FIXED_OPS_H
 #define STRIDER_MATH_FIXED_OPS_H
 

@@ -73,9 +73,8 @@ inline Fixed wrap_two_pi(Fixed a) {
 }
 
 //! sin (cosine false) or cos (true) of raw / 2^16 [rad] as a raw value, the
-//! one out-of-line body of both: |raw| reduced to s in [-pi, pi], sin(raw) =
-//! +-sin|s| (negative when the signs of raw and s differ) and cos(raw) =
-//! sin(pi/2 - |s|), inside the table's domain without a fold.
+//! one out-of-line body of both: sin(raw) = +-sin|s| for raw reduced to s,
+//! and cos(raw) = sin(pi/2 - |s|).
 STRIDER_NOINLINE inline int32_t sin_cos_raw(int32_t raw, bool cosine) {
 #if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
   const uint32_t ua = abs_u32(raw);

@@ -1,7 +1,6 @@
 //! Constant tables in flash on the AVR (a `const` table alone is copied into
-//! its 8 KB of RAM at start-up) and in ordinary read-only memory on the host,
-//! read through flash_u16() and flash_u8(); and the inlining attributes the
-//! library shares.
+//! its 8 KB of RAM at start-up), read through flash_u16() and flash_u8(); and
+//! the inlining attributes the library shares.
 #ifndef STRIDER_MATH_FLASH_TABLE_H
 #define STRIDER_MATH_FLASH_TABLE_H
 

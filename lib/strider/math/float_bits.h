@@ -1,7 +1,6 @@
 //! IEEE-754 bit access for float: sign, magnitude, NaN and ordering tests as
 //! integer operations (on the AVR a float comparison is a ~50-cycle library
-//! call). For non-negative floats (and +inf) the order of the bit patterns is
-//! the order of the values; NaN patterns lie above +inf.
+//! call); NaN patterns lie above +inf.
 #ifndef STRIDER_MATH_FLOAT_BITS_H
 #define STRIDER_MATH_FLOAT_BITS_H
 

@@ -21,9 +21,8 @@ inline float sqrt(float v) {
   return detail::float_bits(v) - 1U < detail::kFloatInfBits ? ::sqrtf(v) : 0.0f;
 }
 
-//! sin(a) [a in rad]; 0 for NaN and infinities.
+//! sin(a) and cos(a) [a in rad]; 0 for NaN and infinities.
 inline float sin(float a) { return detail::is_finite(a) ? ::sinf(a) : 0.0f; }
-//! cos(a) [a in rad]; 0 for NaN and infinities.
 inline float cos(float a) { return detail::is_finite(a) ? ::cosf(a) : 0.0f; }
 
 //! sqrt(a^2 + b^2) without overflow or underflow of the squares; 0 for NaN.

@@ -1,7 +1,6 @@
-//! Prng: a small seeded pseudo-random generator, Marsaglia's xorshift32
-//! (G. Marsaglia, "Xorshift RNGs", J. Stat. Softw. 8(14), 2003; shifts
-//! 13, 17, 5; period 2^32 - 1), bit-identical on the host and the AVR.
-//! Not for cryptography; good enough for particle swarms and IK restarts.
+//! Prng: Marsaglia's xorshift32 (G. Marsaglia, "Xorshift RNGs", J. Stat.
+//! Softw. 8(14), 2003; shifts 13, 17, 5; period 2^32 - 1), bit-identical on
+//! the host and the AVR, for particle swarms and IK restarts.
 #ifndef STRIDER_MATH_PRNG_H
 #define STRIDER_MATH_PRNG_H
 

@@ -1,9 +1,6 @@
 //! Rotation matrices about the coordinate axes (seed 001 eqs 5.1-5.3) and
-//! body rotations from roll (about x), pitch (y) and yaw (z) [rad],
-//! right-handed, in any of the six Tait-Bryan orders (seed 001 algorithm 2).
-//! RotationOrder names the factors left to right as multiplied: kZYX, the
-//! default, is R = Rz(yaw) Ry(pitch) Rx(roll). How the seed's listing names
-//! them: docs/kinematics.md, "Frames".
+//! body rotations from roll, pitch and yaw [rad] in any of the six
+//! Tait-Bryan orders (seed 001 algorithm 2; docs/kinematics.md, "Frames").
 #ifndef STRIDER_MATH_ROTATION_H
 #define STRIDER_MATH_ROTATION_H
 
@@ -11,11 +8,11 @@
 
 namespace strider {
 
-//! The order of the three elementary rotations, left to right as multiplied.
+//! The order of the three elementary rotations, left to right as multiplied:
+//! kZYX, the default, is R = Rz(yaw) Ry(pitch) Rx(roll).
 enum class RotationOrder : uint8_t { kXYZ, kXZY, kYXZ, kYZX, kZXY, kZYX };
 
 //! Rotations about x, y and z by an angle [rad] (seed 001 eqs 5.1-5.3).
-
 template <typename S>
 Mat3<S> rot_x(S roll) {
   const S c = cos(roll), s = sin(roll);
@@ -65,10 +62,8 @@ Mat3<S> product(S roll, S pitch, S yaw, RotationOrder order) {
   return *a * *b * *c;
 }
 
-//! Fixed: the same product without the zero and unit terms, which are
-//! exact in Fixed, so the bits are those of product(): from the identity,
-//! each factor turns two columns of the product so far in place (12
-//! products a factor, not 27; RotationRpy.FixedIsTheMatrixProduct).
+//! Fixed: the same bits without the exact zero and unit terms: each factor
+//! turns two columns of the product so far in place (12 products, not 27).
 inline Mat3<Fixed> product(Fixed roll, Fixed pitch, Fixed yaw, RotationOrder order) {
   const Fixed angle[3] = {roll, pitch, yaw};
   uint8_t axes = factors(order);

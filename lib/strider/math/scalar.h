@@ -1,5 +1,4 @@
-//! Scalar traits and the generic helpers every algorithm in Strider uses, so
-//! that one template serves float and Fixed.
+//! Scalar traits and the generic helpers that let one template serve float and Fixed.
 #ifndef STRIDER_MATH_SCALAR_H
 #define STRIDER_MATH_SCALAR_H
 

@@ -1,11 +1,8 @@
-//! Working units, and lengths that never overflow. Fixed (Q16.16) overflows
-//! above 32767, so a 280 mm link cannot be squared in millimetres: squares
-//! are taken in units of 2^n mm, where the "unit shift" n brings the lengths
-//! involved into [4, 8) units (a two-link solver's largest product,
-//! (2 a1 a2 sin)^2, stays below 1024, and a unit keeps 16 fraction bits:
-//! 2^(n-16) mm, 0.002 mm for a 557 mm leg). Shifts are exact for lengths
-//! with few fraction bits and cost no multiply. Float works in millimetres:
-//! its shift is 0 and the conversions are no-ops.
+//! Working units, and lengths that never overflow. Fixed overflows above
+//! 32767, so squares are taken in units of 2^n mm, where the "unit shift" n
+//! brings the lengths involved into [4, 8) units (a two-link solver's largest
+//! product, (2 a1 a2 sin)^2, stays below 1024; a unit keeps 16 fraction
+//! bits). Float works in millimetres: shift 0, the conversions no-ops.
 #ifndef STRIDER_MATH_WORKING_UNITS_H
 #define STRIDER_MATH_WORKING_UNITS_H
 
@@ -28,8 +25,7 @@ constexpr int8_t unit_shift(Fixed length) {
   return n;
 }
 
-//! Millimetres to working units, and back (saturating for Fixed). Going
-//! down is a rounded right shift (half away from zero, like scaled_pow2).
+//! Millimetres to working units (rounded half away from zero), and back.
 constexpr float to_unit(float v_mm, int8_t) { return v_mm; }
 constexpr Fixed to_unit(Fixed v_mm, int8_t shift) {
   return shift <= 0 ? v_mm.scaled_pow2(-shift)
@@ -47,8 +43,7 @@ S norm_in(S x, S y, S z, int8_t shift) {
 }
 
 //! The shift of norm(): the largest magnitude in [32, 64) units, so that the
-//! squares keep ~28 significant bits and sum below 12288 (a plain sqrt of
-//! small squares would lose up to sqrt(2^-17) of absolute precision).
+//! squares keep ~28 significant bits and sum below 12288.
 inline int8_t norm_shift(uint32_t max_raw) {
   int8_t n = 0;
   while (max_raw >= (uint32_t(64) << Fixed::kFracBits)) { max_raw >>= 1; ++n; }

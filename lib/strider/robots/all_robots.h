@@ -1,5 +1,4 @@
-//! All built-in robot models, and lookup by name. The order is the order of
-//! the seeds' table in docs/robots.md and of `strider robots`.
+//! All built-in robot models, in the order of docs/robots.md, and lookup by name.
 #ifndef STRIDER_ROBOTS_ALL_ROBOTS_H
 #define STRIDER_ROBOTS_ALL_ROBOTS_H
 

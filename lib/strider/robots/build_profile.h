@@ -1,7 +1,6 @@
-//! A build's profile: the compile-time choices that size and shape its
-//! walker, servo stage and RobotApp, given to them as one template argument.
-//! HostProfile is every host build's default; a firmware's is its model's
-//! (control/firmware_profile.h).
+//! A build's profile: the compile-time choices that size its walker, servo
+//! stage and RobotApp; HostProfile is every host build's default (a
+//! firmware's: control/firmware_profile.h).
 #ifndef STRIDER_ROBOTS_BUILD_PROFILE_H
 #define STRIDER_ROBOTS_BUILD_PROFILE_H
 

@@ -1,7 +1,5 @@
 //! dog12: the 12-DOF quadruped of seed 001 (Shahriar): abduction, hip and
-//! knee per leg. Where each value comes from (seed 001 table 4, the stance
-//! that keeps the seed's body poses reachable, the joint limits' margins,
-//! the servos): docs/robots.md, "dog12".
+//! knee per leg. Where each value comes from: docs/robots.md, "dog12".
 #ifndef STRIDER_ROBOTS_DOG12_H
 #define STRIDER_ROBOTS_DOG12_H
 

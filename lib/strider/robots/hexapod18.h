@@ -1,6 +1,5 @@
 //! hexapod18: the 18-DOF hexapod of seed 002 (Qingsheng and Andika 2018).
-//! Where each value comes from (seed 002 tables 1-9, the mounts, the joint
-//! limits, the stance): docs/robots.md, "hexapod18".
+//! Where each value comes from: docs/robots.md, "hexapod18".
 #ifndef STRIDER_ROBOTS_HEXAPOD18_H
 #define STRIDER_ROBOTS_HEXAPOD18_H
 

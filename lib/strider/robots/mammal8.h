@@ -1,7 +1,6 @@
 //! mammal8: the 8-DOF mammal-type quadruped of seed 003 (Srinivas et al.
 //! 2021, "Valkyrie"): hip pitch and knee per leg, legs under the body.
-//! Where each value comes from (seed 003 table 1, the leg frame, why the
-//! joint limits are not the seed's): docs/robots.md, "mammal8".
+//! Where each value comes from: docs/robots.md, "mammal8".
 #ifndef STRIDER_ROBOTS_MAMMAL8_H
 #define STRIDER_ROBOTS_MAMMAL8_H
 

@@ -1,6 +1,5 @@
 //! Compile-time invariants of a RobotModel: each robot file static_asserts
-//! them, so a typo in a model fails the build (host and AVR) instead of a
-//! walk; what needs the solvers is tested in test/robots.
+//! them, so a typo in a model fails the build instead of a walk.
 #ifndef STRIDER_ROBOTS_MODEL_CHECKS_H
 #define STRIDER_ROBOTS_MODEL_CHECKS_H
 
@@ -82,10 +81,9 @@ constexpr bool numbered_counter_clockwise(const RobotModel& m) {
   return m.legs[0].side == BodySide::kLeft && m.legs[0].mount_mm.x > 0.0f;
 }
 
-//! The standing foot lies in the leg's workspace: a geometric test in the
-//! leg frame, independent of angle conventions (seed 000 eqs 4-6: the torus;
-//! seed 003 eq 3: the annulus in the x-z plane; seed 002 eqs 5-7: the
-//! annulus around the femur axis; seed 001 eqs 4.1 and 4.12-4.16).
+//! The standing foot lies in the leg's workspace, tested geometrically in the
+//! leg frame (seed 000 eqs 4-6, seed 003 eq 3, seed 002 eqs 5-7, seed 001
+//! eqs 4.1 and 4.12-4.16).
 constexpr bool stand_in_workspace(const RobotModel& m, const LegModel& leg) {
   using model_math::sqrt;
   const Vec3<float> p = body_point_in_leg(leg, leg.stand_mm);
@@ -128,7 +126,6 @@ constexpr bool unused_slots_empty(const RobotModel& m) {
 
 }  // namespace model_checks
 
-//! All invariants: each robot file static_asserts them.
 constexpr bool model_valid(const RobotModel& m) {
   return model_checks::links_valid(m) && model_checks::joint_ranges_valid(m) &&
          model_checks::sides_consistent(m) && model_checks::mirror_symmetric(m) &&

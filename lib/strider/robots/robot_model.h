@@ -1,9 +1,6 @@
 //! RobotModel: the constant description of one robot (legs, mounts, joint
-//! limits, standing pose, body, servos). Plain constexpr data in float,
-//! millimetres and degrees, shared by the firmware, the tests and the
-//! simulator; kinematics/any_leg.h turns one leg of it into a solver. The
-//! conventions every model follows (frames, joint limits, leg numbering):
-//! docs/robots.md, "What a model holds".
+//! limits, standing pose, body, servos) in float, mm and degrees. The
+//! conventions every model follows: docs/robots.md, "What a model holds".
 #ifndef STRIDER_ROBOTS_ROBOT_MODEL_H
 #define STRIDER_ROBOTS_ROBOT_MODEL_H
 
@@ -93,9 +90,8 @@ struct RobotModel {
   constexpr uint8_t joint_count() const { return uint8_t(leg_count * dof()); }
 };
 
-//! The model without its legs' names, which only the host tools print (a
-//! firmware's flash copy of its model would otherwise keep their strings in
-//! RAM on the AVR).
+//! The model without its legs' names, which only the host tools print (their
+//! strings would otherwise take AVR RAM).
 constexpr RobotModel without_leg_names(RobotModel m) {
   for (uint8_t i = 0; i < kMaxLegs; ++i) m.legs[i].name = nullptr;
   return m;
@@ -128,8 +124,7 @@ constexpr double sqrt(double v) {
 
 }  // namespace model_math
 
-//! A leg-frame point [mm] in the body frame, for a mount at origin/yaw
-//! (leg_mount.h's leg_to_body, at compile time).
+//! A leg-frame point [mm] in the body frame (leg_to_body at compile time).
 constexpr Vec3<float> leg_point_in_body(const Vec3<float>& origin_mm, float yaw_deg, double x, double y,
                                         double z) {
   return Vec3<float>(float(origin_mm.x + model_math::cos_deg(yaw_deg) * x - model_math::sin_deg(yaw_deg) * y),
@@ -137,8 +132,7 @@ constexpr Vec3<float> leg_point_in_body(const Vec3<float>& origin_mm, float yaw_
                      float(origin_mm.z + z));
 }
 
-//! A leg whose standing foot is given in its own leg frame [mm] (the usual
-//! way to write one: the stance is chosen in the leg type's frame).
+//! A leg whose standing foot is given in its own leg frame [mm].
 constexpr LegModel leg_model(const char* name, BodySide side, const Vec3<float>& mount_mm, float yaw_deg,
                              JointRange j0, JointRange j1, JointRange j2, double stand_x, double stand_y,
                              double stand_z) {
@@ -146,8 +140,7 @@ constexpr LegModel leg_model(const char* name, BodySide side, const Vec3<float>&
                   leg_point_in_body(mount_mm, yaw_deg, stand_x, stand_y, stand_z)};
 }
 
-//! A body-frame point [mm] in a leg's frame (leg_mount.h's body_to_leg, at
-//! compile time).
+//! A body-frame point [mm] in a leg's frame (body_to_leg at compile time).
 constexpr Vec3<float> body_point_in_leg(const LegModel& leg, const Vec3<float>& p) {
   return Vec3<float>(
       float(model_math::cos_deg(leg.mount_yaw_deg) * (p.x - leg.mount_mm.x) +

@@ -1,11 +1,7 @@
-//! ServoPart: the hobby servos the built-in robots use, with the datasheet
-//! figures a model, a gait planner or the simulator needs.
-//!
-//! Values are the makers' published figures, at 6 V where a sheet quotes two
-//! supply voltages (every Strider robot runs its servos from a 5-6 V BEC).
-//! Travel: all seven turn about 180 deg with a 500-2500 us pulse (the
-//! makers' "operating angle" is for 1000-2000 us); per-servo calibration
-//! corrects the nominal pulses.
+//! ServoPart: the hobby servos the built-in robots use, with the makers'
+//! datasheet figures at 6 V (every robot runs its servos from a 5-6 V BEC).
+//! Travel: about 180 deg with a 500-2500 us pulse (the makers' "operating
+//! angle" is for 1000-2000 us); per-servo calibration corrects the pulses.
 #ifndef STRIDER_ROBOTS_SERVO_PARTS_H
 #define STRIDER_ROBOTS_SERVO_PARTS_H
 
@@ -38,7 +34,6 @@ struct ServoSpec {
   float mass_g;             //!< [g]
 };
 
-//! The figures of a part (6 V values, see the file comment).
 constexpr ServoSpec servo_spec(ServoPart part) {
   // SG90: 1.8 kg cm and 0.1 s/60 deg are its 4.8 V figures (no 6 V rating).
   return part == ServoPart::kSg90     ? ServoSpec{"SG90", 180.0f, 500, 2500, 1.8f, 0.10f, 9.0f}
@@ -53,10 +48,8 @@ constexpr ServoSpec servo_spec(ServoPart part) {
 //! Top speed of a part [deg/s] (60 deg over its no-load time).
 constexpr float servo_speed_deg_s(ServoPart part) { return 60.0f / servo_spec(part).speed_s_per_60deg; }
 
-//! What the servo map and the slew limit need of a part, looked up at run
-//! time: servo_spec() with a part known only at run time makes the compiler
-//! build all seven specs (and their names) in RAM on the AVR; this table is
-//! in flash.
+//! What the servo map and the slew limit need of a part at run time, from a
+//! flash table (servo_spec() at run time builds all seven specs in AVR RAM).
 struct ServoTravel {
   float travel_deg;       //!< servo_spec().travel_deg [deg]
   uint16_t min_pulse_us;  //!< [us]

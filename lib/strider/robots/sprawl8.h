@@ -1,6 +1,5 @@
 //! sprawl8: the 8-DOF sprawling quadruped of seed 000 (Atique et al. 2018).
-//! Where each value comes from (seed 000 section 3.1, the stance on the
-//! knee's circle, the joint limits, the servos): docs/robots.md, "sprawl8".
+//! Where each value comes from: docs/robots.md, "sprawl8".
 #ifndef STRIDER_ROBOTS_SPRAWL8_H
 #define STRIDER_ROBOTS_SPRAWL8_H
 

@@ -1,14 +1,8 @@
 //! AttitudeFilter: roll and pitch [rad] from an accelerometer [m/s^2] and a
-//! gyro [rad/s], a Mahony-style complementary filter on the direction of
-//! gravity (docs/imu.md).
-//!
-//! State: u, the unit "up" vector in the body frame, and b, the gyro bias
-//! [rad/s]; yaw is not kept. The update equations, the gains' poles and why
-//! the prediction comes first: docs/imu.md, "The attitude filter".
-//!
-//! Total: no NaN or infinity comes out for any input (NaN or infinite
-//! inputs count as missing, inputs are clamped to the MPU-6050's ranges,
-//! dt <= 0 changes nothing, a gap over kAttitudeMaxDtS is not integrated).
+//! gyro [rad/s], a Mahony-style complementary filter on the unit "up" vector
+//! with a gyro bias estimate (docs/imu.md, "The attitude filter"). Total:
+//! NaN or infinite inputs count as missing, inputs are clamped to the
+//! MPU-6050's ranges, dt <= 0 changes nothing.
 #ifndef STRIDER_SENSING_ATTITUDE_FILTER_H
 #define STRIDER_SENSING_ATTITUDE_FILTER_H
 
@@ -99,8 +93,7 @@ class AttitudeFilter {
     bias_scaled_ = b * scalar<S>(detail::kAttitudeBiasScale);
   }
 
-  //! One sample: accel [m/s^2] and gyro [rad/s] in the body frame, dt [s]
-  //! since the previous one.
+  //! One sample in the body frame; dt [s] since the previous one.
   AttitudeStatus update(const Vec3<S>& accel_m_s2, const Vec3<S>& gyro_rad_s, S dt_s) {
     const S zero = S(), one = scalar<S>(1.0);
     if (!(zero < dt_s)) return AttitudeStatus::kHeld;

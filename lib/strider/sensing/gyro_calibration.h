@@ -1,7 +1,5 @@
-//! GyroCalibration: a gyro's zero-rate offset [rad/s], measured while the
-//! robot keeps still: the mean of `count` readings in a row that stay within
-//! `spread` of each other on every axis (an MPU-6050 has up to 20 deg/s of
-//! offset). A reading outside, or NaN, starts the run again from it.
+//! GyroCalibration: a gyro's zero-rate offset [rad/s], the mean of `count`
+//! readings in a row that stay within `spread` of each other on every axis.
 #ifndef STRIDER_SENSING_GYRO_CALIBRATION_H
 #define STRIDER_SENSING_GYRO_CALIBRATION_H
 

@@ -1,6 +1,5 @@
 //! ImuSample: one reading of a 6-axis IMU in SI units, body frame (x
-//! forward, y left, z up), what the attitude filter takes and the MPU-6050
-//! conversion (mpu6050_sample.h) gives.
+//! forward, y left, z up).
 #ifndef STRIDER_SENSING_IMU_SAMPLE_H
 #define STRIDER_SENSING_IMU_SAMPLE_H
 

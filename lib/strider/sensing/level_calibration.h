@@ -1,8 +1,6 @@
 //! LevelCalibration: the accelerometer's x and y offsets [mg], the mean of
 //! kLevelCalSamples readings with the robot standing still on level ground
-//! (`cal level`; the limits and why z and the rate about z are not judged:
-//! docs/imu.md, "Level calibration"). A reading that turns ends the run
-//! kMoving; one that is not level, or a mean past 5 deg, kNotLevel.
+//! (`cal level`; docs/imu.md, "Level calibration").
 #ifndef STRIDER_SENSING_LEVEL_CALIBRATION_H
 #define STRIDER_SENSING_LEVEL_CALIBRATION_H
 

@@ -39,58 +39,39 @@ constexpr S mpu6050_scale(double per_lsb) {
 inline float mpu6050_times(int16_t word, float scale) { return float(word) * scale; }
 inline Fixed mpu6050_times(int16_t word, Fixed scale) { return Fixed::from_raw(word) * scale; }
 
-template <typename S>
-S mpu6050_accel(int16_t word, Mpu6050AccelRange r) {
-  switch (r) {
-    case Mpu6050AccelRange::k2g: {
-      constexpr S k = mpu6050_scale<S>(kStandardGravity / 16384.0);
-      return mpu6050_times(word, k);
-    }
-    case Mpu6050AccelRange::k4g: {
-      constexpr S k = mpu6050_scale<S>(kStandardGravity / 8192.0);
-      return mpu6050_times(word, k);
-    }
-    case Mpu6050AccelRange::k8g: {
-      constexpr S k = mpu6050_scale<S>(kStandardGravity / 4096.0);
-      return mpu6050_times(word, k);
-    }
-    default: {
-      constexpr S k = mpu6050_scale<S>(kStandardGravity / 2048.0);
-      return mpu6050_times(word, k);
-    }
-  }
+//! A word [LSB] times the scale of range R: [m/s^2] or [rad/s].
+template <typename S, Mpu6050AccelRange R>
+STRIDER_ALWAYS_INLINE S mpu6050_accel(int16_t word) {
+  constexpr S k = mpu6050_scale<S>(kStandardGravity / mpu6050_accel_lsb_per_g(R));
+  return mpu6050_times(word, k);
 }
-
-template <typename S>
-S mpu6050_gyro(int16_t word, Mpu6050GyroRange r) {
-  constexpr double kRadPerDeg = 0.017453292519943295;
-  switch (r) {
-    case Mpu6050GyroRange::k250Dps: {
-      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 131.0);
-      return mpu6050_times(word, k);
-    }
-    case Mpu6050GyroRange::k500Dps: {
-      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 65.5);
-      return mpu6050_times(word, k);
-    }
-    case Mpu6050GyroRange::k1000Dps: {
-      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 32.8);
-      return mpu6050_times(word, k);
-    }
-    default: {
-      constexpr S k = mpu6050_scale<S>(kRadPerDeg / 16.4);
-      return mpu6050_times(word, k);
-    }
-  }
+template <typename S, Mpu6050GyroRange R>
+STRIDER_ALWAYS_INLINE S mpu6050_gyro(int16_t word) {
+  constexpr S k = mpu6050_scale<S>(kDegToRad / mpu6050_gyro_lsb_per_dps(R));
+  return mpu6050_times(word, k);
 }
 }  // namespace detail
 
 //! An accel word [LSB] -> [m/s^2].
 template <typename S>
-S mpu6050_accel_m_s2(int16_t word, Mpu6050AccelRange r) { return detail::mpu6050_accel<S>(word, r); }
+S mpu6050_accel_m_s2(int16_t word, Mpu6050AccelRange r) {
+  switch (r) {
+    case Mpu6050AccelRange::k2g: return detail::mpu6050_accel<S, Mpu6050AccelRange::k2g>(word);
+    case Mpu6050AccelRange::k4g: return detail::mpu6050_accel<S, Mpu6050AccelRange::k4g>(word);
+    case Mpu6050AccelRange::k8g: return detail::mpu6050_accel<S, Mpu6050AccelRange::k8g>(word);
+    default: return detail::mpu6050_accel<S, Mpu6050AccelRange::k16g>(word);
+  }
+}
 //! A gyro word [LSB] -> [rad/s].
 template <typename S>
-S mpu6050_gyro_rad_s(int16_t word, Mpu6050GyroRange r) { return detail::mpu6050_gyro<S>(word, r); }
+S mpu6050_gyro_rad_s(int16_t word, Mpu6050GyroRange r) {
+  switch (r) {
+    case Mpu6050GyroRange::k250Dps: return detail::mpu6050_gyro<S, Mpu6050GyroRange::k250Dps>(word);
+    case Mpu6050GyroRange::k500Dps: return detail::mpu6050_gyro<S, Mpu6050GyroRange::k500Dps>(word);
+    case Mpu6050GyroRange::k1000Dps: return detail::mpu6050_gyro<S, Mpu6050GyroRange::k1000Dps>(word);
+    default: return detail::mpu6050_gyro<S, Mpu6050GyroRange::k2000Dps>(word);
+  }
+}
 //! The TEMP_OUT word -> [deg C].
 template <typename S>
 S mpu6050_temp_c(int16_t word) {
