@@ -27,10 +27,8 @@ constexpr uint8_t kGaitStateCount = 6;
 //! in flash); "standing" for a value out of range.
 inline const char* to_string(GaitState s) {
   const char* p = kGaitStateNames;
-  for (uint8_t i = uint8_t(s) < kGaitStateCount ? uint8_t(s) : uint8_t(GaitState::kStanding); i > 0; --i) {
-    while (flash_u8(p) != 0) ++p;
-    ++p;
-  }
+  for (uint8_t i = uint8_t(s) < kGaitStateCount ? uint8_t(s) : uint8_t(GaitState::kStanding); i > 0; --i)
+    while (flash_u8(p++) != 0) {}
   return p;
 }
 

@@ -21,7 +21,6 @@ namespace strider {
 enum class TuneParam : uint8_t { kStepHeight = 0, kStepLength = 1, kCycle = 2, kDuty = 3, kSwing = 4 };
 constexpr uint8_t kTuneParamCount = 5;
 constexpr char kTuneParamNames[] STRIDER_PROGMEM = "step_height\0step_length\0cycle\0duty\0swing";
-constexpr char kSwingShapeNames[] STRIDER_PROGMEM = "rectangle\0semicircle\0ellipse\0cycloid\0parabola\0bezier";
 
 //! One gait's live parameters. Two decimals, as the protocol takes them.
 struct GaitTuning {
