@@ -43,11 +43,9 @@ struct BodyPosture {
   //! The body in the stance frame: shift + offsets + sit/stand height.
   template <uint8_t kL, bool kSr>
   BodyPose<S> body_pose(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
-    return BodyPose<S>::make(Vec3<S>(shift.x_mm() + pose.translation_mm.x, shift.y_mm() + pose.translation_mm.y,
-                                     pose.translation_mm.z - drop_mm(cfg)),
-                             pose.roll_rad, pose.pitch_rad, pose.yaw_rad);
+    return BodyPose<S>::make(translation(shift, cfg), pose.roll_rad, pose.pitch_rad, pose.yaw_rad);
   }
-  //! body_pose()'s translation (sums in place: the same bits).
+  //! body_pose()'s translation (sums in place).
   template <uint8_t kL, bool kSr>
   Vec3<S> translation(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
     const S drop = drop_mm(cfg);

@@ -69,8 +69,11 @@ void GaitEngine<S, kLegs, kSearch>::step_shift(S dt) {
     }
     t = w.inv == S(0) ? S(1) : phase_to<S>(Phase16(now - w.start)) * w.inv;
   }
-  S cx = S(0), cy = S(0);
-  if (poly != nullptr) BodyShift<S>::correction(*poly, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, cx, cy);
+  // The shift that moves the reference into the region with the target margin.
+  S cx = ref_x, cy = ref_y;
+  if (poly != nullptr) poly->constrain(foot_, cx, cy, cfg_.margin_mm, cfg_.shift_x_only);
+  cx = cx - ref_x;
+  cy = cy - ref_y;
   S tx = cx, ty = cy;
   if (!any_swing) shift_.window_target(t, cx, cy, tx, ty);
   // Never beyond the reach kept for it (a gait switch mid-stride may ask more).
