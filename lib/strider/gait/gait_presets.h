@@ -25,12 +25,8 @@ struct GaitPreset {
   uint16_t step_height_cmm;
 };
 
-//! mammal8 at seed 003's own operating point (table 5): 10 mm steps, walked
-//! at the seed's 2.5 (walk), 4.2 (trot) and 3.1 mm/s (pace). The cycles give
-//! a trot and pace stride of 10 mm at those speeds; the walk keeps its 2 s
-//! (a 5 mm stride at 2.5 mm/s: with 4 s it went 16-41 % short). Low steps; the
-//! trot's 10 mm and four-foot overlaps of the trot and pace were the least
-//! short in the simulator (docs/simulator.md, "mammal8 at seed 003's point").
+//! mammal8 at seed 003's own operating point (table 5): docs/gaits.md,
+//! "Presets"; why these values: docs/simulator.md, "mammal8 at seed 003's point".
 constexpr GaitPreset kGaitPresets[] STRIDER_PROGMEM = {
     {"mammal8", "walk10", "walk", 0, 0, 1000, 300},
     {"mammal8", "trot10", "trot", 238, 60, 1000, 1000},

@@ -1,10 +1,6 @@
-//! What the walker reports per leg each tick (LegResult): the joints, the
-//! status and the contact, and for host tools (a profile's kFeet) the
-//! target, the foot reached, the IK's own status and the clamp (how far
-//! reach_projection.h moved a 2-DOF leg's target). status is the worse of
-//! the IK status and kClamped when the projection moved a foot on the ground
-//! by more than kClampToleranceMm or a foot in the air up or down
-//! (docs/gaits.md, "2-DOF legs").
+//! What the walker reports per leg each tick (LegResult): joints, status and
+//! contact; for host tools (a profile's kFeet) also the target, the foot
+//! reached, the IK's own status and the clamp (docs/gaits.md, "2-DOF legs").
 #ifndef STRIDER_GAIT_LEG_RESULT_H
 #define STRIDER_GAIT_LEG_RESULT_H
 

@@ -57,14 +57,11 @@ bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, S
   using T = detail::VelocityLimitTables<>;
   out.set_gait(model, scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
   stored_limits_detail::set_strides(out, r);
-  S servo[3];
+  S* const servo[3] = {&out.lift_ms, &out.swing_ms_per_mm, &out.stance_ms_per_mm};
   for (uint8_t j = 0; j < 3; ++j) {
     const uint32_t lo = flash_u16(T::kServo[r], uint16_t(2 * j)), hi = flash_u16(T::kServo[r], uint16_t(2 * j + 1));
-    servo[j] = enc::q16_of(lo | (hi << 16), S());
+    *servo[j] = enc::q16_of(lo | (hi << 16), S());
   }
-  out.lift_ms = servo[0];
-  out.swing_ms_per_mm = servo[1];
-  out.stance_ms_per_mm = servo[2];
   return true;
 }
 
