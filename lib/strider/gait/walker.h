@@ -116,7 +116,7 @@ class Walker {
     const bool* contact = engine_.contacts();
     const uint8_t n = leg_count();
     for (uint8_t i = 0; i < n; ++i, ++r, ++p) {
-      Vec3<S>& t = target_of(*r, scratch);
+      Vec3<S>& t = r->target(scratch);
       if (body != nullptr) {
         t = foot_in_body(*body, *p);
       } else if (still) {
@@ -129,10 +129,10 @@ class Walker {
       r->contact = contact[i];
       // Fast IK of a body-frame target (Fixed coxa/femur/tibia), reached.
       if (!projects && legs_.solver(i).ik_body_fast(legs_.mount(i), t, r->q, ik_options_)) {
-        set_clamp(*r, S(0));
-        set_ik_status(*r, IkStatus::kOk);
+        r->set_clamp(S(0));
+        r->set_ik_status(IkStatus::kOk);
         r->status = IkStatus::kOk;
-        if (kFeet) leg_ik::copy_point(t, foot_of(*r, scratch));
+        if (kFeet) leg_ik::copy_point(t, r->foot(scratch));
         continue;
       }
       solve_leg(i, *r, scratch, projects);
@@ -141,30 +141,30 @@ class Walker {
 
   //! solve_legs()'s leg i when the fast IK does not take it.
   STRIDER_NOINLINE void solve_leg(uint8_t i, Result& r, Scratch& scratch, bool projects) {
-    const Vec3<S> leg_target = to_leg(i, target_of(r, scratch));
+    const Vec3<S> leg_target = to_leg(i, r.target(scratch));
     if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
       // The point reached goes into foot (leg frame, then body frame).
-      set_clamp(r, S(0));
-      const IkStatus ik = legs_.solver(i).ik(leg_target, r.q, foot_of(r, scratch), ik_options_);
-      set_ik_status(r, ik);
+      r.set_clamp(S(0));
+      const IkStatus ik = legs_.solver(i).ik(leg_target, r.q, r.foot(scratch), ik_options_);
+      r.set_ik_status(ik);
       r.status = ik;
       // A target reached as given is the body-frame target itself.
       if (!kFeet || ik == IkStatus::kUnreachable) return;
-      if (same(foot_of(r, scratch), leg_target)) {
-        leg_ik::copy_point(target_of(r, scratch), foot_of(r, scratch));
+      if (same(r.foot(scratch), leg_target)) {
+        leg_ik::copy_point(r.target(scratch), r.foot(scratch));
       } else {
-        foot_of(r, scratch) = to_body(i, foot_of(r, scratch));
+        r.foot(scratch) = to_body(i, r.foot(scratch));
       }
       return;
     }
     Vec3<S> reached;
     S moved = S(0);
     const Vec3<S> t = proj_.apply(leg_target, moved);
-    set_clamp(r, moved);
+    r.set_clamp(moved);
     const IkStatus ik = legs_.solver(i).ik(t, r.q, reached, ik_options_);
-    set_ik_status(r, ik);
+    r.set_ik_status(ik);
     if (kFeet && ik != IkStatus::kUnreachable)
-      foot_of(r, scratch) = moved == S(0) && same(reached, leg_target) ? target_of(r, scratch) : to_body(i, reached);
+      r.foot(scratch) = moved == S(0) && same(reached, leg_target) ? r.target(scratch) : to_body(i, reached);
     constexpr S tolerance = scalar<S>(kClampToleranceMm);
     const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
     r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
@@ -186,10 +186,9 @@ class Walker {
 
   void reset_legs(bool solve_now = true) {
     for (uint8_t i = 0; i < leg_count(); ++i) {
-      out_[i].q = typename AnyLeg<S>::Joints();
-      for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
+      out_[i].q = typename AnyLeg<S>::Joints();  // zeros
       Scratch unused;
-      foot_of(out_[i], unused) = engine_.foot(i);
+      out_[i].foot(unused) = engine_.foot(i);
     }
     if (solve_now) refresh();
   }
