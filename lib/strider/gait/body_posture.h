@@ -34,12 +34,6 @@ struct BodyPosture {
     at_goal = true;
   }
 
-  //! How far the body is below standing height [mm] (standing: no products).
-  template <uint8_t kL, bool kSr>
-  S drop_mm(const GaitConfig<S, kL, kSr>& cfg) const {
-    return progress >= S(1) ? S(0) : cfg.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress));
-  }
-
   //! The body in the stance frame: shift + offsets + sit/stand height.
   template <uint8_t kL, bool kSr>
   BodyPose<S> body_pose(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
@@ -48,7 +42,8 @@ struct BodyPosture {
   //! body_pose()'s translation (sums in place).
   template <uint8_t kL, bool kSr>
   Vec3<S> translation(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
-    const S drop = drop_mm(cfg);
+    // How far the body is below standing height [mm] (standing: no products).
+    const S drop = progress >= S(1) ? S(0) : cfg.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress));
     const Vec3<S>& t = pose.translation_mm;
     return Vec3<S>(add_inline(shift.x_mm(), t.x), add_inline(shift.y_mm(), t.y), sub_inline(t.z, drop));
   }

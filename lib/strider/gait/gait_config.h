@@ -54,14 +54,7 @@ enum class LimitsSource : uint8_t {
 namespace gait_config_detail {
 template <typename S>
 constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
-//! The largest |x| or |y| of the standing feet [mm].
-template <typename S, uint8_t kLegs, bool kSearch>
-constexpr S reach_of(const GaitConfig<S, kLegs, kSearch>& c) {
-  S reach = S(0);
-  for (uint8_t i = 0; i < c.leg_count; ++i) reach = max_of(reach, max_of(magnitude(c.home[i].x), magnitude(c.home[i].y)));
-  return reach;
-}
-//! The fields of the gait defaults and the model's kind (reach: reach_of()).
+//! The fields of the gait defaults and the model's kind (reach: the feet's largest |x| or |y| [mm]).
 template <typename S, uint8_t kLegs, bool kSearch>
 constexpr void set_params(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
                           S reach) {
@@ -93,15 +86,6 @@ void set_limits(VelocityLimits<S, false>& lim, const RobotModel& model, const An
                 const GaitParams& params, SwingShape shape, S, LimitsSource) {
   if (!stored_velocity_limits(model, params, shape, lim)) lim = VelocityLimits<S, false>();
 }
-//! Half of each leg's shortest stride of the limits [mm].
-template <typename S, uint8_t kLegs, bool kSearch>
-void set_edges(GaitConfig<S, kLegs, kSearch>& c) {
-  for (uint8_t i = 0; i < c.leg_count; ++i) {
-    S shortest = c.limits.stride_mm(i, 0);
-    for (uint8_t k = 1; k < kStrideDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
-    c.edge_mm[i] = shortest * scalar<S>(0.5);
-  }
-}
 }  // namespace gait_config_detail
 
 //! Builds (in c) the configuration of `model` with `legs` (an AnyLeg per
@@ -114,11 +98,18 @@ void fill_gait_config(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model,
     return;
   }
   c.leg_count = model.leg_count;
-  for (uint8_t i = 0; i < model.leg_count; ++i) c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
-  const S reach = gait_config_detail::reach_of(c);
+  S reach = S(0);  // the largest |x| or |y| of the standing feet [mm]
+  for (uint8_t i = 0; i < model.leg_count; ++i) {
+    c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
+    reach = max_of(reach, max_of(gait_config_detail::magnitude(c.home[i].x), gait_config_detail::magnitude(c.home[i].y)));
+  }
   gait_config_detail::set_params(c, model, params, shape, reach);
   gait_config_detail::set_limits(c.limits, model, legs, c.home, params, shape, c.step_height_mm, source);
-  gait_config_detail::set_edges(c);
+  for (uint8_t i = 0; i < c.leg_count; ++i) {  // half of each leg's shortest stride
+    S shortest = c.limits.stride_mm(i, 0);
+    for (uint8_t k = 1; k < kStrideDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
+    c.edge_mm[i] = shortest * scalar<S>(0.5);
+  }
   c.shift_speed_mm_s = scalar<S>(400.0);
   c.pose_speed_mm_s = scalar<S>(50.0);
   c.pose_rate_rad_s = scalar<S>(0.5);
