@@ -37,7 +37,7 @@ struct GaitParams {
 };
 
 //! One entry per model, in the order of kAllRobots. In flash on the AVR:
-//! read it there through gait_params_at().
+//! read it there through gait_params_of().
 constexpr GaitParams kGaitParams[kRobotCount] STRIDER_PROGMEM = {
     // sprawl8 (seed 000): 20 mm steps clear a cable; 10 mm foot pads are the
     // seed's "wide ends of the legs".
@@ -77,13 +77,6 @@ constexpr bool values_sane() {
 
 static_assert(gait_params_detail::matches_models(), "kGaitParams: one entry per model, in kAllRobots order");
 static_assert(gait_params_detail::values_sane(), "kGaitParams: positive sizes and times");
-
-//! Entry r (< kRobotCount) of kGaitParams, copied out of flash on the AVR.
-inline GaitParams gait_params_at(uint8_t r) {
-  GaitParams p;
-  flash_copy(&p, &kGaitParams[r], sizeof p);
-  return p;
-}
 
 //! The index of `model`'s gait defaults in kGaitParams (by name), or
 //! kRobotCount for a model not listed.

@@ -33,14 +33,10 @@ struct GaitTable {
 
 namespace gait_table {
 
-//! Leg i's own phase psi = frac(phase - offset_i), for phases in [0, 1).
-constexpr float leg_phase(const GaitTable& t, uint8_t leg, float phase) {
-  return phase - t.offset[leg] < 0.0f ? phase - t.offset[leg] + 1.0f : phase - t.offset[leg];
-}
-
-//! True when leg `leg` is in the air at cycle phase `phase` in [0, 1).
+//! True when leg `leg` is in the air at cycle phase `phase` in [0, 1): its
+//! own phase frac(phase - offset) below 1 - duty.
 constexpr bool in_swing(const GaitTable& t, uint8_t leg, float phase) {
-  return leg_phase(t, leg, phase) < 1.0f - t.duty;
+  return (phase - t.offset[leg] < 0.0f ? phase - t.offset[leg] + 1.0f : phase - t.offset[leg]) < 1.0f - t.duty;
 }
 
 //! Offsets in [0, 1), duty in (0, 1), a known leg count, unused slots zero.

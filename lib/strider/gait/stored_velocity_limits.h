@@ -21,7 +21,8 @@ inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& pa
   using T = detail::VelocityLimitTables<>;
   const uint8_t r = gait_params_index(model);
   if (r >= kRobotCount) return kRobotCount;
-  const GaitParams d = gait_params_at(r);
+  GaitParams d;
+  flash_copy(&d, &kGaitParams[r], sizeof d);
   uint16_t print[enc::kFingerprintWords];
   enc::geometry_fingerprint(model, print);
   for (uint8_t k = 0; k < enc::kFingerprintWords; ++k)
