@@ -1,5 +1,4 @@
-//! GaitState: what the gait engine is doing (sitting, standing up,
-//! standing, walking, stopping, sitting down), and its name.
+//! GaitState: what the gait engine is doing, and its name.
 #ifndef STRIDER_GAIT_GAIT_STATE_H
 #define STRIDER_GAIT_GAIT_STATE_H
 
