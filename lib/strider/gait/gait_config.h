@@ -54,7 +54,22 @@ enum class LimitsSource : uint8_t {
 namespace gait_config_detail {
 template <typename S>
 constexpr S magnitude(S v) { return v < S(0) ? -v : v; }
-//! The fields of the gait defaults and the model's kind (reach: the feet's largest |x| or |y| [mm]).
+//! The largest |x| or |y| of the standing feet [mm].
+template <typename S, uint8_t kLegs, bool kSearch>
+constexpr S reach_of(const GaitConfig<S, kLegs, kSearch>& c) {
+  S reach = S(0);
+  for (uint8_t i = 0; i < c.leg_count; ++i) reach = max_of(reach, max_of(magnitude(c.home[i].x), magnitude(c.home[i].y)));
+  return reach;
+}
+//! The fixed speed limits of every configuration.
+template <typename S, uint8_t kLegs, bool kSearch>
+constexpr void set_speeds(GaitConfig<S, kLegs, kSearch>& c) {
+  c.shift_speed_mm_s = scalar<S>(400.0);
+  c.pose_speed_mm_s = scalar<S>(50.0);
+  c.pose_rate_rad_s = scalar<S>(0.5);
+  c.home_tolerance_mm = scalar<S>(0.5);
+}
+//! The fields of the gait defaults and the model's kind (reach: reach_of()).
 template <typename S, uint8_t kLegs, bool kSearch>
 constexpr void set_params(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model, const GaitParams& params, SwingShape shape,
                           S reach) {
@@ -86,7 +101,28 @@ void set_limits(VelocityLimits<S, false>& lim, const RobotModel& model, const An
                 const GaitParams& params, SwingShape shape, S, LimitsSource) {
   if (!stored_velocity_limits(model, params, shape, lim)) lim = VelocityLimits<S, false>();
 }
+//! Half of each leg's shortest stride of the limits [mm].
+template <typename S, uint8_t kLegs, bool kSearch>
+void set_edges(GaitConfig<S, kLegs, kSearch>& c) {
+  for (uint8_t i = 0; i < c.leg_count; ++i) {
+    S shortest = c.limits.stride_mm(i, 0);
+    for (uint8_t k = 1; k < kStrideDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
+    c.edge_mm[i] = shortest * scalar<S>(0.5);
+  }
+}
 }  // namespace gait_config_detail
+
+//! The ramps of a configuration whose other fields are set: to a trot's top
+//! speed in one default cycle (first stances stay within their strides).
+template <typename S, uint8_t kLegs, bool kSearch>
+void finish_gait_config(GaitConfig<S, kLegs, kSearch>& c) {
+  const S reach = gait_config_detail::reach_of(c);
+  const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
+  const S top_yaw = c.limits.max_yaw_rate(c.home, scalar<S>(0.5));
+  c.accel_mm_s2 = max_of(top_speed * c.limits.min_hz, S(1));
+  c.yaw_accel_rad_s2 = max_of(top_yaw * c.limits.min_hz, scalar<S>(0.05));
+  c.target_speed_mm_s = max_of((top_speed + top_yaw * reach) * S(2), scalar<S>(10.0));
+}
 
 //! Builds (in c) the configuration of `model` with `legs` (an AnyLeg per
 //! leg), `params` and `shape`: at start-up (IK search), not per tick.
@@ -98,28 +134,12 @@ void fill_gait_config(GaitConfig<S, kLegs, kSearch>& c, const RobotModel& model,
     return;
   }
   c.leg_count = model.leg_count;
-  S reach = S(0);  // the largest |x| or |y| of the standing feet [mm]
-  for (uint8_t i = 0; i < model.leg_count; ++i) {
-    c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
-    reach = max_of(reach, max_of(gait_config_detail::magnitude(c.home[i].x), gait_config_detail::magnitude(c.home[i].y)));
-  }
-  gait_config_detail::set_params(c, model, params, shape, reach);
+  for (uint8_t i = 0; i < model.leg_count; ++i) c.home[i] = Vec3<S>::from(model.legs[i].stand_mm);
+  gait_config_detail::set_params(c, model, params, shape, gait_config_detail::reach_of(c));
   gait_config_detail::set_limits(c.limits, model, legs, c.home, params, shape, c.step_height_mm, source);
-  for (uint8_t i = 0; i < c.leg_count; ++i) {  // half of each leg's shortest stride
-    S shortest = c.limits.stride_mm(i, 0);
-    for (uint8_t k = 1; k < kStrideDirections; ++k) shortest = min_of(shortest, c.limits.stride_mm(i, k));
-    c.edge_mm[i] = shortest * scalar<S>(0.5);
-  }
-  c.shift_speed_mm_s = scalar<S>(400.0);
-  c.pose_speed_mm_s = scalar<S>(50.0);
-  c.pose_rate_rad_s = scalar<S>(0.5);
-  c.home_tolerance_mm = scalar<S>(0.5);
-  // The ramps: to a trot's top speed in one default cycle (first stances stay within their strides).
-  const S top_speed = c.limits.max_speed_mm_s(c.home, S(1), S(0), scalar<S>(0.5));
-  const S top_yaw = c.limits.plan(c.home, S(0), S(0), scalar<S>(20.0), scalar<S>(0.5)).wz_rad_s;  // turning in place
-  c.accel_mm_s2 = max_of(top_speed * c.limits.min_hz, S(1));
-  c.yaw_accel_rad_s2 = max_of(top_yaw * c.limits.min_hz, scalar<S>(0.05));
-  c.target_speed_mm_s = max_of((top_speed + top_yaw * reach) * S(2), scalar<S>(10.0));
+  gait_config_detail::set_edges(c);
+  gait_config_detail::set_speeds(c);
+  finish_gait_config(c);
 }
 
 //! fill_gait_config() as a value (that one builds in place: no AVR stack copy).

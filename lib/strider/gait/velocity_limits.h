@@ -124,6 +124,11 @@ struct VelocityLimits : StrideTable<kSearch> {
     return hypot(p.vx_mm_s, p.vy_mm_s);
   }
 
+  //! Top yaw rate turning in place [rad/s].
+  S max_yaw_rate(const Vec3<S>* home, S duty, S budget_mm = S(0), bool keep_stride = false) const {
+    return plan(home, S(0), S(0), scalar<S>(20.0), duty, budget_mm, keep_stride).wz_rad_s;
+  }
+
   // plan()'s two halves: a short stack frame each on the AVR.
   //! The largest R_i (0: no leg moves); *rate_lo the rate the strides need.
   STRIDER_NOINLINE S stride_need(const Vec3<S>* home, const VelocityPlan<S>& p, S duty, S budget_mm,
