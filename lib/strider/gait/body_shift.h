@@ -62,8 +62,7 @@ class BodyShift {
 };
 
 //! The four-foot window: open while every foot is down and the body shifts
-//! for the next swing group (led by leg `group`), which will stand on
-//! `next_support`.
+//! for the next swing group (led by leg `group`) to stand on `next_support`.
 template <typename S, uint8_t kLegs>
 struct ShiftWindow {
   static constexpr uint8_t kNoGroup = 0xFF;

@@ -29,9 +29,8 @@ constexpr GaitChoice kGaitChoices[kGaitChoiceCount] STRIDER_PROGMEM = {
 };
 
 //! The gait the pad walks body speed (vx, vy [0.1 mm/s], wz [0.1 deg/s]) in
-//! for `robot` now walking `gait`: true and its name in `to`
-//! (kGaitNameBytes) when that is another gait; false: keep the gait. A
-//! standstill (all zero) keeps the gait.
+//! for `robot` now walking `gait`: true and its name in `to` (kGaitNameBytes)
+//! when that is another gait; false (a standstill too): keep the gait.
 inline bool gait_choice_for(const char* robot, const char* gait, int32_t vx, int32_t vy, int32_t wz, char* to) {
   const int32_t linear = vx < 0 ? -vx : vx;
   const int32_t turn = wz < 0 ? -wz : wz;

@@ -1,9 +1,7 @@
 //! GaitEngine: per tick, the foot targets of a legged robot walking a gait
-//! table at a commanded velocity (tick(dt)), in the stance frame
-//! (kinematics/body_pose.h; body_pose() says where the body is in it).
-//! Set-up and walking tick: gait_engine_walk.h; feet in the air:
-//! gait_engine_swing.h; body shift and margin: gait_engine_balance.h; the
-//! behaviour: docs/gaits.md.
+//! table at a commanded velocity, in the stance frame (kinematics/body_pose.h).
+//! Walking tick: gait_engine_walk.h; feet in the air: gait_engine_swing.h;
+//! body shift and margin: gait_engine_balance.h; the behaviour: docs/gaits.md.
 #ifndef STRIDER_GAIT_GAIT_ENGINE_H
 #define STRIDER_GAIT_GAIT_ENGINE_H
 

@@ -1,6 +1,5 @@
-//! GaitEngine's balance while walking: the body shift over the support of
-//! the feet down (body_shift.h; walk and crawl) and the stability margin
-//! (stability.h); include gait_engine.h, not this file.
+//! GaitEngine's balance while walking: the body shift (body_shift.h; walk and
+//! crawl) and the stability margin (stability.h); include gait_engine.h.
 #ifndef STRIDER_GAIT_GAIT_ENGINE_BALANCE_H
 #define STRIDER_GAIT_GAIT_ENGINE_BALANCE_H
 

@@ -44,9 +44,8 @@ constexpr GaitParams kGaitParams[kRobotCount] STRIDER_PROGMEM = {
     {"sprawl8", "crawl", SwingShape::kEllipse, 20.0f, 40.0f, 0.8f, 0.0f, 10.0f, 0.0f, 0.0f, 6.0f, 12.0f,
      30.0f, 1.0f},
     // mammal8 (seed 003): short steps and a 2 s cycle (the seed's walk is
-    // slow). Its 5 mm ball feet touch at a point: the 11 mm margin keeps the
-    // CoM 6 mm inside them; with 4 mm it rocked onto its swing foot, with 13
-    // or 15 mm the faster shift slides the feet (docs/simulator.md).
+    // slow); the 11 mm margin keeps the CoM 6 mm inside its 5 mm ball feet
+    // (other margins: docs/simulator.md).
     {"mammal8", "walk", SwingShape::kEllipse, 20.0f, 30.0f, 2.0f, 0.0f, 5.0f, 0.0f, 0.0f, 11.0f, 20.0f, 40.0f,
      1.5f},
     // dog12 (seed 001): seed 001's own swing path is a rectangle (section 3.2).

@@ -1,7 +1,5 @@
-//! Gait presets: a model's named operating points, each a gait of the
-//! library walked with its own live parameters (gait_tuning.h), picked like a
-//! gait: `gait trot10` is `gait trot` and the `set` lines of its row. `get`
-//! and `status` then show the gait's own name, tuned (`tune=changed`).
+//! Gait presets: a model's named operating points, each a library gait walked
+//! with its own live parameters (gait_tuning.h; docs/gaits.md, "Presets").
 #ifndef STRIDER_GAIT_GAIT_PRESETS_H
 #define STRIDER_GAIT_GAIT_PRESETS_H
 

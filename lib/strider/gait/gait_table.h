@@ -1,9 +1,7 @@
-//! GaitTable: a gait as data. Each leg lifts off once per cycle at its
-//! phase offset and stays in the air for (1 - duty) of the cycle. Phase
-//! convention: the cycle phase runs over [0, 1); leg i's own phase is
-//! psi_i = frac(phase - offset_i), so the leg is in swing for
-//! psi_i in [0, 1 - duty) and in stance for psi_i in [1 - duty, 1). Legs
-//! are numbered as the models number them (docs/robots.md).
+//! GaitTable: a gait as data. Each leg lifts off once per cycle at its phase
+//! offset and stays in the air for (1 - duty) of the cycle: with the cycle
+//! phase in [0, 1), leg i swings while psi_i = frac(phase - offset_i) < 1 - duty.
+//! Legs are numbered as the models number them (docs/robots.md).
 #ifndef STRIDER_GAIT_GAIT_TABLE_H
 #define STRIDER_GAIT_GAIT_TABLE_H
 

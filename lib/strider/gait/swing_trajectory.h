@@ -1,8 +1,7 @@
-//! Swing trajectories: where a foot is while it is in the air, as a function
-//! of its swing phase s in [0, 1] (0 lift-off, 1 touch-down): u the fraction
-//! of the way from the lift-off point to the touch-down point (seen from
-//! above), w the height as a fraction of the apex. The shapes' formulas and
-//! apexes: docs/gaits.md, "Swing trajectories".
+//! Swing trajectories: where a foot is in the air at swing phase s in [0, 1]
+//! (0 lift-off, 1 touch-down): u the fraction of the way from lift-off to
+//! touch-down point, w the height as a fraction of the apex (the shapes'
+//! formulas: docs/gaits.md, "Swing trajectories").
 #ifndef STRIDER_GAIT_SWING_TRAJECTORY_H
 #define STRIDER_GAIT_SWING_TRAJECTORY_H
 
