@@ -39,9 +39,9 @@ struct BodyPosture {
   BodyPose<S> body_pose(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
     return BodyPose<S>::make(translation(shift, cfg), pose.roll_rad, pose.pitch_rad, pose.yaw_rad);
   }
-  //! body_pose()'s translation (sums in place).
+  //! body_pose()'s translation (sums in place; inline: the walker's level tick).
   template <uint8_t kL, bool kSr>
-  Vec3<S> translation(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
+  STRIDER_ALWAYS_INLINE Vec3<S> translation(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
     // How far the body is below standing height [mm] (standing: no products).
     const S drop = progress >= S(1) ? S(0) : cfg.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress));
     const Vec3<S>& t = pose.translation_mm;

@@ -68,11 +68,13 @@ void GaitEngine<S, kLegs, kSearch>::step_shift(S dt) {
     }
     t = w.inv == S(0) ? S(1) : phase_to<S>(Phase16(now - w.start)) * w.inv;
   }
-  // The shift that moves the reference into the region with the target margin.
-  S cx = ref_x, cy = ref_y;
-  if (poly != nullptr) poly->constrain(foot_, cx, cy, cfg_.margin_mm, cfg_.shift_x_only);
-  cx = cx - ref_x;
-  cy = cy - ref_y;
+  S cx = S(0), cy = S(0);
+  if (poly != nullptr) {  // the shift that moves the reference into the region with the target margin
+    S px = ref_x, py = ref_y;
+    poly->constrain(foot_, px, py, cfg_.margin_mm, cfg_.shift_x_only);
+    cx = px - ref_x;
+    cy = py - ref_y;
+  }
   S tx = cx, ty = cy;
   if (!any_swing) shift_.window_target(t, cx, cy, tx, ty);
   // Never beyond the reach kept for it (a gait switch mid-stride may ask more).
