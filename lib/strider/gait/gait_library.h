@@ -9,33 +9,34 @@
 #include "../math/flash_table.h"
 #include "gait_table.h"
 
-namespace strider {
+//! The gait tables and their lists are in flash on the AVR (no RAM for seven tables).
+#define STRIDER_GAIT_STORAGE STRIDER_PROGMEM
 
-// The tables and their lists are in flash on the AVR (no RAM for seven tables).
+namespace strider {
 
 //! 4-beat walk, seed 003 fig. 7b: four-foot windows of 0.10 between the
 //! swings let the body carry its CoM into the next support triangle.
-constexpr GaitTable kGaitWalk STRIDER_PROGMEM = {"walk", 4, 0.85f, {0.25f, 0.75f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
+constexpr GaitTable kGaitWalk STRIDER_GAIT_STORAGE = {"walk", 4, 0.85f, {0.25f, 0.75f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
 
 //! Trot, seed 003 section 4 C: diagonal pairs (LF + RH, LH + RF) alternate.
-constexpr GaitTable kGaitTrot STRIDER_PROGMEM = {"trot", 4, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, false, false};
+constexpr GaitTable kGaitTrot STRIDER_GAIT_STORAGE = {"trot", 4, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, false, false};
 
 //! Pace, seed 003 section 4 B: lateral pairs (LF + LH, RH + RF) alternate.
-constexpr GaitTable kGaitPace STRIDER_PROGMEM = {"pace", 4, 0.5f, {0.0f, 0.0f, 0.5f, 0.5f, 0.0f, 0.0f}, false, false};
+constexpr GaitTable kGaitPace STRIDER_GAIT_STORAGE = {"pace", 4, 0.5f, {0.0f, 0.0f, 0.5f, 0.5f, 0.0f, 0.0f}, false, false};
 
 //! Seed 000 section 3.3's six-step crawl: the diagonal pairs alternate, with
 //! four-foot windows of 1/6 between them (docs/gaits.md).
-constexpr GaitTable kGaitCrawl STRIDER_PROGMEM = {"crawl", 4, 2.0f / 3.0f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
+constexpr GaitTable kGaitCrawl STRIDER_GAIT_STORAGE = {"crawl", 4, 2.0f / 3.0f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.0f}, true, true};
 
 //! Tripod: alternating tripods {0, 2, 4} and {1, 3, 5}.
-constexpr GaitTable kGaitTripod STRIDER_PROGMEM = {"tripod", 6, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.5f}, false, false};
+constexpr GaitTable kGaitTripod STRIDER_GAIT_STORAGE = {"tripod", 6, 0.5f, {0.0f, 0.5f, 0.0f, 0.5f, 0.0f, 0.5f}, false, false};
 
 //! Ripple: a back-to-front wave on each side, the sides half a cycle apart.
-constexpr GaitTable kGaitRipple STRIDER_PROGMEM = {
+constexpr GaitTable kGaitRipple STRIDER_GAIT_STORAGE = {
     "ripple", 6, 2.0f / 3.0f, {2.0f / 3.0f, 1.0f / 3.0f, 0.0f, 0.5f, 5.0f / 6.0f, 1.0f / 6.0f}, false, false};
 
 //! Wave: one leg at a time, rear to front on the left, then on the right.
-constexpr GaitTable kGaitWave STRIDER_PROGMEM = {
+constexpr GaitTable kGaitWave STRIDER_GAIT_STORAGE = {
     "wave", 6, 5.0f / 6.0f, {2.0f / 6.0f, 1.0f / 6.0f, 0.0f, 3.0f / 6.0f, 4.0f / 6.0f, 5.0f / 6.0f}, false, false};
 
 static_assert(gait_table::valid(kGaitWalk) && gait_table::valid(kGaitTrot) && gait_table::valid(kGaitPace) &&
@@ -58,8 +59,8 @@ struct GaitList {
 };
 
 namespace gait_library_detail {
-constexpr const GaitTable* kQuadruped[] STRIDER_PROGMEM = {&kGaitWalk, &kGaitTrot, &kGaitPace, &kGaitCrawl};
-constexpr const GaitTable* kHexapod[] STRIDER_PROGMEM = {&kGaitTripod, &kGaitRipple, &kGaitWave};
+constexpr const GaitTable* kQuadruped[] STRIDER_GAIT_STORAGE = {&kGaitWalk, &kGaitTrot, &kGaitPace, &kGaitCrawl};
+constexpr const GaitTable* kHexapod[] STRIDER_GAIT_STORAGE = {&kGaitTripod, &kGaitRipple, &kGaitWave};
 //! The list (in flash on the AVR) and its length for a leg count.
 constexpr const GaitTable* const* list_items(uint8_t leg_count) {
   return leg_count == 4 ? kQuadruped : leg_count == 6 ? kHexapod : nullptr;
