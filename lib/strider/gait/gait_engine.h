@@ -169,7 +169,6 @@ class GaitEngine {
     swing_.unsettle();
   }
 
-  // The walking tick (gait_engine_walk.h, gait_engine_swing.h).
   void start_walking();
   void step_walk(S dt);
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
@@ -177,7 +176,6 @@ class GaitEngine {
   STRIDER_NOINLINE void lift_foot(uint8_t i, bool crossed);
   STRIDER_NOINLINE void step_swing(S dt);
   STRIDER_NOINLINE void settle_target(uint8_t i, S max_step);
-  // Balance (gait_engine_balance.h).
   void step_shift(S dt);
   void update_margin() const;
   void build_support() const;
