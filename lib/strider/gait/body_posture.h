@@ -34,23 +34,16 @@ struct BodyPosture {
     at_goal = true;
   }
 
-  //! How far the body is below standing height [mm] (standing: no products).
-  template <uint8_t kL, bool kSr>
-  S drop_mm(const GaitConfig<S, kL, kSr>& cfg) const {
-    return progress >= S(1) ? S(0) : cfg.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress));
-  }
-
   //! The body in the stance frame: shift + offsets + sit/stand height.
   template <uint8_t kL, bool kSr>
   BodyPose<S> body_pose(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
-    return BodyPose<S>::make(Vec3<S>(shift.x_mm() + pose.translation_mm.x, shift.y_mm() + pose.translation_mm.y,
-                                     pose.translation_mm.z - drop_mm(cfg)),
-                             pose.roll_rad, pose.pitch_rad, pose.yaw_rad);
+    return BodyPose<S>::make(translation(shift, cfg), pose.roll_rad, pose.pitch_rad, pose.yaw_rad);
   }
-  //! body_pose()'s translation (sums in place: the same bits).
+  //! body_pose()'s translation (sums in place; inline: the walker's level tick).
   template <uint8_t kL, bool kSr>
-  Vec3<S> translation(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
-    const S drop = drop_mm(cfg);
+  STRIDER_ALWAYS_INLINE Vec3<S> translation(const BodyShift<S>& shift, const GaitConfig<S, kL, kSr>& cfg) const {
+    // How far the body is below standing height [mm] (standing: no products).
+    const S drop = progress >= S(1) ? S(0) : cfg.sit_drop_mm * (S(1) - BodyShift<S>::smoothstep(progress));
     const Vec3<S>& t = pose.translation_mm;
     return Vec3<S>(add_inline(shift.x_mm(), t.x), add_inline(shift.y_mm(), t.y), sub_inline(t.z, drop));
   }

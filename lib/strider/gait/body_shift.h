@@ -1,10 +1,7 @@
 //! BodyShift: how a statically stable gait (walk, crawl) moves the body over
 //! its feet so that the CoM stays inside the support polygon with a margin
-//! (seed 003 section 3): a horizontal offset [mm] added to the body's pose.
-//! While legs are in the air it is the smallest move of the CoM into the
-//! support region of the feet down; while every foot is down it blends
-//! (smoothstep) toward what the next swing group will need at its lift-off;
-//! every tick it moves at most max_step per axis (docs/gaits.md).
+//! (seed 003 section 3): a horizontal offset [mm] added to the body's pose
+//! (docs/gaits.md, "Static stability").
 #ifndef STRIDER_GAIT_BODY_SHIFT_H
 #define STRIDER_GAIT_BODY_SHIFT_H
 
@@ -32,17 +29,6 @@ class BodyShift {
   S y_mm() const { return y_; }
 
   void reset() { x_ = y_ = from_x_ = from_y_ = S(0); }
-
-  //! The shift [mm] that moves `ref` [mm] into `poly`'s region with margin
-  //! `want_mm` (along x only with x_only).
-  template <uint8_t kLegs>
-  static void correction(const SupportPolygon<S, kLegs>& poly, const Vec3<S>* feet, S ref_x, S ref_y, S want_mm,
-                         bool x_only, S& sx, S& sy) {
-    S px = ref_x, py = ref_y;
-    poly.constrain(feet, px, py, want_mm, x_only);
-    sx = px - ref_x;
-    sy = py - ref_y;
-  }
 
   //! Marks the start of a four-foot window: the blend starts from here.
   void begin_window() {
@@ -76,8 +62,7 @@ class BodyShift {
 };
 
 //! The four-foot window: open while every foot is down and the body shifts
-//! for the next swing group (led by leg `group`), which will stand on
-//! `next_support`.
+//! for the next swing group (led by leg `group`) to stand on `next_support`.
 template <typename S, uint8_t kLegs>
 struct ShiftWindow {
   static constexpr uint8_t kNoGroup = 0xFF;

@@ -1,10 +1,6 @@
-//! GaitChoice: the RC pad's speed-dependent gait, per model (docs/protocol.md,
-//! "The pad picks sprawl8's gait by speed"): a pad button at a forward or
-//! backward speed or a turn rate over `up` switches the slow gait to the
-//! fast one, one under `down` on both switches back (hysteresis); sideways
-//! speed does not count. A model not listed, or a gait that is neither of
-//! its pair, keeps its gait. Thresholds are body speeds (after
-//! speed_correction.h): sprawl8's crawl correction holds to ~25 mm/s.
+//! GaitChoice: the RC pad's speed-dependent gait, per model, with hysteresis
+//! (docs/protocol.md, "The pad picks sprawl8's gait by speed"). Thresholds are
+//! body speeds (after speed_correction.h): sprawl8's crawl correction holds to ~25 mm/s.
 #ifndef STRIDER_GAIT_GAIT_CHOICE_H
 #define STRIDER_GAIT_GAIT_CHOICE_H
 
@@ -32,17 +28,12 @@ constexpr GaitChoice kGaitChoices[kGaitChoiceCount] STRIDER_PROGMEM = {
     {"sprawl8", "crawl", "trot", 250, 180, 250, 180},
 };
 
-namespace detail {
-inline int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
-}  // namespace detail
-
 //! The gait the pad walks body speed (vx, vy [0.1 mm/s], wz [0.1 deg/s]) in
-//! for `robot` now walking `gait`: true and its name in `to`
-//! (kGaitNameBytes) when that is another gait; false: keep the gait. A
-//! standstill (all zero) keeps the gait.
+//! for `robot` now walking `gait`: true and its name in `to` (kGaitNameBytes)
+//! when that is another gait; false (a standstill too): keep the gait.
 inline bool gait_choice_for(const char* robot, const char* gait, int32_t vx, int32_t vy, int32_t wz, char* to) {
-  const int32_t linear = detail::abs32(vx);
-  const int32_t turn = detail::abs32(wz);
+  const int32_t linear = vx < 0 ? -vx : vx;
+  const int32_t turn = wz < 0 ? -wz : wz;
   if (linear == 0 && turn == 0 && vy == 0) return false;
   for (uint8_t i = 0; i < kGaitChoiceCount; ++i) {
     GaitChoice c;

@@ -11,12 +11,6 @@
 
 namespace strider {
 
-//! True when fill_gait_config() can give the velocity limits (kSearch: always).
-template <bool kSearch>
-bool velocity_limits_known(const RobotModel& model, const GaitParams& params, SwingShape shape) {
-  return kSearch || stored_limits_index(model, params, shape) < kRobotCount;
-}
-
 //! kLegs: legs held; kSearch: strides in RAM from the IK search (else in flash).
 template <typename S, uint8_t kLegs = kMaxLegs, bool kSearch = true>
 struct GaitConfig {

@@ -1,9 +1,7 @@
 //! GaitEngine: per tick, the foot targets of a legged robot walking a gait
-//! table at a commanded velocity (tick(dt)), in the stance frame
-//! (kinematics/body_pose.h; body_pose() says where the body is in it).
-//! Set-up and walking tick: gait_engine_walk.h; feet in the air:
-//! gait_engine_swing.h; body shift and margin: gait_engine_balance.h; the
-//! behaviour: docs/gaits.md.
+//! table at a commanded velocity, in the stance frame (kinematics/body_pose.h).
+//! Walking tick: gait_engine_walk.h; feet in the air: gait_engine_swing.h;
+//! body shift and margin: gait_engine_balance.h; the behaviour: docs/gaits.md.
 #ifndef STRIDER_GAIT_GAIT_ENGINE_H
 #define STRIDER_GAIT_GAIT_ENGINE_H
 
@@ -171,7 +169,6 @@ class GaitEngine {
     swing_.unsettle();
   }
 
-  // The walking tick (gait_engine_walk.h, gait_engine_swing.h).
   void start_walking();
   void step_walk(S dt);
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
@@ -179,7 +176,6 @@ class GaitEngine {
   STRIDER_NOINLINE void lift_foot(uint8_t i, bool crossed);
   STRIDER_NOINLINE void step_swing(S dt);
   STRIDER_NOINLINE void settle_target(uint8_t i, S max_step);
-  // Balance (gait_engine_balance.h).
   void step_shift(S dt);
   void update_margin() const;
   void build_support() const;

@@ -1,6 +1,5 @@
-//! GaitEngine's balance while walking: the body shift over the support of
-//! the feet down (body_shift.h; walk and crawl) and the stability margin
-//! (stability.h); include gait_engine.h, not this file.
+//! GaitEngine's balance while walking: the body shift (body_shift.h; walk and
+//! crawl) and the stability margin (stability.h); include gait_engine.h.
 #ifndef STRIDER_GAIT_GAIT_ENGINE_BALANCE_H
 #define STRIDER_GAIT_GAIT_ENGINE_BALANCE_H
 
@@ -70,7 +69,12 @@ void GaitEngine<S, kLegs, kSearch>::step_shift(S dt) {
     t = w.inv == S(0) ? S(1) : phase_to<S>(Phase16(now - w.start)) * w.inv;
   }
   S cx = S(0), cy = S(0);
-  if (poly != nullptr) BodyShift<S>::correction(*poly, foot_, ref_x, ref_y, cfg_.margin_mm, cfg_.shift_x_only, cx, cy);
+  if (poly != nullptr) {  // the shift that moves the reference into the region with the target margin
+    S px = ref_x, py = ref_y;
+    poly->constrain(foot_, px, py, cfg_.margin_mm, cfg_.shift_x_only);
+    cx = px - ref_x;
+    cy = py - ref_y;
+  }
   S tx = cx, ty = cy;
   if (!any_swing) shift_.window_target(t, cx, cy, tx, ty);
   // Never beyond the reach kept for it (a gait switch mid-stride may ask more).

@@ -1,6 +1,5 @@
-//! GaitEngine's feet in the air: a foot's lift-off onto its swing, the swing
-//! toward its touch-down point, and the steering of that point when the
-//! landing stride changes (include gait_engine.h, not this file).
+//! GaitEngine's feet in the air: lift-off, the swing toward the touch-down
+//! point, and its steering when the landing stride changes (include gait_engine.h).
 #ifndef STRIDER_GAIT_GAIT_ENGINE_SWING_H
 #define STRIDER_GAIT_GAIT_ENGINE_SWING_H
 

@@ -1,6 +1,5 @@
 //! GaitEngine's set-up, gait changes and walking tick: the phase clock, the
-//! feet on the ground and when they lift and land (include gait_engine.h,
-//! not this file).
+//! feet on the ground and when they lift and land (include gait_engine.h).
 #ifndef STRIDER_GAIT_GAIT_ENGINE_WALK_H
 #define STRIDER_GAIT_GAIT_ENGINE_WALK_H
 

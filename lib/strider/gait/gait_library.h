@@ -9,9 +9,7 @@
 #include "../math/flash_table.h"
 #include "gait_table.h"
 
-//! The gait tables and their lists are in flash on the AVR (no RAM for the
-//! seven tables): load_gait() and gait_index() copy them out; the host's
-//! find_gait() and gaits_for() hand out pointers to them.
+//! The gait tables and their lists are in flash on the AVR (no RAM for seven tables).
 #define STRIDER_GAIT_STORAGE STRIDER_PROGMEM
 
 namespace strider {
@@ -68,6 +66,15 @@ constexpr const GaitTable* const* list_items(uint8_t leg_count) {
   return leg_count == 4 ? kQuadruped : leg_count == 6 ? kHexapod : nullptr;
 }
 constexpr uint8_t list_count(uint8_t leg_count) { return leg_count == 4 ? 4 : leg_count == 6 ? 3 : 0; }
+//! Entry i of a list: on the AVR its address is read from flash.
+inline const GaitTable* list_entry(const GaitTable* const* items, uint8_t i) {
+#if defined(__AVR__)
+  static_assert(sizeof(const GaitTable*) == 2, "AVR data pointers are 16-bit");
+  return reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i));
+#else
+  return items[i];
+#endif
+}
 //! A name in RAM equal to one in flash (strcmp_P, without avr/pgmspace.h).
 inline bool same_as_flash(const char* name, const char* flash_name) {
   for (uint8_t i = 0;; ++i) {
@@ -88,46 +95,25 @@ constexpr const char* gait_names(uint8_t leg_count) {
   return leg_count == 4 ? kQuadrupedGaitNames : leg_count == 6 ? kHexapodGaitNames : kNoGaitNames;
 }
 
-//! The gait called `name` with `leg_count` legs into *out (copied out of
-//! flash on the AVR); false (out untouched) when there is none.
-inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
-  if (name == nullptr) return false;
-  const GaitTable* const* items = gait_library_detail::list_items(leg_count);
-  const uint8_t count = gait_library_detail::list_count(leg_count);
-  for (uint8_t i = 0; i < count; ++i) {
-#if defined(__AVR__)
-    static_assert(sizeof(const GaitTable*) == 2, "AVR data pointers are 16-bit");
-    const GaitTable* g = reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i));
-    if (!gait_library_detail::same_as_flash(name, g->name)) continue;
-    flash_copy(out, g, sizeof *out);
-#else
-    const GaitTable* g = items[i];
-    if (strcmp(g->name, name) != 0) continue;
-    *out = *g;
-#endif
-    return true;
-  }
-  return false;
-}
-
 //! Where gait `name` is in the list of a robot with leg_count legs (the
 //! order of gait_names()); kNoGaitIndex: not there.
 constexpr uint8_t kNoGaitIndex = 0xFF;
 inline uint8_t gait_index(uint8_t leg_count, const char* name) {
-  const uint8_t count = gait_library_detail::list_count(leg_count);
-  for (uint8_t i = 0; i < count; ++i) {
-    GaitTable g;
-#if defined(__AVR__)
-    const GaitTable* const* items = gait_library_detail::list_items(leg_count);
-    flash_copy(&g, reinterpret_cast<const GaitTable*>(flash_u16(reinterpret_cast<const uint16_t*>(items), i)), sizeof g);
-#else
-    g = *gait_library_detail::list_items(leg_count)[i];
-#endif
-    if (strcmp(g.name, name) == 0) return i;
-  }
+  if (name == nullptr) return kNoGaitIndex;
+  const GaitTable* const* items = gait_library_detail::list_items(leg_count);
+  for (uint8_t i = 0; i < gait_library_detail::list_count(leg_count); ++i)
+    if (gait_library_detail::same_as_flash(name, gait_library_detail::list_entry(items, i)->name)) return i;
   return kNoGaitIndex;
 }
 
+//! The gait called `name` with `leg_count` legs into *out (copied out of
+//! flash on the AVR); false (out untouched) when there is none.
+inline bool load_gait(uint8_t leg_count, const char* name, GaitTable* out) {
+  const uint8_t i = gait_index(leg_count, name);
+  if (i == kNoGaitIndex) return false;
+  flash_copy(out, gait_library_detail::list_entry(gait_library_detail::list_items(leg_count), i), sizeof *out);
+  return true;
+}
 inline bool load_gait(const RobotModel& model, const char* name, GaitTable* out) {
   return load_gait(model.leg_count, name, out);
 }
@@ -140,11 +126,8 @@ constexpr GaitList gaits_for(const RobotModel& model) {
 
 //! The gait called `name` that `model` supports, or nullptr.
 inline const GaitTable* find_gait(const RobotModel& model, const char* name) {
-  if (name == nullptr) return nullptr;
-  const GaitList list = gaits_for(model);
-  for (uint8_t i = 0; i < list.count; ++i)
-    if (strcmp(list.items[i]->name, name) == 0) return list.items[i];
-  return nullptr;
+  const uint8_t i = gait_index(model.leg_count, name);
+  return i == kNoGaitIndex ? nullptr : gaits_for(model).items[i];
 }
 #endif
 

@@ -37,16 +37,15 @@ struct GaitParams {
 };
 
 //! One entry per model, in the order of kAllRobots. In flash on the AVR:
-//! read it there through gait_params_at().
+//! read it there through gait_params_of().
 constexpr GaitParams kGaitParams[kRobotCount] STRIDER_PROGMEM = {
     // sprawl8 (seed 000): 20 mm steps clear a cable; 10 mm foot pads are the
     // seed's "wide ends of the legs".
     {"sprawl8", "crawl", SwingShape::kEllipse, 20.0f, 40.0f, 0.8f, 0.0f, 10.0f, 0.0f, 0.0f, 6.0f, 12.0f,
      30.0f, 1.0f},
     // mammal8 (seed 003): short steps and a 2 s cycle (the seed's walk is
-    // slow). Its 5 mm ball feet touch at a point: the 11 mm margin keeps the
-    // CoM 6 mm inside them; with 4 mm it rocked onto its swing foot, with 13
-    // or 15 mm the faster shift slides the feet (docs/simulator.md).
+    // slow); the 11 mm margin keeps the CoM 6 mm inside its 5 mm ball feet
+    // (other margins: docs/simulator.md).
     {"mammal8", "walk", SwingShape::kEllipse, 20.0f, 30.0f, 2.0f, 0.0f, 5.0f, 0.0f, 0.0f, 11.0f, 20.0f, 40.0f,
      1.5f},
     // dog12 (seed 001): the seed's rectangle swing (section 3.2); it crawls (a trot tips: docs/simulator.md).
@@ -77,13 +76,6 @@ constexpr bool values_sane() {
 
 static_assert(gait_params_detail::matches_models(), "kGaitParams: one entry per model, in kAllRobots order");
 static_assert(gait_params_detail::values_sane(), "kGaitParams: positive sizes and times");
-
-//! Entry r (< kRobotCount) of kGaitParams, copied out of flash on the AVR.
-inline GaitParams gait_params_at(uint8_t r) {
-  GaitParams p;
-  flash_copy(&p, &kGaitParams[r], sizeof p);
-  return p;
-}
 
 //! The index of `model`'s gait defaults in kGaitParams (by name), or
 //! kRobotCount for a model not listed.

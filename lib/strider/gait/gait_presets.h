@@ -1,7 +1,5 @@
-//! Gait presets: a model's named operating points, each a gait of the
-//! library walked with its own live parameters (gait_tuning.h), picked like a
-//! gait: `gait trot10` is `gait trot` and the `set` lines of its row. `get`
-//! and `status` then show the gait's own name, tuned (`tune=changed`).
+//! Gait presets: a model's named operating points, each a library gait walked
+//! with its own live parameters (gait_tuning.h; docs/gaits.md, "Presets").
 #ifndef STRIDER_GAIT_GAIT_PRESETS_H
 #define STRIDER_GAIT_GAIT_PRESETS_H
 
@@ -25,12 +23,8 @@ struct GaitPreset {
   uint16_t step_height_cmm;
 };
 
-//! mammal8 at seed 003's own operating point (table 5): 10 mm steps, walked
-//! at the seed's 2.5 (walk), 4.2 (trot) and 3.1 mm/s (pace). The cycles give
-//! a trot and pace stride of 10 mm at those speeds; the walk keeps its 2 s
-//! (a 5 mm stride at 2.5 mm/s: with 4 s it went 16-41 % short). Low steps; the
-//! trot's 10 mm and four-foot overlaps of the trot and pace were the least
-//! short in the simulator (docs/simulator.md, "mammal8 at seed 003's point").
+//! mammal8 at seed 003's own operating point (table 5): docs/gaits.md,
+//! "Presets"; why these values: docs/simulator.md, "mammal8 at seed 003's point".
 constexpr GaitPreset kGaitPresets[] STRIDER_PROGMEM = {
     {"mammal8", "walk10", "walk", 0, 0, 1000, 300},
     {"mammal8", "trot10", "trot", 238, 60, 1000, 1000},

@@ -1,5 +1,4 @@
-//! GaitState: what the gait engine is doing (sitting, standing up,
-//! standing, walking, stopping, sitting down), and its name.
+//! GaitState: what the gait engine is doing, and its name.
 #ifndef STRIDER_GAIT_GAIT_STATE_H
 #define STRIDER_GAIT_GAIT_STATE_H
 
@@ -27,10 +26,8 @@ constexpr uint8_t kGaitStateCount = 6;
 //! in flash); "standing" for a value out of range.
 inline const char* to_string(GaitState s) {
   const char* p = kGaitStateNames;
-  for (uint8_t i = uint8_t(s) < kGaitStateCount ? uint8_t(s) : uint8_t(GaitState::kStanding); i > 0; --i) {
-    while (flash_u8(p) != 0) ++p;
-    ++p;
-  }
+  for (uint8_t i = uint8_t(s) < kGaitStateCount ? uint8_t(s) : uint8_t(GaitState::kStanding); i > 0; --i)
+    while (flash_u8(p++) != 0) {}
   return p;
 }
 

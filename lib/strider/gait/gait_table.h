@@ -1,9 +1,7 @@
-//! GaitTable: a gait as data. Each leg lifts off once per cycle at its
-//! phase offset and stays in the air for (1 - duty) of the cycle. Phase
-//! convention: the cycle phase runs over [0, 1); leg i's own phase is
-//! psi_i = frac(phase - offset_i), so the leg is in swing for
-//! psi_i in [0, 1 - duty) and in stance for psi_i in [1 - duty, 1). Legs
-//! are numbered as the models number them (docs/robots.md).
+//! GaitTable: a gait as data. Each leg lifts off once per cycle at its phase
+//! offset and stays in the air for (1 - duty) of the cycle: with the cycle
+//! phase in [0, 1), leg i swings while psi_i = frac(phase - offset_i) < 1 - duty.
+//! Legs are numbered as the models number them (docs/robots.md).
 #ifndef STRIDER_GAIT_GAIT_TABLE_H
 #define STRIDER_GAIT_GAIT_TABLE_H
 
@@ -33,14 +31,10 @@ struct GaitTable {
 
 namespace gait_table {
 
-//! Leg i's own phase psi = frac(phase - offset_i), for phases in [0, 1).
-constexpr float leg_phase(const GaitTable& t, uint8_t leg, float phase) {
-  return phase - t.offset[leg] < 0.0f ? phase - t.offset[leg] + 1.0f : phase - t.offset[leg];
-}
-
-//! True when leg `leg` is in the air at cycle phase `phase` in [0, 1).
+//! True when leg `leg` is in the air at cycle phase `phase` in [0, 1): its
+//! own phase frac(phase - offset) below 1 - duty.
 constexpr bool in_swing(const GaitTable& t, uint8_t leg, float phase) {
-  return leg_phase(t, leg, phase) < 1.0f - t.duty;
+  return (phase - t.offset[leg] < 0.0f ? phase - t.offset[leg] + 1.0f : phase - t.offset[leg]) < 1.0f - t.duty;
 }
 
 //! Offsets in [0, 1), duty in (0, 1), a known leg count, unused slots zero.

@@ -1,10 +1,8 @@
 //! GaitTuning: the gait parameters a user changes live over the link
 //! (`set step_height|step_length|cycle|duty|swing V`, docs/protocol.md), in
 //! the protocol's integer units (no soft float in the firmware), and the
-//! rules that bound them: a step no higher and a swing path no higher than
-//! the model's own (the stored strides were searched with them), a duty
-//! that keeps as many feet down as the gait's table, and separated swings
-//! for the gaits that shift the body.
+//! rules that bound them (a step and swing path no higher than the model's
+//! own: the stored strides were searched with them).
 #ifndef STRIDER_GAIT_GAIT_TUNING_H
 #define STRIDER_GAIT_GAIT_TUNING_H
 
@@ -21,7 +19,6 @@ namespace strider {
 enum class TuneParam : uint8_t { kStepHeight = 0, kStepLength = 1, kCycle = 2, kDuty = 3, kSwing = 4 };
 constexpr uint8_t kTuneParamCount = 5;
 constexpr char kTuneParamNames[] STRIDER_PROGMEM = "step_height\0step_length\0cycle\0duty\0swing";
-constexpr char kSwingShapeNames[] STRIDER_PROGMEM = "rectangle\0semicircle\0ellipse\0cycloid\0parabola\0bezier";
 
 //! One gait's live parameters. Two decimals, as the protocol takes them.
 struct GaitTuning {
@@ -75,9 +72,8 @@ inline uint8_t fewest_feet_down(const LiftPhases& p, uint32_t swing) {
 }
 inline uint8_t fewest_feet_down(const GaitTable& t, uint32_t swing) { return fewest_feet_down(LiftPhases(t), swing); }
 
-//! Whether legs with different lift-off phases are never in the air together
-//! and a moment with every foot down lies between any two swings (what a
-//! body-shifting gait needs, gait_table::swings_separated()), for `swing`.
+//! gait_table::swings_separated() (what a body-shifting gait needs) for
+//! lift-off phases p and a swing of `swing`.
 inline bool swings_apart(const LiftPhases& p, uint32_t swing) {
   for (uint8_t j = 0; j < p.count; ++j)
     for (uint8_t i = 0; i < p.count; ++i) {
@@ -104,9 +100,8 @@ inline bool duty_allowed(const GaitTable& t, uint8_t duty_pct) {
   return gait_tuning_detail::duty_allowed(t, p, fewest_feet_down(p, table_fraction::swing_span(t.duty)), duty_pct);
 }
 
-//! The duties gait t may be walked with [0.01]: from the least allowed one
-//! to kMaxDutyPct (the allowed duties are one interval: more feet down only
-//! adds support and shortens the swings).
+//! The duties gait t may be walked with [0.01], the least allowed one to
+//! kMaxDutyPct (one interval: more feet down only adds support).
 inline TuneRange duty_range(const GaitTable& t) {
   const LiftPhases p(t);
   const uint8_t own = fewest_feet_down(p, table_fraction::swing_span(t.duty));
@@ -122,9 +117,8 @@ inline uint8_t duty_pct_of(const GaitTable& t) {
 }
 
 //! The swing shapes whose path never rises above shape `own`'s at the same
-//! horizontal progress and step height (bit = SwingShape, its own included;
-//! a semicircle counted at its highest under the others, at its lowest as
-//! their bound); test/gait checks it against the shapes' paths.
+//! progress and step height (bit = SwingShape; a semicircle at its highest
+//! under the others, at its lowest as their bound; test/gait checks it).
 constexpr uint8_t kSwingsWithin[kSwingShapeCount] STRIDER_PROGMEM = {0x1F, 0x02, 0x1E, 0x18, 0x10, 0x20};
 inline uint8_t swings_within(SwingShape own) { return flash_u8(&kSwingsWithin[uint8_t(own)]); }
 

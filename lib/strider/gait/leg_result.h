@@ -1,10 +1,6 @@
-//! What the walker reports per leg each tick (LegResult): the joints, the
-//! status and the contact, and for host tools (a profile's kFeet) the
-//! target, the foot reached, the IK's own status and the clamp (how far
-//! reach_projection.h moved a 2-DOF leg's target). status is the worse of
-//! the IK status and kClamped when the projection moved a foot on the ground
-//! by more than kClampToleranceMm or a foot in the air up or down
-//! (docs/gaits.md, "2-DOF legs").
+//! What the walker reports per leg each tick (LegResult): joints, status and
+//! contact; for host tools (a profile's kFeet) also the target, the foot
+//! reached, the IK's own status and the clamp (docs/gaits.md, "2-DOF legs").
 #ifndef STRIDER_GAIT_LEG_RESULT_H
 #define STRIDER_GAIT_LEG_RESULT_H
 
@@ -15,16 +11,6 @@ namespace strider {
 //! A 2-DOF foot moved by more than this counts as clamped [mm].
 constexpr double kClampToleranceMm = 0.5;
 
-//! What a LegResult keeps for host tools (kFeet).
-template <typename S, bool kFeet>
-struct LegFeet {
-  Vec3<S> target_mm;                //!< engine target, body frame [mm]
-  Vec3<S> foot_mm;                  //!< foot the joints reach, body frame [mm]
-  IkStatus ik_status;               //!< IK of the projected target
-  S clamp_mm;                       //!< how far the projection moved the target [mm]
-};
-template <typename S>
-struct LegFeet<S, false> {};
 //! Where Walker::tick() keeps a leg's target and foot when its result does not (!kFeet).
 template <typename S, bool kFeet>
 struct LegScratch {};
@@ -34,31 +20,33 @@ struct LegScratch<S, false> {
   Vec3<S> foot_mm;
 };
 
+//! What a LegResult keeps for host tools (kFeet); target() and foot(): the
+//! leg's body-frame target and reached foot, kept here or in the scratch.
+template <typename S, bool kFeet>
+struct LegFeet {
+  Vec3<S> target_mm;                //!< engine target, body frame [mm]
+  Vec3<S> foot_mm;                  //!< foot the joints reach, body frame [mm]
+  IkStatus ik_status;               //!< IK of the projected target
+  S clamp_mm;                       //!< how far the projection moved the target [mm]
+  Vec3<S>& target(LegScratch<S, true>&) { return target_mm; }
+  Vec3<S>& foot(LegScratch<S, true>&) { return foot_mm; }
+  void set_ik_status(IkStatus ik) { ik_status = ik; }
+  void set_clamp(S mm) { clamp_mm = mm; }
+};
+template <typename S>
+struct LegFeet<S, false> {
+  Vec3<S>& target(LegScratch<S, false>& s) { return s.target_mm; }
+  Vec3<S>& foot(LegScratch<S, false>& s) { return s.foot_mm; }
+  void set_ik_status(IkStatus) {}
+  void set_clamp(S) {}
+};
+
 template <typename S, bool kFeet = true>
 struct LegResult : LegFeet<S, kFeet> {
   typename AnyLeg<S>::Joints q;     //!< joints, seed convention [rad]
   IkStatus status;                  //!< worst of the IK status and the clamp
   bool contact;                     //!< foot on the ground
 };
-
-//! Where the walker keeps a leg's body-frame target and reached foot: in
-//! its result (kFeet) or in the scratch; what only a result with feet keeps.
-template <typename S>
-Vec3<S>& target_of(LegFeet<S, true>& r, LegScratch<S, true>&) { return r.target_mm; }
-template <typename S>
-Vec3<S>& target_of(LegFeet<S, false>&, LegScratch<S, false>& s) { return s.target_mm; }
-template <typename S>
-Vec3<S>& foot_of(LegFeet<S, true>& r, LegScratch<S, true>&) { return r.foot_mm; }
-template <typename S>
-Vec3<S>& foot_of(LegFeet<S, false>&, LegScratch<S, false>& s) { return s.foot_mm; }
-template <typename S>
-void set_ik_status(LegFeet<S, true>& r, IkStatus ik) { r.ik_status = ik; }
-template <typename S>
-void set_ik_status(LegFeet<S, false>&, IkStatus) {}
-template <typename S>
-void set_clamp(LegFeet<S, true>& r, S clamp_mm) { r.clamp_mm = clamp_mm; }
-template <typename S>
-void set_clamp(LegFeet<S, false>&, S) {}
 
 }  // namespace strider
 

@@ -1,6 +1,5 @@
 //! Odometry: the body's position [mm] and heading [rad] summed from its
-//! steps (stance.h's BodyStep), the heading kept as cos/sin too (no trig
-//! per tick).
+//! steps (stance.h's BodyStep), the heading kept as cos/sin too (no trig).
 #ifndef STRIDER_GAIT_ODOMETRY_H
 #define STRIDER_GAIT_ODOMETRY_H
 

@@ -1,9 +1,7 @@
-//! Where a 2-DOF leg can put its foot while walking: the projection of a foot
-//! target onto the leg's reachable surface, and how far it had to be moved
-//! (docs/gaits.md, "2-DOF legs"): a planar leg drops the sideways component;
-//! a sprawling leg keeps the height and the direction from the hip and moves
-//! the foot to rho = a1 + sqrt(a2^2 - z^2) (seed 000 eq 8); 3-DOF legs are
-//! unchanged.
+//! Where a 2-DOF leg can put its foot while walking (docs/gaits.md, "2-DOF
+//! legs"): a planar leg drops the sideways component; a sprawling leg keeps
+//! the height and the direction from the hip, at rho = a1 + sqrt(a2^2 - z^2)
+//! (seed 000 eq 8); 3-DOF legs are unchanged.
 #ifndef STRIDER_GAIT_REACH_PROJECTION_H
 #define STRIDER_GAIT_REACH_PROJECTION_H
 

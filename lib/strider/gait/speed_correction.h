@@ -1,12 +1,8 @@
 //! SpeedCorrection: how much of a gait's own body speed each model really
-//! makes on the ground, per model and gait, so that a commanded body speed
-//! (`walk V`, `turn W`, the RC pad) is the speed the body makes.
-//!
-//! Feet that slide leave the body short of the speed the engine walks:
-//! WalkerMotion divides the command by the ratio below before it reaches
-//! the engine; a pair not listed is slip-free (ratio 1). Measured in the
-//! simulator, firmware mode, steady speeds over a command held 7 s from
-//! standing (tools/sim/measure_speed.py prints the ratios; docs/results.md).
+//! makes on the ground (feet slide), per model and gait: WalkerMotion divides
+//! a command (`walk V`, `turn W`, the RC pad) by it so that the body makes the
+//! speed commanded; a pair not listed is slip-free (ratio 1). Measured in the
+//! simulator, firmware mode (tools/sim/measure_speed.py; docs/results.md).
 #ifndef STRIDER_GAIT_SPEED_CORRECTION_H
 #define STRIDER_GAIT_SPEED_CORRECTION_H
 

@@ -1,10 +1,7 @@
 //! Static stability (seed 003 section 3): the support polygon of the feet on
-//! the ground (the convex hull of foot pads of radius r), and the stability
-//! margin of the CoM's ground projection: its signed distance to the
-//! region's boundary, positive inside (docs/gaits.md, "Static stability").
-//! The hull is built once per change of the feet in contact (feet on the
-//! ground move rigidly with the body); Fixed works in units of 2^shift mm so
-//! squares of body-sized distances fit.
+//! the ground (the hull of foot pads of radius r) and the CoM's margin, its
+//! signed distance to the boundary (docs/gaits.md, "Static stability"). Fixed
+//! works in units of 2^shift mm so squares of body-sized distances fit.
 #ifndef STRIDER_GAIT_STABILITY_H
 #define STRIDER_GAIT_STABILITY_H
 

@@ -1,8 +1,7 @@
-//! Stance: a foot on the ground stays where it is on the ground while the
-//! body moves, so in the body frame it moves by the inverse of the body's
-//! motion (the arc d = dt (A v + B J v), A = sin(theta)/theta, B = (1 - cos
-//! theta)/theta from their series: docs/gaits.md, "Swing trajectories");
-//! plus the optional stance depth, and where a foot touches down.
+//! Stance: a foot on the ground stays where it is while the body moves, so in
+//! the body frame it moves by the inverse of the body's motion (the arc d = dt
+//! (A v + B J v), A = sin(theta)/theta, B = (1 - cos theta)/theta from their
+//! series: docs/gaits.md); the stance depth, and where a foot touches down.
 #ifndef STRIDER_GAIT_STANCE_H
 #define STRIDER_GAIT_STANCE_H
 

@@ -21,7 +21,8 @@ inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& pa
   using T = detail::VelocityLimitTables<>;
   const uint8_t r = gait_params_index(model);
   if (r >= kRobotCount) return kRobotCount;
-  const GaitParams d = gait_params_at(r);
+  GaitParams d;
+  flash_copy(&d, &kGaitParams[r], sizeof d);
   uint16_t print[enc::kFingerprintWords];
   enc::geometry_fingerprint(model, print);
   for (uint8_t k = 0; k < enc::kFingerprintWords; ++k)
@@ -57,14 +58,11 @@ bool stored_velocity_limits(const RobotModel& model, const GaitParams& params, S
   using T = detail::VelocityLimitTables<>;
   out.set_gait(model, scalar<S>(params.step_length_mm), scalar<S>(params.cycle_s));
   stored_limits_detail::set_strides(out, r);
-  S servo[3];
+  S* const servo[3] = {&out.lift_ms, &out.swing_ms_per_mm, &out.stance_ms_per_mm};
   for (uint8_t j = 0; j < 3; ++j) {
     const uint32_t lo = flash_u16(T::kServo[r], uint16_t(2 * j)), hi = flash_u16(T::kServo[r], uint16_t(2 * j + 1));
-    servo[j] = enc::q16_of(lo | (hi << 16), S());
+    *servo[j] = enc::q16_of(lo | (hi << 16), S());
   }
-  out.lift_ms = servo[0];
-  out.swing_ms_per_mm = servo[1];
-  out.stance_ms_per_mm = servo[2];
   return true;
 }
 

@@ -1,8 +1,7 @@
-//! Swing trajectories: where a foot is while it is in the air, as a function
-//! of its swing phase s in [0, 1] (0 lift-off, 1 touch-down): u the fraction
-//! of the way from the lift-off point to the touch-down point (seen from
-//! above), w the height as a fraction of the apex. The shapes' formulas and
-//! apexes: docs/gaits.md, "Swing trajectories".
+//! Swing trajectories: where a foot is in the air at swing phase s in [0, 1]
+//! (0 lift-off, 1 touch-down): u the fraction of the way from lift-off to
+//! touch-down point, w the height as a fraction of the apex (the shapes'
+//! formulas: docs/gaits.md, "Swing trajectories").
 #ifndef STRIDER_GAIT_SWING_TRAJECTORY_H
 #define STRIDER_GAIT_SWING_TRAJECTORY_H
 
@@ -25,16 +24,15 @@ enum class SwingShape : uint8_t {
 
 constexpr uint8_t kSwingShapeCount = 6;
 
+//! The shapes' names in SwingShape's order, each ended by a NUL (in flash on the AVR).
+constexpr char kSwingShapeNames[] STRIDER_PROGMEM = "rectangle\0semicircle\0ellipse\0cycloid\0parabola\0bezier";
+
+//! The shape's name: a pointer into kSwingShapeNames; "ellipse" for a value out of range.
 inline const char* to_string(SwingShape shape) {
-  switch (shape) {
-    case SwingShape::kRectangle: return "rectangle";
-    case SwingShape::kSemicircle: return "semicircle";
-    case SwingShape::kEllipse: return "ellipse";
-    case SwingShape::kCycloid: return "cycloid";
-    case SwingShape::kParabola: return "parabola";
-    case SwingShape::kBezier: return "bezier";
-  }
-  return "ellipse";
+  const char* p = kSwingShapeNames;
+  for (uint8_t i = uint8_t(shape) < kSwingShapeCount ? uint8_t(shape) : uint8_t(SwingShape::kEllipse); i > 0; --i)
+    while (flash_u8(p++) != 0) {}
+  return p;
 }
 
 //! Parses a shape name; returns false and leaves `shape` alone otherwise.

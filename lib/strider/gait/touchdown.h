@@ -1,6 +1,5 @@
-//! Touchdown: where a foot lands, stance.h's touchdown_point with its
-//! leg-independent terms (the rotation and offset of the landing stride)
-//! computed once per change of that stride (every tick of a ramp).
+//! Touchdown: where a foot lands (stance.h's touchdown_point), its leg-independent
+//! terms (rotation, offset) computed once per change of the landing stride.
 #ifndef STRIDER_GAIT_TOUCHDOWN_H
 #define STRIDER_GAIT_TOUCHDOWN_H
 

@@ -1,9 +1,7 @@
-//! Velocity limits of a robot: how long a stride each leg can make in each
-//! direction (from its reachable workspace at the standing pose) and how fast
-//! it can step (from its servos' speed and the joint travel of a step); and
-//! the planner that turns a velocity command into a stride and a step rate
-//! (docs/gaits.md, "Velocity commands and limits"; the search:
-//! velocity_search.h).
+//! Velocity limits of a robot: each leg's longest stride per direction (its
+//! reach at the standing pose), how fast it can step (its servos' speed), and
+//! the planner of a command's stride and step rate (docs/gaits.md, "Velocity
+//! commands and limits"; the search: velocity_search.h).
 #ifndef STRIDER_GAIT_VELOCITY_LIMITS_H
 #define STRIDER_GAIT_VELOCITY_LIMITS_H
 

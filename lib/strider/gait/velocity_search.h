@@ -1,8 +1,7 @@
-//! The IK search of a robot's velocity limits (VelocityLimits,
-//! velocity_limits.h), at configuration time, never per tick: per leg and
-//! direction the longest stride whose stance ends and swing all solve, and
-//! the servo time a step takes (docs/gaits.md, "Velocity commands and
-//! limits").
+//! The IK search of a robot's velocity limits (velocity_limits.h), at
+//! configuration time, never per tick: per leg and direction the longest
+//! stride whose stance ends and swing all solve, and the servo time a step
+//! takes (docs/gaits.md, "Velocity commands and limits").
 #ifndef STRIDER_GAIT_VELOCITY_SEARCH_H
 #define STRIDER_GAIT_VELOCITY_SEARCH_H
 

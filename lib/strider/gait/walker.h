@@ -28,8 +28,9 @@ class Walker {
   //! not fit. solve_now false leaves the legs' IK to a later refresh().
   bool configure(const RobotModel& model, const GaitTable& gait, const GaitParams& params, SwingShape shape,
                  bool sitting = false, bool solve_now = true) {
-    if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !velocity_limits_known<P::kSearch>(model, params, shape) || !build_legs(model))
-      return false;
+    // Without the IK search, fill_gait_config() needs the model's stored velocity limits.
+    const bool limits_known = P::kSearch || stored_limits_index(model, params, shape) < kRobotCount;
+    if (model.leg_count > kLegs || gait.leg_count != model.leg_count || !limits_known || !build_legs(model)) return false;
     configure_engine(model, params, shape, gait, sitting);
     reset_legs(solve_now);
     return true;
@@ -71,26 +72,11 @@ class Walker {
   //! One control tick of dt [s]: engine, then every leg.
   void tick(S dt) {
     engine_.tick(dt);
-    solve();
+    refresh();
   }
 
-  void refresh() { solve(); }
-
-  const Result& leg(uint8_t i) const { return out_[i]; }
-  //! Every leg's result, leg_count() of them (ServoStage::frame()).
-  const Result* results() const { return out_; }
-  //! A body-frame point [mm] in leg i's frame, as the walker computes it.
-  Vec3<S> to_leg(uint8_t i, const Vec3<S>& body_mm) const { return to_leg_unchecked(i, body_mm); }
-  //! Static stability margin [mm] (negative: CoM outside the support).
-  S margin_mm() const { return engine_.margin_mm(); }
-  IkStatus worst_status() const {
-    IkStatus w = IkStatus::kOk;
-    for (uint8_t i = 0; i < leg_count(); ++i) w = worst(w, out_[i].status);
-    return w;
-  }
-
- private:
-  void solve() {
+  //! Every leg for the engine's feet and body pose as they are.
+  void refresh() {
     // A level body (the usual case): its translation only, no rotation.
     if (engine_.body_level()) {
       const Vec3<S> shift = engine_.body_translation();
@@ -102,6 +88,22 @@ class Walker {
     solve_legs(&body, pose.translation_mm);
   }
 
+  const Result& leg(uint8_t i) const { return out_[i]; }
+  //! Every leg's result, leg_count() of them (ServoStage::frame()).
+  const Result* results() const { return out_; }
+  //! A body-frame point [mm] in leg i's frame, as the walker computes it.
+  STRIDER_ALWAYS_INLINE Vec3<S> to_leg(uint8_t i, const Vec3<S>& body_mm) const {
+    return to_leg_turned(turn_[i], legs_.mount(i), body_mm);
+  }
+  //! Static stability margin [mm] (negative: CoM outside the support).
+  S margin_mm() const { return engine_.margin_mm(); }
+  IkStatus worst_status() const {
+    IkStatus w = IkStatus::kOk;
+    for (uint8_t i = 0; i < leg_count(); ++i) w = worst(w, out_[i].status);
+    return w;
+  }
+
+ private:
   //! Every leg for the body posed by `body` (nullptr: only moved by `shift`
   //! [mm]). Vectors are copied field by field (avr-gcc loops over bytes).
   void solve_legs(const Transform<S>* body, const Vec3<S>& shift) {
@@ -114,11 +116,11 @@ class Walker {
     const bool* contact = engine_.contacts();
     const uint8_t n = leg_count();
     for (uint8_t i = 0; i < n; ++i, ++r, ++p) {
-      Vec3<S>& t = target_of(*r, scratch);
+      Vec3<S>& t = r->target(scratch);
       if (body != nullptr) {
         t = foot_in_body(*body, *p);
       } else if (still) {
-        copy(*p, t);
+        leg_ik::copy_point(*p, t);
       } else {
         t.x = sub_inline(p->x, shift.x);
         t.y = sub_inline(p->y, shift.y);
@@ -127,10 +129,10 @@ class Walker {
       r->contact = contact[i];
       // Fast IK of a body-frame target (Fixed coxa/femur/tibia), reached.
       if (!projects && legs_.solver(i).ik_body_fast(legs_.mount(i), t, r->q, ik_options_)) {
-        set_clamp(*r, S(0));
-        set_ik_status(*r, IkStatus::kOk);
+        r->set_clamp(S(0));
+        r->set_ik_status(IkStatus::kOk);
         r->status = IkStatus::kOk;
-        if (kFeet) copy(t, foot_of(*r, scratch));
+        if (kFeet) leg_ik::copy_point(t, r->foot(scratch));
         continue;
       }
       solve_leg(i, *r, scratch, projects);
@@ -139,30 +141,30 @@ class Walker {
 
   //! solve_legs()'s leg i when the fast IK does not take it.
   STRIDER_NOINLINE void solve_leg(uint8_t i, Result& r, Scratch& scratch, bool projects) {
-    const Vec3<S> leg_target = to_leg_unchecked(i, target_of(r, scratch));
+    const Vec3<S> leg_target = to_leg(i, r.target(scratch));
     if (!projects) {  // 3-DOF legs: the target as it is, nothing can slide
       // The point reached goes into foot (leg frame, then body frame).
-      set_clamp(r, S(0));
-      const IkStatus ik = legs_.solver(i).ik(leg_target, r.q, foot_of(r, scratch), ik_options_);
-      set_ik_status(r, ik);
+      r.set_clamp(S(0));
+      const IkStatus ik = legs_.solver(i).ik(leg_target, r.q, r.foot(scratch), ik_options_);
+      r.set_ik_status(ik);
       r.status = ik;
       // A target reached as given is the body-frame target itself.
       if (!kFeet || ik == IkStatus::kUnreachable) return;
-      if (same(foot_of(r, scratch), leg_target)) {
-        copy(target_of(r, scratch), foot_of(r, scratch));
+      if (same(r.foot(scratch), leg_target)) {
+        leg_ik::copy_point(r.target(scratch), r.foot(scratch));
       } else {
-        foot_of(r, scratch) = to_body(i, foot_of(r, scratch));
+        r.foot(scratch) = to_body(i, r.foot(scratch));
       }
       return;
     }
     Vec3<S> reached;
     S moved = S(0);
     const Vec3<S> t = proj_.apply(leg_target, moved);
-    set_clamp(r, moved);
+    r.set_clamp(moved);
     const IkStatus ik = legs_.solver(i).ik(t, r.q, reached, ik_options_);
-    set_ik_status(r, ik);
+    r.set_ik_status(ik);
     if (kFeet && ik != IkStatus::kUnreachable)
-      foot_of(r, scratch) = moved == S(0) && same(reached, leg_target) ? target_of(r, scratch) : to_body(i, reached);
+      r.foot(scratch) = moved == S(0) && same(reached, leg_target) ? r.target(scratch) : to_body(i, reached);
     constexpr S tolerance = scalar<S>(kClampToleranceMm);
     const bool slid = r.contact ? moved > tolerance : abs(t.z - leg_target.z) > tolerance;
     r.status = worst(ik, slid ? IkStatus::kClamped : IkStatus::kOk);
@@ -182,25 +184,15 @@ class Walker {
     engine_.configure(model, legs_.per_leg(), params, shape, gait, sitting);
   }
 
-  static void copy(const Vec3<S>& from, Vec3<S>& to) {
-    to.x = from.x;
-    to.y = from.y;
-    to.z = from.z;
-  }
-
   void reset_legs(bool solve_now = true) {
     for (uint8_t i = 0; i < leg_count(); ++i) {
-      out_[i].q = typename AnyLeg<S>::Joints();
-      for (uint8_t j = 0; j < AnyLeg<S>::kMaxDof; ++j) out_[i].q[j] = S(0);
+      out_[i].q = typename AnyLeg<S>::Joints();  // zeros
       Scratch unused;
-      foot_of(out_[i], unused) = engine_.foot(i);
+      out_[i].foot(unused) = engine_.foot(i);
     }
-    if (solve_now) solve();
+    if (solve_now) refresh();
   }
 
-  STRIDER_ALWAYS_INLINE Vec3<S> to_leg_unchecked(uint8_t i, const Vec3<S>& p) const {
-    return to_leg_turned(turn_[i], legs_.mount(i), p);
-  }
   Vec3<S> to_body(uint8_t i, const Vec3<S>& p) const { return to_body_turned(turn_[i], legs_.mount(i), p); }
 
   // Same bits (an IK that reached its target copies it): no float compare.
@@ -210,7 +202,8 @@ class Walker {
 
   STRIDER_NOINLINE bool build_legs(const RobotModel& model) {
     dof_ = 0;
-    if (!walker_detail::build_legs(model, legs_)) return false;
+    if (!legs_.fits(model)) return false;
+    legs_.build(model);
     for (uint8_t i = 0; i < model.leg_count; ++i) turn_[i] = mount_turn_of(legs_.mount(i));
     proj_ = ReachProjection<S>::make(model);
     dof_ = model.dof();

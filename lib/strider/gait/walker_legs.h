@@ -82,14 +82,6 @@ struct LegSolvers<S, kLegs, kSolvers, true> {
   uint8_t of[kLegs] = {};  // leg -> its solver
 };
 
-//! `legs` of `model` at run time: false when the model does not fit.
-template <typename Legs>
-bool build_legs(const RobotModel& model, Legs& legs) {
-  if (!Legs::fits(model)) return false;
-  legs.build(model);
-  return true;
-}
-
 }  // namespace walker_detail
 
 }  // namespace strider
