@@ -1,10 +1,6 @@
-//! Controller: dispatches parsed commands to a motion sink (its MotionSink
-//! concept: motion_modes.h) and answers each text line with exactly one
-//! reply; keeps the settings in force, their calibration and their saving.
-//! Its mode, the deadman and obstacle avoidance: MotionModes. It knows
-//! nothing of the gait engine: the firmware binds a MotionSink (gait
-//! engine), a ByteStore (EEPROM) and feeds it bytes, sonar readings and the
-//! time [ms].
+//! Controller: dispatches parsed commands to a MotionSink (motion_modes.h)
+//! and answers each text line with exactly one reply; keeps the settings in
+//! force, their calibration and their saving (a ByteStore).
 #ifndef STRIDER_CONTROL_CONTROLLER_H
 #define STRIDER_CONTROL_CONTROLLER_H
 
@@ -21,8 +17,7 @@
 namespace strider {
 
 namespace controller_detail {
-//! The controller's own parser (on_byte(), on_idle()); none for a caller
-//! with parsers of its own (on_parsed() only): no RAM for an unused line.
+//! The controller's own parser; none (no RAM) for a caller with its own.
 template <bool kOwn>
 struct ParserSlot {
   ParserSlot() = default;
@@ -44,20 +39,17 @@ class Controller : private controller_detail::ParserSlot<kOwnParser>, public Mot
   using Modes::deadman_;
 
  public:
-  //! record: where `loaded` came from (load_settings()); the next save
-  //! goes to the other slot.
+  //! record: where `loaded` came from; the next save goes to the other slot.
   Controller(Sink& sink, Store& store, const Settings& loaded, SettingsStatus load_status,
              const SettingsRecord& record = SettingsRecord())
       : Modes(sink), store_(store), settings_(loaded), cal_(loaded), record_(record) {
     record_.load_status = load_status;
     apply_loaded();
   }
-  //! The same from the settings the store gave (settings_store.h).
   Controller(Sink& sink, Store& store, const LoadedSettings& loaded)
       : Controller(sink, store, loaded.settings, loaded.record.load_status, loaded.record) {}
 
-  //! One received byte at now_ms. Returns true when *w holds a reply line
-  //! (without line ending) to send.
+  //! One received byte; true when *w holds a reply line (no line ending).
   bool on_byte(uint8_t b, uint32_t now_ms, ReplyWriter& w) {
     Command c;
     const ParseResult r = this->parser_.feed(b, &c);
@@ -70,23 +62,20 @@ class Controller : private controller_detail::ParserSlot<kOwnParser>, public Mot
     return handle(this->parser_.idle_timeout(&c), c, now_ms, w);
   }
 
-  //! A parse result from a parser of the caller's (one per serial port, so
-  //! two links never mix their bytes). Returns true when *w holds a reply.
+  //! A parse result from one of the caller's parsers (one per port).
   bool on_parsed(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
     return handle(r, c, now_ms, w);
   }
 
-  //! One control tick: deadman and avoidance; sends the walking command.
-  //! walked_vy: the sideways speed the gait really walks [0.1 mm/s]
-  //! (Avoidance::update). Returns true when *w holds a notice (`info ...`).
+  //! Deadman and avoidance; walked_vy [0.1 mm/s] (Avoidance::update).
+  //! True when *w holds a notice.
   bool tick(uint32_t now_ms, const SonarReading& sonar, ReplyWriter& w,
             int32_t walked_vy = Avoidance::kUnknownSpeed) {
     return this->tick_motion(now_ms, sonar, settings_, w, walked_vy);
   }
 
-  //! The end of a `cal level` measurement (RobotApp, after start_level_cal()
-  //! said kStarted): done, the offsets [mg] saved with the settings in force
-  //! and applied; or why it failed (nothing changed). *w: the reply.
+  //! The end of a `cal level` measurement: the offsets [mg] saved and
+  //! applied, or why it failed (nothing changed).
   void level_cal_done(LevelCalStatus st, int8_t x_mg, int8_t y_mg, ReplyWriter& w) {
     if (st == LevelCalStatus::kMoving) return write_error(w, ControlError::kNotStill, FlashText{text::kNotStill});
     if (st == LevelCalStatus::kNoReading) return write_error(w, ControlError::kNoImu, FlashText{text::kNoImu});
@@ -106,9 +95,8 @@ class Controller : private controller_detail::ParserSlot<kOwnParser>, public Mot
   const SettingsRecord& settings_record() const { return record_; }
 
  private:
-  // Not inlined into the callers: they keep a reply buffer on the stack, and
-  // the replies' code addresses the writer through a register here instead
-  // of at the far end of the caller's frame (flash).
+  // Not inlined: the writer is then addressed through a register, not at
+  // the far end of the caller's frame (flash).
   STRIDER_NOINLINE bool handle(ParseResult r, const Command& c, uint32_t now_ms, ReplyWriter& w) {
     if (r == ParseResult::kNothing) return false;
     if (r == ParseResult::kError) {
@@ -272,13 +260,11 @@ class Controller : private controller_detail::ParserSlot<kOwnParser>, public Mot
   Settings settings_;
   Calibration cal_;
   SettingsRecord record_;  // and how the settings loaded at start-up
-  // Both constructors: the loaded settings into the deadman, the speed and the sink.
   void apply_loaded() {
     deadman_.set_timeout(settings_.deadman_ms);
     this->speed_pct_ = settings_.speed_pct;
     sink_.apply_settings(settings_);
   }
-
 };
 
 }  // namespace strider

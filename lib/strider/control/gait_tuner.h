@@ -60,8 +60,7 @@ class GaitTuner {
     if (live_.height_dmm > 0) motion.set_body_height(live_.height_dmm);
   }
 
-  //! Sets parameter p to v (its unit / 100; kSwing: a SwingShape); false
-  //! when bounds() does not allow it.
+  //! Parameter p to v (its unit / 100; kSwing: a SwingShape); false: out of bounds().
   bool set(WalkerMotion<S, P>& motion, TuneParam p, int32_t v) {
     if (!in_tune_range(range(motion, p), p, v)) return false;
     switch (p) {
@@ -85,10 +84,8 @@ class GaitTuner {
     return st;
   }
 
-  //! What parameter p may be for the gait walked now: a step no higher than
-  //! the model's own, a stride up to the longest a leg makes, a cycle the
-  //! servos step at, a duty that keeps the gait's support and whose swing
-  //! fits the cycle, a swing under the model's own (kSwing: lo is a mask).
+  //! What parameter p may be for the gait walked now (docs/protocol.md,
+  //! "Live gait parameters"; kSwing: lo is a mask).
   TuneRange range(const WalkerMotion<S, P>& motion, TuneParam p) const {
     using namespace gait_tuner_detail;
     const VelocityLimits<S, P::kSearch>& lim = motion.walker().engine().config().limits;
@@ -158,8 +155,7 @@ class GaitTuner {
   };
   static constexpr char kHeightName[] STRIDER_PROGMEM = "height";
 
-  //! The gait's defaults: the model's at duty_pct, the cycle no shorter
-  //! than the servos step at with it.
+  //! The model's defaults at duty_pct, the cycle no shorter than the servos step at.
   GaitTuning gait_defaults(const WalkerMotion<S, P>& motion, uint8_t duty_pct) const {
     GaitTuning t = own_tuning();
     t.duty_pct = duty_pct;

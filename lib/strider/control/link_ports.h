@@ -1,9 +1,7 @@
-//! RobotApp's links: the notices it sends to every port (Link: `void
-//! send_line(uint8_t port, const char* line)`, kAllPorts every port), and
-//! LinkPorts, one CommandParser per port, each reply back to the port its
-//! line came from (a checked line's checked too). The reply is written into
-//! a member, not onto the stack: a command may reconfigure the walker, the
-//! deepest call chain there is (docs/reliability.md).
+//! RobotApp's links (Link: `void send_line(uint8_t port, const char* line)`):
+//! the boot notices, and LinkPorts, one CommandParser per port, each reply
+//! back to its line's port. The reply buffer is a member, not on the stack:
+//! a command may reconfigure the walker, the deepest call chain (docs/reliability.md).
 #ifndef STRIDER_CONTROL_LINK_PORTS_H
 #define STRIDER_CONTROL_LINK_PORTS_H
 
@@ -87,7 +85,6 @@ class LinkPorts {
  public:
   LinkPorts() : last_byte_ms_(), reply_buf_() {}
 
-  //! One byte from link `port` (0 or 1) at now_us; a reply goes back to that port.
   template <typename Link>
   void on_byte(uint8_t port, uint8_t b, uint32_t now_us, Ctl& ctl, Cal& cal, Link& link) {
     if (port >= kLinkPorts) return;
@@ -98,9 +95,8 @@ class LinkPorts {
     reply(port, r, c, now_ms, ctl, cal, link);
   }
 
-  //! Link `port` may have dropped bytes before the next one, at now_us: the
-  //! line they damage gets `err 10` (CommandParser::lost()); after
-  //! kLineIdleMs of silence they ended what was sent: `err 8`, as idle.
+  //! Bytes lost before the next one: its line gets `err 10`; after
+  //! kLineIdleMs of silence they ended the line: `err 8`, as idle.
   template <typename Link>
   void on_bytes_lost(uint8_t port, uint32_t now_us, Ctl& ctl, Cal& cal, Link& link) {
     if (port >= kLinkPorts) return;

@@ -5,13 +5,9 @@
 //!   -> WalkerMotion (gait engine, body pose, IK) -> ServoStage (servo map,
 //!   slew limit, soft start) -> ServoOutput
 //!
-//! The caller owns the hardware: it passes bytes in, pings the sonar when
-//! sonar().ping_due() says so and hands the echo samples back, calls tick()
-//! every kTickPeriodUs and reports how long the tick took. Time is a parameter:
-//! now_us, a wrapping microsecond count that the caller reads from its clock.
-//! S the scalar (float or Fixed); Output a ServoOutput (hal_interfaces.h)
-//! with `void flush()` ending a frame; Store a ByteStore; P the build
-//! profile (below); Link: link_ports.h.
+//! The caller owns the hardware and the clock (now_us, wrapping): it passes
+//! bytes and sonar echoes in and calls tick() every kTickPeriodUs. Output: a
+//! ServoOutput (hal_interfaces.h); Store: a ByteStore; Link: link_ports.h.
 #ifndef STRIDER_CONTROL_ROBOT_APP_H
 #define STRIDER_CONTROL_ROBOT_APP_H
 
@@ -29,21 +25,15 @@
 
 namespace strider {
 
-// Where RobotApp's model is (ModelMemory, channel_map.h): in RAM, or in
-// flash (the firmware: no RAM copy of its ~370 bytes; the configuration
-// reads a copy on the stack in begin(), the servo stage when the PWM or the
-// trims change).
-
-//! P: the build profile (robots/build_profile.h): the walker's and the
-//! servo stage's shape (a firmware's: control/firmware_profile.h).
+//! P: the build profile (robots/build_profile.h). The model may be in flash
+//! (ModelMemory: no RAM copy of its ~370 bytes; read through a stack copy).
 template <typename S, typename Output, typename Store, typename P = HostProfile<S>>
 class RobotApp {
   class Sink;
 
  public:
-  //! Reads the settings from store (EEPROM) but touches no other hardware.
-  //! The model is read at start-up (begin(), set_gait_params()) only. Out
-  //! of line: the settings' copy is off the stack before begin() runs.
+  //! Reads the settings from store but touches no other hardware. Out of
+  //! line: the settings' copy is off the stack before begin() runs.
   STRIDER_NOINLINE RobotApp(const RobotModel& model, Output& out, Store& store, ModelMemory where = ModelMemory::kRam)
       : model_(model),
         model_in_flash_(where == ModelMemory::kFlash),
@@ -55,19 +45,12 @@ class RobotApp {
         last_tick_us_(0),
         ok_(false) {}
 
-  //! Power-up: walker (sitting), servo map, boot notices; the soft start
-  //! begins with the first tick. False (and an `err` notice) when the model
-  //! does not fit. Takes the velocity-limit search's time (gait_config.h).
-  //! held (a warm start: an MCU reset the servo boards ran through): what
-  //! every output drives, `channels` OFF words (ServoStage::adopt_outputs());
-  //! the joints that hold a pulse keep it, the walker starts standing and
-  //! the soft start moves each leg from its pulses to the standing pose
-  //! (`info servos held joints=N`).
+  //! Power-up: walker (sitting), servo map, boot notices, soft start. False
+  //! (and an `err` notice) when the model does not fit. held (a warm start):
+  //! `channels` OFF words (ServoStage::adopt_outputs()); see hold().
   template <typename Link>
   bool begin(uint32_t now_us, Link& link, const uint16_t* held = nullptr, uint8_t channels = 0) {
-    // The walker's configuration needs the deepest stack of the whole
-    // firmware: nothing else (no line buffer) is on the stack meanwhile,
-    // and its copy of the model is gone before announce() runs.
+    // The deepest stack of the firmware: nothing else is on it meanwhile.
     const char* error = configure_from_model();  // in flash; nullptr: configured
     ok_ = error == nullptr;
     if (ok_) {
@@ -86,18 +69,15 @@ class RobotApp {
     return true;
   }
 
-  //! The servo boards as their driver sees them (the caller owns the bus:
-  //! call it before each tick()): a silent board stops the walk and walking
-  //! is refused (err 31) until every board answers again (servo_board_watch.h).
+  //! The servo boards as their driver sees them, before each tick()
+  //! (servo_board_watch.h: a silent board stops the walk, err 31).
   template <typename Link>
   STRIDER_NOINLINE void servo_boards(const ServoBoardReport& r, uint32_t now_us, Link& link) {
     controller_.set_servo_fault(board_watch_.report(r, now_us / 1000u, stage_, out_, link));
   }
 
-  //! Other gait parameters than the model's defaults (e.g. tuned ones), after
-  //! begin() and before the robot stands up: the robot starts over sitting.
-  //! False (nothing changed) when the walker refuses them. Works on a copy of
-  //! the walker first: meant for host tools (the AVR stack has no room for it).
+  //! Other gait parameters (host tools: tried on a copy of the walker, too
+  //! big for the AVR stack), after begin(); false: refused, nothing changed.
   bool set_gait_params(const GaitParams& params) {
     WalkerMotion<S, P> trial = motion_;
     RobotModel model;
@@ -109,16 +89,12 @@ class RobotApp {
     return true;
   }
 
-  //! The battery divider's ADC reading (the firmware: once a tick); `status`
-  //! has `battery_mv` while a pack is seen (robot_sensing.h).
+  //! The battery divider's ADC reading, once a tick (robot_sensing.h).
   template <typename Link>
   void battery(uint16_t adc_code, Link& link) { sensing_.battery_reading(adc_code, controller_, motion_, link); }
-  //! The divider and thresholds (the firmware: from its board file).
   void set_battery_config(const BatteryConfig& c) { sensing_.battery = BatteryMonitor(c); }
-  //! Whether an MPU-6050 answered at start-up (robot_sensing.h).
   void set_imu_present(bool present) { sensing_.set_imu_present(present); }
-  //! One IMU sample per tick, before tick() (robot_sensing.h); with `level
-  //! on` the body's roll and pitch follow (level_body.h).
+  //! One IMU sample per tick, before tick() (robot_sensing.h).
   template <typename Link>
   STRIDER_NOINLINE void imu(const ImuSample<S>* sample, Link& link) {
     sensing_.imu_sample(sample, controller_, motion_, stage_.all_on(), ports_, link);
@@ -137,11 +113,9 @@ class RobotApp {
     ports_.on_bytes_lost(port, now_us, controller_, sensing_.level_cal(), link);
   }
 
-  //! One control tick (call every kTickPeriodUs): partial lines time out,
-  //! controller (deadman, avoidance), walker, servo frame. period_us: the
-  //! time the gait advances by, when the caller schedules the ticks (the
-  //! firmware: whole periods since the last tick's scheduled time, so that
-  //! the start's jitter does not move the gait); 0: the time since the last.
+  //! One control tick: controller, walker, servo frame. period_us: what the
+  //! gait advances by (the firmware: whole scheduled periods, so that start
+  //! jitter does not move the gait); 0: the time since the last tick.
   template <typename Link>
   void tick(uint32_t now_us, Link& link, uint32_t period_us = 0) {
     if (!ok_) return;
@@ -155,8 +129,7 @@ class RobotApp {
     stage_.frame(motion_.walker().results(), now_ms, out_);
   }
 
-  //! How long the last tick took [us] (the caller measures), ticks it had
-  //! to skip, its stack probe: `status` (control_tick.h).
+  //! The tick's time [us], skipped ticks, stack probe: `status` (control_tick.h).
   void record_tick_time(uint32_t took_us) { tick_load_.record(took_us); }
   void record_missed_ticks(uint16_t n) { tick_load_.record_missed(n); }
   void set_stack_probe(uint16_t (*probe)()) { tick_load_.stack_probe = probe; }
@@ -180,9 +153,8 @@ class RobotApp {
     read_model(model_, where(), to);
   }
 
-  //! Walker (legs' IK not yet solved) and servo stage from (a copy of) the
-  //! model; keeps its name and board count for announce(). The error line
-  //! (reply_texts.h), nullptr when configured.
+  //! Walker and servo stage from a copy of the model; the error line, or
+  //! nullptr when configured.
   STRIDER_NOINLINE const char* configure_from_model() {
     RobotModel model;
     copy_model(&model);
@@ -192,7 +164,6 @@ class RobotApp {
     const char* error = configure_walker(model);
     return error != nullptr ? error : configure_stage(model) ? nullptr : text::kErrServos;
   }
-  //! The walker at the model's gait defaults, sitting, its legs' IK not yet solved.
   const char* configure_walker(const RobotModel& model) {
     GaitParams params;
     if (!gait_params_of(model, &params)) return text::kErrGait;

@@ -1,8 +1,6 @@
-//! RobotAppSink: RobotApp's MotionSink (the concept: motion_modes.h), what
-//! its controller commands: motion to the walker, servo power and settings
-//! to the servo stage, the live gait parameters to the gait tuner, the level
-//! body and `cal level` to its sensing, and RobotApp's fields of `status`.
-//! A friend of App (RobotApp).
+//! RobotAppSink: RobotApp's MotionSink (motion_modes.h): the controller's
+//! commands to the walker, servo stage, gait tuner and sensing, and
+//! RobotApp's fields of `status`.
 #ifndef STRIDER_CONTROL_ROBOT_APP_SINK_H
 #define STRIDER_CONTROL_ROBOT_APP_SINK_H
 
@@ -20,10 +18,8 @@
 
 namespace strider {
 
-//! ` walk_vx= walk_vy= walk_wz=`: the command after avoidance and the
-//! robot's limits, as the body speed it makes (speed_correction.h); the
-//! gait, its state, the IK's, the servos' and the live tuning's origin
-//! unless the model's own.
+//! ` walk_vx= ...`: the command as the body speed it makes (speed_correction.h),
+//! the gait, its state, IK, servos, tuning origin unless the model's own.
 template <typename S, typename P, typename Stage>
 void write_motion_status(ReplyWriter& w, const WalkerMotion<S, P>& motion, const Stage& stage, TuneOrigin origin) {
   const auto& e = motion.walker().engine();

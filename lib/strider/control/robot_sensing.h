@@ -25,9 +25,8 @@ static_assert(kLevelTickS * 1e6 == double(kTickPeriodUs), "level_body.h's tick i
 template <typename S, typename P = HostProfile<S>>
 class RobotSensing {
  public:
-  //! Whether an MPU-6050 answered at start-up (never called: no `imu=` in
-  //! `status`); with one, the filter learns the gyro's offset fast until the
-  //! robot first stands.
+  //! Whether an MPU-6050 answered at start-up (never called: no `imu=`);
+  //! with one, the gyro's offset is learnt fast until the robot first stands.
   void set_imu_present(bool present) {
     imu_probed_ = true, imu_present_ = present;
     if (!present) return;
@@ -48,9 +47,8 @@ class RobotSensing {
     if (battery.critical()) motion.walker().engine().sit_down();
   }
 
-  //! One IMU sample per tick (nullptr: the read failed), less the settings'
-  //! accelerometer offsets, into the attitude, the level body and the fall
-  //! (`info fall`: servos limp, err 33); to `cal level` first while it runs.
+  //! One IMU sample per tick (nullptr: failed read) into `cal level`, the
+  //! attitude, the level body and the fall (`info fall`, err 33).
   template <typename Ctl, typename Ports, typename Link>
   void imu_sample(const ImuSample<S>* sample, Ctl& ctl, WalkerMotion<S, P>& motion, bool servos_on, Ports& ports,
                   Link& link) {
@@ -129,8 +127,7 @@ class RobotSensing {
     level_body(motion, servos_on);
     return fall_.update(attitude_.tilt_rad());
   }
-  //! Learning ends once the robot first stands; the level acts while it
-  //! stands or walks, servos on.
+  //! Learning ends at the first stand; the level acts standing or walking.
   void level_body(WalkerMotion<S, P>& motion, bool servos_on) {
     const GaitState st = motion.walker().engine().state();
     if (level_.learning() && st == GaitState::kStanding) {

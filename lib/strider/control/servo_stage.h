@@ -4,14 +4,10 @@
 //! turns in one frame (a new gait, pose or trim never makes a servo slam),
 //! and writes only the channels that changed; Output::flush() ends the frame.
 //!
-//! Soft start: after power-up or relax every output is off (no pulse, servo
-//! limp); the legs are switched on one at a time, kSoftStartStepMs apart, so
-//! the servos do not all draw their start-up current at once and brown out
-//! the supply (ANCHORS: the most common complaint). A servo's first pulse
-//! cannot be interpolated (its position is unknown): that is what the
-//! staging is for. An output that already holds a pulse (adopt_outputs():
-//! after an MCU reset the boards ran through, or a board that came back)
-//! is not switched off: its leg moves on from that pulse at its turn.
+//! Soft start: after power-up or relax every output is off; the legs are
+//! switched on one at a time, kSoftStartStepMs apart, so that the servos'
+//! start-up currents do not brown out the supply (a first pulse cannot be
+//! slewed). An output that holds a pulse (adopt_outputs()) stays on.
 #ifndef STRIDER_CONTROL_SERVO_STAGE_H
 #define STRIDER_CONTROL_SERVO_STAGE_H
 
@@ -36,16 +32,10 @@ inline uint16_t servo_step_us(ServoPart part) {
   return uint16_t(servo_travel(part).speed_deg_s * (float(kFramePeriodMs) / 1000.0f) * (2000.0f / 180.0f) + 0.5f);
 }
 
-//! Its build profile P (robots/build_profile.h) gives the most joints
-//! (servos) it drives (a firmware: its model's joint count) and the tick
-//! map's slots.
-//!
-//! RAM: the stage keeps no servo channels (servo_map.h) of its own, only
-//! the tick map's constants, which a frame needs. The channels are rebuilt
-//! from the model (in flash on the AVR, through a copy on the stack) when
-//! the trims or the PWM change, by channel(), and in every frame only when
-//! the tick map cannot hold them (map_joint(), slow; for the built-in servo
-//! parts only near 400 Hz, where a joint's longest pulse reaches the period).
+//! P (robots/build_profile.h): the most joints and the tick map's slots.
+//! RAM: no servo channels kept, only the tick map's constants; channels are
+//! rebuilt from the model (a stack copy) when trims or PWM change, and every
+//! frame only when the map cannot hold them (near 400 Hz: map_joint(), slow).
 template <typename S, typename P = HostProfile<S>>
 class ServoStage {
   static constexpr uint8_t N = P::kJoints;
@@ -57,10 +47,8 @@ class ServoStage {
         next_leg_ms_(0), count_(0), dof_(0), legs_(0), enabled_legs_(0), soft_start_(false),
         status_(ServoStatus::kOk) {}
 
-  //! Channel map of `model` (readable: a copy of `source` if that is in
-  //! flash); every output off. The stage reads `source` again later
-  //! (nullptr: `model` itself), which must outlive it. False when the model
-  //! does not fit.
+  //! Every output off; `model` is a readable copy of `source` (nullptr:
+  //! `model`), which must outlive the stage. False when it does not fit.
   bool configure(const RobotModel& model, const RobotModel* source = nullptr, ModelMemory where = ModelMemory::kRam) {
     // Joint k = leg dof + j: slot j when the tick map has dof slots, for
     // legs of one geometry (the same limits: one range per slot), else none;
@@ -80,11 +68,8 @@ class ServoStage {
     return count_ != 0;
   }
 
-  //! Trims, oscillator and PWM frequency from the next frame on (the bus may
-  //! not be up yet when settings are loaded). Keeps a pointer, not a copy (RAM):
-  //! s must outlive the stage or the next call (RobotApp passes the
-  //! controller's settings or its calibration's live values), and must be
-  //! given before the first frame.
+  //! Trims, oscillator and PWM from the next frame on. Keeps a pointer (RAM):
+  //! s must outlive the next call; needed before the first frame.
   void set_settings(const Settings& s) {
     settings_ = &s;
     pwm_pending_ = true;
@@ -103,22 +88,18 @@ class ServoStage {
     next_leg_ms_ = now_ms;
   }
 
-  //! Takes over what the outputs of the boards in board_mask drive now
-  //! (adopt_held_outputs(), servo_warm_start.h): the joints that hold a pulse.
-  //! Call after apply_pending() (the limits' ticks).
+  //! Takes over the pulses held by the boards in board_mask
+  //! (servo_warm_start.h); call after apply_pending().
   template <typename Output>
   uint8_t adopt_outputs(Output& out, const uint16_t* words, uint8_t channels, uint8_t board_mask) {
     const uint8_t held = adopt_held_outputs(tick_map_, fast_, count_, ticks_, kOff, out, words, channels, board_mask);
-    // Every board (a warm start): this replaces the relax of configure().
-    // Some boards: a relax asked for meanwhile still applies to all.
+    // A warm start (every board) replaces configure()'s relax.
     if (board_mask == 0xFF) relax_pending_ = false;
     return held;
   }
 
-  //! Switches the legs on again one at a time from now_ms, as at power-up,
-  //! without relaxing anything: a leg keeps what its outputs drive until its
-  //! turn (after adopt_outputs(): a board that came back), then moves on from
-  //! it. Only while the servos are on or starting (not after relax).
+  //! The soft start again from now_ms without relaxing: a leg holds its
+  //! outputs until its turn. Only while the servos are on or starting.
   void restart_soft_start(uint32_t now_ms) {
     if (!all_on() && !starting()) return;
     enabled_legs_ = 0;
@@ -141,18 +122,16 @@ class ServoStage {
   const ServoTickMap<S, N, kSlots>& tick_map() const { return tick_map_; }
   ServoStatus last_status() const { return status_; }
 
-  //! Applies pending settings now (prescale to the boards, the fast map's
-  //! constants), e.g. at start-up, so that no control tick pays for it.
-  //! frame() does it too when settings change, the map's constants one leg per frame.
+  //! Applies pending settings now (start-up), so that no control tick pays
+  //! for it; frame() does it one leg per frame.
   template <typename Output>
   void apply_pending(Output& out) {
     if (pwm_pending_) apply_pwm(out);
     fit_legs(legs_);
   }
 
-  //! One frame at now_ms of the legs' joint angles, legs[i].q[j] [rad] (the
-  //! walker's leg results, Walker::results()): soft start, map, slew, write;
-  //! ends with out.flush().
+  //! One frame of legs[i].q[j] [rad] (Walker::results()): soft start, map,
+  //! slew, write, out.flush().
   template <typename Leg, typename Output>
   ServoStatus frame(const Leg* legs, uint32_t now_ms, Output& out) {
     const bool new_pwm = pwm_pending_;
@@ -168,10 +147,8 @@ class ServoStage {
       ++enabled_legs_;
       next_leg_ms_ = now_ms + kSoftStartStepMs;
     }
-    // New settings: every output holds its pulse (rescaled to a new PWM
-    // period at once) while the map's constants are rebuilt, a leg per frame
-    // from the next one (a whole map is ~20 ms of float work on the AVR:
-    // more than a tick).
+    // New settings: outputs hold their pulses while the map is rebuilt a
+    // leg per frame (a whole map is ~20 ms of float work on the AVR).
     if (fitted_legs_ < legs_) {
       if (!new_pwm) fit_legs(1);
     } else {
@@ -184,9 +161,8 @@ class ServoStage {
  private:
   static constexpr uint16_t kOff = 0xFFFF;  // ticks_ of an output that is off (no pulse)
 
-  //! The enabled legs' joints through the tick map, or (model given: the
-  //! map cannot hold them) through map_joint() with channels rebuilt from
-  //! the model; slewed, written when changed. The worst status.
+  //! The enabled legs' joints through the tick map (model given: through
+  //! map_joint()), slewed, written when changed; the worst status.
   template <typename Leg, typename Output>
   ServoStatus write_legs(const Leg* legs, Output& out, const RobotModel* model) {
     ServoStatus worst_status = ServoStatus::kOk;
@@ -219,8 +195,7 @@ class ServoStage {
     return write_legs(legs, out, &m);
   }
 
-  //! The tick map's constants for the timing and trims of up to n more
-  //! legs, from the model (a copy, if it is in flash); after the last leg
+  //! The tick map's constants for up to n more legs; after the last one
   //! fast_ says whether the map holds every joint.
   STRIDER_NOINLINE void fit_legs(uint8_t n) {
     if (count_ == 0 || fitted_legs_ >= legs_) return;  // a model that does not fit; nothing to do
@@ -236,14 +211,12 @@ class ServoStage {
     if (fitted_legs_ == legs_) fast_ = !unfit_;
   }
 
-  //! New oscillator or PWM frequency: prescale to the boards, the outputs that
-  //! are on rescaled to keep their pulse widths, new slew steps.
+  //! New oscillator or PWM: prescale, outputs rescaled to keep their pulse widths.
   template <typename Output>
   void apply_pwm(Output& out) {
     pwm_pending_ = false;
     const uint32_t old_period = timing_.period_x64();
-    // The map's constants again (fit_legs()), for the trims even when the
-    // oscillator is refused (the timing is then kept).
+    // Refit even for a refused oscillator (new trims).
     fitted_legs_ = 0;
     unfit_ = false;
     if (configure_servo_pwm(out, timing_, *settings_) == PwmTimingStatus::kBadOscillator) return;
@@ -255,7 +228,6 @@ class ServoStage {
       out.write_ticks(tick_map_.channel(k), ticks_[k]);
     }
     for (uint8_t j = 0; j < dof_; ++j) {
-      // Pulse change per frame at the servo's top speed (500-2500 us over 180 deg).
       const uint16_t t = timing_.pulse_ticks(servo_step_us(part_[j]));
       step_[j] = t == 0 ? uint16_t(1) : t;
     }

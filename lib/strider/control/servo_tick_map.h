@@ -1,12 +1,8 @@
-//! ServoTickMap: the servo loop's per-joint mapping, joint angle [rad] ->
-//! PCA9685 ticks, with zero, direction, centre, trim, limits, pulse range and
-//! PWM timing folded into a few constants per joint at configuration.
-//!
-//! Per joint and frame: d = base + direction * joint [rad], clamped into
-//! [0, travel]; ticks = round(ticks(0) + d * ticks_per_rad): ~150 cycles per
-//! joint for Fixed instead of ~2,000 for map_joint() (servo_map.h), with the
-//! same contract (clamped: kLimited; NaN: centre, kNotFinite) and ticks
-//! within one of map_joint()'s (test/control).
+//! ServoTickMap: joint angle [rad] -> PCA9685 ticks per frame, a joint's
+//! servo map (servo_map.h) folded into a few constants at configuration:
+//! d = base + direction * joint [rad], clamped into [0, travel]; ticks =
+//! round(ticks(0) + d * ticks_per_rad): ~150 cycles per Fixed joint instead
+//! of ~2,000 for map_joint(), same contract, ticks within one of its.
 #ifndef STRIDER_CONTROL_SERVO_TICK_MAP_H
 #define STRIDER_CONTROL_SERVO_TICK_MAP_H
 
@@ -108,8 +104,7 @@ class ServoTickMap {
     return ServoTickStatus::kOk;
   }
 
-  //! Joint i alone (channel and direction set even on kUnsupported); does
-  //! not change count().
+  //! Joint i alone (channel and direction set even on kUnsupported).
   ServoTickStatus configure_joint(uint8_t i, const ServoChannel<S>& ch, S trim, const Pca9685Timing& timing) {
     ServoTickOwn<S>& own = joints_.own(i);
     own.channel = ch.channel;
@@ -175,8 +170,7 @@ class ServoTickMap {
     return cmd;
   }
 
-  //! Writes joints [first, first + n) from joint_rad[0..n) through out
-  //! (ServoOutput); returns the worst status.
+  //! Writes joints [first, first + n) through out; the worst status.
   template <typename Output>
   ServoStatus write(Output& out, uint8_t first, const S* joint_rad, uint8_t n) const {
     return write_joints(out, first, joint_rad, n, PerJoint<kSlots == 0>());

@@ -1,12 +1,7 @@
-//! WalkerMotion: the controller's motion commands in protocol units applied
-//! to a Walker (gait engine -> body pose -> IK). Velocities arrive in
-//! [0.1 mm/s] and [0.1 deg/s], the body pose in [0.1 deg], the height in
-//! [0.1 mm] (the protocol's integers, control/command.h); a pose or height
-//! that a leg cannot reach from its standing foot position is refused and
-//! changes nothing.
-//!
-//! Power-up and relax leave the robot sitting (body lowered, feet down):
-//! stand_up() raises it once the servos are on (servo_stage.h's soft start).
+//! WalkerMotion: the controller's motion commands in protocol units
+//! ([0.1 mm/s], [0.1 deg/s], [0.1 deg], [0.1 mm]) applied to a Walker; a pose
+//! or height a standing leg cannot reach is refused and changes nothing.
+//! Power-up and relax leave the robot sitting; stand_up() raises it.
 #ifndef STRIDER_CONTROL_WALKER_MOTION_H
 #define STRIDER_CONTROL_WALKER_MOTION_H
 
@@ -29,17 +24,14 @@ class WalkerMotion {
  public:
   WalkerMotion() = default;
 
-  //! Builds the walker for `model` with its default gait and swing shape,
-  //! sitting. Start-up only: takes the stored velocity limits (or, for a
-  //! model without them, the search of gait_config.h).
+  //! The walker for `model` with its default gait parameters, sitting.
   bool configure(const RobotModel& model) {
     GaitParams params;
     return gait_params_of(model, &params) && configure(model, params);
   }
 
-  //! The same with other gait parameters (e.g. tuned ones), sitting; the
-  //! velocity limits are searched unless `params` are the model's defaults.
-  //! solve_now false: the legs' IK waits for walker().refresh().
+  //! The same with other gait parameters; solve_now false: the legs' IK
+  //! waits for walker().refresh().
   bool configure(const RobotModel& model, const GaitParams& params, bool solve_now = true) {
     GaitTable gait;
     if (!load_gait(model, params.default_gait, &gait) ||
@@ -54,9 +46,8 @@ class WalkerMotion {
   const GaitTable& gait() const { return walker_.engine().gait(); }
   const char* robot() const { return robot_; }  //!< the model's name; nullptr before configure()
 
-  //! Protocol velocity -> engine command (the controller applied the speed %).
-  //! An unchanged one (an RC button the phone app repeats) is not planned
-  //! again: planning costs more than a tick's gait step.
+  //! Protocol velocity -> engine command. An unchanged one (a repeated RC
+  //! button) is not planned again: planning costs more than a tick.
   void set_velocity(const Twist& v) {
     if (have_command_ && v.vx == last_.vx && v.vy == last_.vy && v.wz == last_.wz) return;
     have_command_ = true;
@@ -81,10 +72,8 @@ class WalkerMotion {
     return robot_ != nullptr && gait_choice_for(robot_, gait().name, v.vx, v.vy, v.wz, to);
   }
 
-  //! The RC buttons' speeds at 100 %: the pad's defaults (RcLimits), or the
-  //! top speeds of the gait the pad walks at 100 % where it makes less
-  //! (speed_correction.h): the pad at 100 % is the fastest speed the robot
-  //! really makes.
+  //! The RC buttons' speeds at 100 %: RcLimits, or less where the gait the
+  //! pad walks then makes less (speed_correction.h).
   RcLimits pad_limits() const {
     RcLimits lim;
     if (robot_ == nullptr) return lim;
@@ -96,17 +85,12 @@ class WalkerMotion {
   //! Stop stepping; the feet finish their swing and the robot stands.
   void stand() { set_velocity(Twist{0, 0, 0}); }
 
-  //! The servos went limp: the robot is (physically) down. Starts over sitting,
-  //! keeping gait, body pose and height, so that re-enabled servos meet the pose
-  //! the legs are nearest to and stand up from there.
+  //! The servos went limp: starts over sitting, keeping gait, pose and height.
   void sit_now() { restart(true); }
 
-  //! The servos hold a standing robot (the boards kept their pulses through
-  //! an MCU reset): starts over standing, so that the legs go from where they
-  //! are to the standing pose instead of down to the sitting one.
+  //! The servos hold a standing robot (a warm start): starts over standing.
   void stand_now() { restart(false); }
 
-  //! Rises from sitting (no effect unless sitting).
   void stand_up() { walker_.engine().stand_up(); }
   bool sitting() const { return walker_.engine().state() == GaitState::kSitting; }
 
@@ -156,11 +140,9 @@ class WalkerMotion {
   S stand_height_mm() const { return stand_height_mm_; }
   const BodyOffsets<S>& offsets() const { return offsets_; }
 
-  //! The heights and angles the legs reach from standing (motion_reach.h),
-  //! as find_reach() found them (all 0 before).
+  //! What the legs reach from standing (motion_reach.h); 0 before find_reach().
   const MotionReach& reach() const { return reach_; }
-  //! Finds reach() for the configured walker, sitting and without body
-  //! offsets (after configure(); about 50 checks of every leg's IK).
+  //! After configure(): about 50 checks of every leg's IK.
   STRIDER_NOINLINE void find_reach() {
     const int16_t stand_mm = whole_mm(stand_height_mm_);
     reach_ = find_motion_reach(
@@ -179,7 +161,6 @@ class WalkerMotion {
   }
 
  private:
-  //! Walks table g from now on, the same body speed in it.
   void set_gait_table(const GaitTable& g) {
     walker_.engine().set_gait(g);
     correct_for_gait();
@@ -210,9 +191,8 @@ class WalkerMotion {
     stand_height_mm_ = -walker_.engine().config().home[0].z;
   }
 
-  //! Every leg's standing foot, seen from a body at offsets o, must be within
-  //! the joint limits: exactly for 3-DOF legs; a 2-DOF leg reaches only a
-  //! surface, so its nearest point (kClamped) is what the walker uses too.
+  //! Every standing foot within the joint limits; a 2-DOF leg reaches only a
+  //! surface, so its nearest point (kClamped) counts, as in the walker.
   bool try_offsets(const BodyOffsets<S>& o) {
     if (!reachable(o)) return false;
     offsets_ = o;
