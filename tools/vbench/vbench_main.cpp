@@ -19,9 +19,11 @@
 #include <thread>
 #include <vector>
 
+#include "pty.h"
 #include "script.h"
 #include "virtual_mega.h"
 
+using strider_vmega::Pty;
 using strider_vmega::RunStatus;
 using strider_vmega::ScriptEvent;
 using strider_vmega::VirtualMega;
@@ -90,54 +92,6 @@ struct LinePrinter {
         std::printf("%s uart%d: %s\n", seconds(t_us).c_str(), u, line[u].c_str());
         line[u].clear();
       }
-  }
-};
-
-// A pseudo-terminal whose slave side host tools open like a serial port.
-struct Pty {
-  int master = -1;
-  int slave = -1;  // kept open so the master never sees a hang-up
-  std::string path;
-  bool open_pty(std::string* error) {
-    master = posix_openpt(O_RDWR | O_NOCTTY);
-    if (master < 0 || grantpt(master) != 0 || unlockpt(master) != 0) {
-      *error = std::string("posix_openpt: ") + std::strerror(errno);
-      return false;
-    }
-    const char* name = ptsname(master);
-    if (!name) {
-      *error = "ptsname failed";
-      return false;
-    }
-    path = name;
-    slave = ::open(name, O_RDWR | O_NOCTTY);
-    if (slave >= 0) {
-      termios t;
-      if (tcgetattr(slave, &t) == 0) {
-        cfmakeraw(&t);
-        tcsetattr(slave, TCSANOW, &t);
-      }
-    }
-    fcntl(master, F_SETFL, fcntl(master, F_GETFL) | O_NONBLOCK);
-    return true;
-  }
-  std::string read_available() {
-    std::string out;
-    char buf[256];
-    for (;;) {
-      const ssize_t n = ::read(master, buf, sizeof buf);
-      if (n <= 0) break;
-      out.append(buf, size_t(n));
-    }
-    return out;
-  }
-  void write_bytes(const std::string& s) {
-    size_t off = 0;
-    while (off < s.size()) {
-      const ssize_t n = ::write(master, s.data() + off, s.size() - off);
-      if (n <= 0) break;  // nobody reads: drop, as a radio link would
-      off += size_t(n);
-    }
   }
 };
 
