@@ -23,13 +23,14 @@ class GaitEngine {
   GaitEngine()
       : phases_(), sit_requested_(false), step_in_place_(false), ramp_(), foot_(), contact_(), pending_(), swing_(),
         stance_elapsed_(), td_(), edge_(), margin_(), margin_fresh_(false), odo_(), held_(false),
-        window_(), posture_() {}
+        window_(), posture_(), home_draw_mm_() {}
 
   //! Takes the configuration and a gait; the robot stands (or sits).
   void configure(const GaitConfig<S, kLegs, kSearch>& config, const GaitTable& gait, bool sitting = false);
   //! The same with the configuration built in place (fill_gait_config()).
   void configure(const RobotModel& model, const AnyLeg<S>* legs, const GaitParams& params, SwingShape shape,
                  const GaitTable& gait, bool sitting = false) {
+    home_draw_mm_ = S(0);  // the homes built afresh
     fill_gait_config(cfg_, model, legs, params, shape);
     configure(cfg_, gait, sitting);
   }
@@ -41,6 +42,7 @@ class GaitEngine {
     ramp_.cmd_vx = vx * k;
     ramp_.cmd_vy = vy * k;
     ramp_.cmd_wz = wz * k;
+    if (cfg_.shift_x_only) draw_homes_for_turn();
     replan();
   }
   //! The swing of the feet that lift from now on: apex [mm] and shape.
@@ -136,6 +138,7 @@ class GaitEngine {
   //! The gait as walked: gait() relabelled for the direction of travel.
   GaitTable table() const { return phases_.table(); }
   const GaitTable& gait() const { return phases_.base; }
+  //! The configuration (planar legs turning: homes drawn in, draw_homes_for_turn()).
   const GaitConfig<S, kLegs, kSearch>& config() const { return cfg_; }
   const SupportPolygon<S, kLegs>& support() const {
     if (support_dirty_) build_support();
@@ -169,6 +172,7 @@ class GaitEngine {
     swing_.unsettle();
   }
 
+  STRIDER_NOINLINE void draw_homes_for_turn();
   void start_walking();
   void step_walk(S dt);
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
@@ -205,6 +209,7 @@ class GaitEngine {
   bool held_;  // a foot at its edge held the body still this tick
   ShiftWindow<S, kLegs> window_;
   BodyPosture<S> posture_;
+  S home_draw_mm_;  // planar legs turning: how far the homes are drawn in along x [mm]
 };
 
 }  // namespace strider

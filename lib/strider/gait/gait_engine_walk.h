@@ -9,7 +9,13 @@ namespace strider {
 
 template <typename S, uint8_t kLegs, bool kSearch>
 void GaitEngine<S, kLegs, kSearch>::configure(const GaitConfig<S, kLegs, kSearch>& config, const GaitTable& gait, bool sitting) {
-  if (&config != &cfg_) cfg_ = config;
+  if (&config != &cfg_) {
+    cfg_ = config;
+  } else if (home_draw_mm_ != S(0)) {  // a restart: from the standing homes
+    ramp_.cmd_vx = ramp_.cmd_vy = ramp_.cmd_wz = S(0);
+    draw_homes_for_turn();
+  }
+  home_draw_mm_ = S(0);
   phases_.base = gait;
   phases_.relabel = false;  // table() is the gait as given until the robot walks
   phases_.quarter = 0;
@@ -27,6 +33,32 @@ void GaitEngine<S, kLegs, kSearch>::configure(const GaitConfig<S, kLegs, kSearch
   support_dirty_ = true;
   margin_fresh_ = false;
   edge_.configure(cfg_);
+}
+
+//! Share of its distance from the body's middle (along x) by which a planar
+//! leg's foot stands nearer the middle while the robot turns in place (less
+//! as the command goes forward too). Planar feet cannot step sideways: the
+//! body turns by sliding them, and the front and rear feet resist that with
+//! their x distance as the lever against the side's stride at its y distance
+//! (docs/gaits.md, "Turning on planar legs": mammal8 turns 2 % of the gait's
+//! rate with its feet under the hips, 40-50 % drawn in by this share).
+constexpr double kPlanarTurnDraw = 0.3;
+
+template <typename S, uint8_t kLegs, bool kSearch>
+void GaitEngine<S, kLegs, kSearch>::draw_homes_for_turn() {
+  // The turn's part of the feet's stride speed against the forward part.
+  const S turn = abs(ramp_.cmd_wz) * abs(cfg_.home[0].y);
+  const S along = abs(ramp_.cmd_vx) + turn;
+  const S share = along == S(0) ? S(0) : turn / along;
+  const S draw = share * scalar<S>(kPlanarTurnDraw) * (abs(cfg_.home[0].x) + home_draw_mm_);
+  const S d = draw - home_draw_mm_;
+  if (d == S(0)) return;
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
+    if (cfg_.home[i].x > S(0)) cfg_.home[i].x = cfg_.home[i].x - d;
+    if (cfg_.home[i].x < S(0)) cfg_.home[i].x = cfg_.home[i].x + d;
+  }
+  home_draw_mm_ = draw;
+  invalidate_touchdown();
 }
 
 template <typename S, uint8_t kLegs, bool kSearch>

@@ -135,7 +135,10 @@ struct VelocityLimits : StrideTable<kSearch> {
                                  bool keep_stride, S* rate_lo) const {
     S lo = S(0), fastest = S(0);
     for (uint8_t i = 0; i < leg_count; ++i) {
-      const S rx = p.vx_mm_s - p.wz_rad_s * home[i].y, ry = p.vy_mm_s + p.wz_rad_s * home[i].x;
+      // A planar leg strides along x alone: a turn's sideways part is dropped
+      // (reach_projection.h), the body's feet slide instead of stepping it.
+      const S rx = p.vx_mm_s - p.wz_rad_s * home[i].y;
+      const S ry = sideways ? p.vy_mm_s + p.wz_rad_s * home[i].x : S(0);
       const S r = hypot(rx, ry) * duty;
       if (r == S(0)) continue;
       S room = leg_stride(i, rx, ry, budget_mm);
