@@ -33,8 +33,8 @@ struct PadCase {
 const PadCase kCases[] = {
     {&strider::kSprawl8, 155.0, 60.0},    // the pad trots at 100 % (gait_choice.h), which makes both
     {&strider::kHexapod18, 155.0, 36.0},  // tripod: 161 mm/s, turns at most 37.4 deg/s
-    {&strider::kSpider12, 27.0, 12.0},    // walk: 28.0-28.4 mm/s, 12.5 deg/s at most
-    {&strider::kMammal8, 20.0, 60.0},     // walk: 21.3-21.5 mm/s at most; turning not listed
+    {&strider::kSpider12, 26.2, 12.0},    // walk: 26.2 mm/s over 30 s, 12.5 deg/s at most
+    {&strider::kMammal8, 17.0, 3.4},      // walk: 16.2-17 mm/s over 30 s; turns 3.4 deg/s
     {&strider::kDog12, 120.0, 20.0},      // crawl: 116-135 mm/s, turns at most ~21 deg/s
 };
 
@@ -73,21 +73,78 @@ TEST(PadLimits, AGaitNotListedKeepsThePadsDefaults) {
 }
 
 // A commanded body speed through the correction and back is itself (to a
-// rounding step), both ways from zero, with and without an offset; zero
-// stays zero (standing still is not corrected into stepping).
+// rounding step), both ways from zero, on a ratio, a ratio less a loss and
+// a curve of several points; zero stays zero (standing still is not
+// corrected into stepping), and no curve is the same speed. Back to the
+// body it is a step off at most where the body gains a step or less per
+// step of the gait, two where it gains more (the curve's 1.34).
 TEST(SpeedCorrection, CommandAndBodySpeedRoundTrip) {
-  const uint16_t cases[][2] = {{10000, 0}, {9270, 33}, {9480, 6}, {4697, 0}};
-  for (const auto& c : cases) {
-    EXPECT_EQ(strider::speed_corrected(0, c[0], c[1]), 0);
+  const struct {
+    strider::SpeedCurve c;
+    int32_t step;
+  } cases[] = {{strider::affine(10000), 1},
+               {strider::affine(9270, 33), 1},
+               {strider::affine(4697), 1},
+               {{4, {{106, 41}, {239, 146}, {306, 236}, {1372, 1277}}}, 2}};
+  for (const auto& k : cases) {
+    const strider::SpeedCurve& c = k.c;
+    EXPECT_EQ(strider::speed_corrected(0, &c), 0);
     for (int32_t v = -3000; v <= 3000; v += 7) {
       if (v == 0) continue;
-      const int32_t g = strider::speed_corrected(v, c[0], c[1]);
+      const int32_t g = strider::speed_corrected(v, &c);
       EXPECT_EQ(g > 0, v > 0) << v;
-      EXPECT_LE(std::abs(strider::body_speed_of(g, c[0], c[1]) - v), 1) << v << " per10k " << c[0];
+      EXPECT_EQ(strider::speed_corrected(-v, &c), -g) << v;
+      EXPECT_LE(std::abs(strider::body_speed_of(g, &c) - v), k.step) << v << " curve of " << int(c.count);
     }
   }
-  EXPECT_EQ(strider::body_speed_of(20, 9270, 33), 0);  // under the offset: the body does not move
-  EXPECT_EQ(strider::body_speed_of(-20, 9270, 33), 0);
+  EXPECT_EQ(strider::speed_corrected(-123, nullptr), -123);
+  EXPECT_EQ(strider::body_speed_of(-123, nullptr), -123);
+}
+
+// A ratio less a loss: (v + loss) / ratio, rounded to the nearest step; the
+// gait under the loss moves the body not at all.
+TEST(SpeedCorrection, RatioAndLoss) {
+  const strider::SpeedCurve c = strider::affine(9270, 33);
+  EXPECT_EQ(strider::speed_corrected(155, &c), 203);  // (155 + 33) / 0.927 = 202.8
+  EXPECT_EQ(strider::speed_corrected(-155, &c), -203);
+  EXPECT_EQ(strider::body_speed_of(20, &c), 0);  // under the loss: the body does not move
+  EXPECT_EQ(strider::body_speed_of(-20, &c), 0);
+  EXPECT_EQ(strider::body_speed_of(1000, &c), 894);  // 927 - 33
+}
+
+// A curve's points are met exactly, between them it is linear, and beyond
+// its ends the end segments go on: below the first the body slows to zero
+// along the first segment, above the last it follows the last.
+TEST(SpeedCorrection, CurveInterpolatesAndExtends) {
+  const strider::SpeedCurve c{3, {{100, 40}, {200, 140}, {1200, 1100}}};
+  EXPECT_EQ(strider::speed_corrected(40, &c), 100);
+  EXPECT_EQ(strider::speed_corrected(140, &c), 200);
+  EXPECT_EQ(strider::speed_corrected(1100, &c), 1200);
+  EXPECT_EQ(strider::speed_corrected(90, &c), 150);    // half way along the first segment
+  EXPECT_EQ(strider::speed_corrected(620, &c), 700);   // half way along the second
+  EXPECT_EQ(strider::speed_corrected(10, &c), 70);     // the first segment extended
+  EXPECT_EQ(strider::speed_corrected(1196, &c), 1300);  // the last extended
+  EXPECT_EQ(strider::body_speed_of(60, &c), 0);        // the first segment crosses zero at 60
+  EXPECT_EQ(strider::body_speed_of(150, &c), 90);
+  EXPECT_EQ(strider::body_speed_of(-150, &c), -90);
+}
+
+// Every listed curve can be inverted and is a slip the robot can have:
+// gait and body speeds rising from point to point, and any positive command
+// asks the gait to step forward.
+TEST(SpeedCorrection, ListedCurvesRise) {
+  for (const strider::SpeedCorrection& e : strider::kSpeedCorrections) {
+    for (const strider::SpeedCurve* c : {&e.linear, &e.turn}) {
+      SCOPED_TRACE(std::string(e.robot) + " " + e.gait);
+      ASSERT_GE(c->count, 2);
+      ASSERT_LE(c->count, strider::kSpeedPointsMax);
+      for (uint8_t i = 1; i < c->count; ++i) {
+        EXPECT_GT(c->at[i].gait, c->at[i - 1].gait) << int(i);
+        EXPECT_GT(c->at[i].body, c->at[i - 1].body) << int(i);
+      }
+      EXPECT_GT(strider::speed_corrected(1, c), 0);
+    }
+  }
 }
 
 }  // namespace

@@ -52,11 +52,13 @@ def steady(trace_path, t0=STEADY_S, t1=STOP_S):
     return dist / dt, yaw / dt, lateral, dist
 
 
-def run(sim, elf, robot, gait, command, slider="", window_s=STOP_S - STEADY_S):
-    """One run: the command held from COMMAND_S; the steady window is
-    window_s long from STEADY_S (slow speeds take a longer one: the body's
-    sway within a step is then a smaller part of the displacement)."""
-    stop_s = STEADY_S + window_s
+def run(sim, elf, robot, gait, command, slider="", window_s=STOP_S - STEADY_S, shift_s=0.0):
+    """One run: the command held from COMMAND_S + shift_s; the steady window
+    is window_s long from STEADY_S + shift_s (slow speeds take a longer one:
+    the body's sway within a step is then a smaller part of the displacement)."""
+    command_s = COMMAND_S + shift_s
+    steady_s = STEADY_S + shift_s
+    stop_s = steady_s + window_s
     with tempfile.TemporaryDirectory() as d:
         sc = os.path.join(d, "run.scenario")
         with open(sc, "w") as f:
@@ -67,7 +69,7 @@ def run(sim, elf, robot, gait, command, slider="", window_s=STOP_S - STEADY_S):
             if slider:
                 f.write(f"at 0.6 send {slider}\n")
             end = "S" if slider else "stop\\n"
-            f.write(f"at {COMMAND_S:g} send {command}\nat {stop_s - 0.5:g} send status\\n\n"
+            f.write(f"at {command_s:g} send {command}\nat {stop_s - 0.5:g} send status\\n\n"
                     f"at {stop_s:g} send {end}\n")
         args = [sim, sc, "--out", os.path.join(d, "out"), "--quiet"]
         if elf:
@@ -82,7 +84,7 @@ def run(sim, elf, robot, gait, command, slider="", window_s=STOP_S - STEADY_S):
         m["gait_walked"] = fields.get("gait", "")
         m["commanded_vx"] = float(fields.get("vx", "nan"))
         m["commanded_wz"] = float(fields.get("wz", "nan"))
-        return m, steady(os.path.join(d, "out", "trace.csv"), STEADY_S, stop_s)
+        return m, steady(os.path.join(d, "out", "trace.csv"), steady_s, stop_s)
 
 
 def main():

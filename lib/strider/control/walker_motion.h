@@ -55,15 +55,16 @@ class WalkerMotion {
     constexpr S tenth = scalar<S>(0.1);
     constexpr S decideg_to_rad = scalar<S>(kDegToRad / 10.0);
     // The gait's own speed that makes the commanded body speed (speed_correction.h).
-    walker_.engine().set_command(S(speed_corrected(int32_t(v.vx), linear_per10k_, linear_offset_)) * tenth,
-                                 S(speed_corrected(int32_t(v.vy), linear_per10k_, linear_offset_)) * tenth,
-                                 S(speed_corrected(int32_t(v.wz), turn_per10k_)) * decideg_to_rad);
+    const SpeedCurve* linear = speed_curve(correction_, false);
+    walker_.engine().set_command(S(speed_corrected(int32_t(v.vx), linear)) * tenth,
+                                 S(speed_corrected(int32_t(v.vy), linear)) * tenth,
+                                 S(speed_corrected(int32_t(v.wz), speed_curve(correction_, true))) * decideg_to_rad);
   }
 
   //! The gait's own speed [0.1 mm/s] -> the body speed it makes on the
   //! ground (speed_correction.h); turn: a turn rate [0.1 deg/s].
   int32_t body_speed(int32_t gait_tenths, bool turn = false) const {
-    return turn ? body_speed_of(gait_tenths, turn_per10k_) : body_speed_of(gait_tenths, linear_per10k_, linear_offset_);
+    return body_speed_of(gait_tenths, speed_curve(correction_, turn));
   }
 
   //! The gait the RC pad walks body speed v in (gait_choice.h): true and
@@ -179,7 +180,7 @@ class WalkerMotion {
 
   //! The speed correction of the model and the gait in force.
   void correct_for_gait() {
-    if (robot_ != nullptr) speed_correction_of(robot_, gait().name, &linear_per10k_, &turn_per10k_, &linear_offset_);
+    if (robot_ != nullptr) correction_ = speed_correction_index(robot_, gait().name);
   }
 
   //! After the walker's configuration: no offsets, no command, the standing height.
@@ -224,9 +225,7 @@ class WalkerMotion {
   Twist last_{0, 0, 0};
   bool have_command_ = false;
   const char* robot_ = nullptr;     //!< the model's name (configure)
-  uint16_t linear_per10k_ = 0;    //!< speed_correction.h; 0: none
-  uint16_t turn_per10k_ = 0;
-  uint16_t linear_offset_ = 0;  //!< [0.1 mm/s], speed_correction.h
+  uint8_t correction_ = kSpeedCorrectionCount;  //!< the gait's entry in speed_correction.h; none: slip-free
   MotionReach reach_{0, 0, {0, 0, 0}, {0, 0, 0}};
 };
 

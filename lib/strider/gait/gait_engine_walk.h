@@ -41,7 +41,7 @@ void GaitEngine<S, kLegs, kSearch>::configure(const GaitConfig<S, kLegs, kSearch
 //! body turns by sliding them, and the front and rear feet resist that with
 //! their x distance as the lever against the side's stride at its y distance
 //! (docs/gaits.md, "Turning on planar legs": mammal8 turns 2 % of the gait's
-//! rate with its feet under the hips, 40-50 % drawn in by this share).
+//! rate with its feet under the hips, 31-38 % drawn in by this share).
 constexpr double kPlanarTurnDraw = 0.3;
 
 template <typename S, uint8_t kLegs, bool kSearch>

@@ -1,8 +1,11 @@
 //! SpeedCorrection: how much of a gait's own body speed each model really
-//! makes on the ground (feet slide), per model and gait: WalkerMotion divides
-//! a command (`walk V`, `turn W`, the RC pad) by it so that the body makes the
-//! speed commanded; a pair not listed is slip-free (ratio 1). Measured in the
-//! simulator, firmware mode (tools/sim/measure_speed.py; docs/results.md).
+//! makes on the ground (feet slide), per model and gait, as a curve of
+//! measured points: WalkerMotion maps a command (`walk V`, `turn W`, the RC
+//! pad) through it to the gait speed that makes the speed commanded; a pair
+//! not listed is slip-free. Measured in the simulator, firmware mode, on a
+//! firmware whose entry is affine(10000) (the gait's speed as commanded):
+//! the steady speed over a 30 s window, 3 s after the command
+//! (tools/sim/measure_speed.py --window 30; docs/results.md).
 #ifndef STRIDER_GAIT_SPEED_CORRECTION_H
 #define STRIDER_GAIT_SPEED_CORRECTION_H
 
@@ -14,14 +17,35 @@
 
 namespace strider {
 
+//! One measured point: the gait at its own speed `gait` made `body` on the
+//! ground [0.1 mm/s] or [0.1 deg/s] (negative: a point on a line extended
+//! below where the body starts moving).
+struct SpeedPoint {
+  uint16_t gait;
+  int16_t body;
+};
+
+constexpr uint8_t kSpeedPointsMax = 7;
+
+//! A gait's body speed against its own speed: `count` points, both speeds
+//! rising; linear between them, the end segments extended beyond.
+struct SpeedCurve {
+  uint8_t count;
+  SpeedPoint at[kSpeedPointsMax];
+};
+
+//! The body speed is the gait's times ratio, less a speed its steps lose at
+//! any pace: the line through (0, -loss) and (1000 mm/s, 1000 ratio - loss)
+//! [ratio in 1/10000, loss in 0.1 mm/s or 0.1 deg/s].
+constexpr SpeedCurve affine(int16_t ratio_per10k, int16_t loss = 0) {
+  return SpeedCurve{2, {{0, int16_t(-loss)}, {10000, int16_t(ratio_per10k - loss)}}};
+}
+
 struct SpeedCorrection {
-  char robot[10];                //!< model name (as kGaitParams)
-  char gait[kGaitNameBytes];     //!< gait name (gait_library.h)
-  uint16_t linear_per10k;      //!< achieved / commanded forward speed [1/10000]
-  uint16_t turn_per10k;        //!< achieved / commanded turn rate [1/10000]
-  //! The body speed the gait's steps lose at any speed [0.1 mm/s]: achieved
-  //! = ratio x the gait's speed - this.
-  uint16_t linear_offset;
+  char robot[10];             //!< model name (as kGaitParams)
+  char gait[kGaitNameBytes];  //!< gait name (gait_library.h)
+  SpeedCurve linear;          //!< forward and sideways [0.1 mm/s]
+  SpeedCurve turn;            //!< [0.1 deg/s]
   //! The RC pad's 100 % in this gait (RcLimits) [0.1 mm/s], [0.1 deg/s]; 0:
   //! the pad's default (155 mm/s, 60 deg/s), which the gait makes.
   uint16_t top_linear;
@@ -33,74 +57,108 @@ constexpr uint8_t kSpeedCorrectionCount = 6;
 constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGMEM = {
     // sprawl8 trot: walk 155 -> 76.6 mm/s uncorrected (0.494); 0.4697 keeps
     // the pad's 155 mm/s a few % over (the gait at 330 mm/s). turn 60 -> 52.7 deg/s.
-    {"sprawl8", "trot", 4697, 8780, 0, 0, 0},
+    {"sprawl8", "trot", affine(4697), affine(8780), 0, 0},
     // sprawl8 crawl: walk 15.5/31/38/66/82 -> 6.7/14.0/18.7/26.6/33.1 mm/s
     // (0.43-0.49, 0.40 above ~25 mm/s, where the pad trots: gait_choice.h);
     // 0.47 holds to ~25 mm/s within 10 %. turn 6/12/24 -> 5.8/11.8/23.7 deg/s.
-    {"sprawl8", "crawl", 4700, 9830, 0, 0, 0},
+    {"sprawl8", "crawl", affine(4700), affine(9830), 0, 0},
     // hexapod18 tripod: the gait at 17.2/34.4/86.1/172 mm/s -> 12.6/28.3/
     // 76.5/161.3 mm/s (0.927 less 3.3 mm/s); turn 6/12/30 -> 5.3/11.4/28.1
     // deg/s, its limit 37.4 deg/s (the pad's 100 % turns at 36).
-    {"hexapod18", "tripod", 9270, 9450, 33, 0, 360},
-    // spider12 walk: the gait at 3.0/6.0/15/17.2/30 mm/s -> 2.2/4.7/14.0/
-    // 16.3/27.8 mm/s (0.948 less 0.64 mm/s, its limit 28 mm/s); turn 6/12 ->
-    // 5.6/11.7 deg/s (its limit 12.5 deg/s).
-    {"spider12", "walk", 9480, 9600, 6, 270, 120},
-    // mammal8 walk, not corrected: walk 2/4/10/15.5/20 -> 1.5/3.0/9.5/15.9/
-    // 21.4 mm/s, its limit 21.4 mm/s; turning in place it hardly moves.
-    {"mammal8", "walk", 10000, 10000, 0, 200, 0},
-    // dog12 crawl: the gait at 17/30/70/137 mm/s -> 8.9/24.1/69/115.5 mm/s;
-    // turn 2.2/4.4/11/22 -> 1.4/3.9/9/19.4 deg/s (its limits 144, 23.5).
-    {"dog12", "crawl", 9000, 9100, 35, 1200, 200},
+    {"hexapod18", "tripod", affine(9270, 33), affine(9450), 0, 360},
+    // spider12 walk over a 30 s window: the gait at 3/6/8/14/28 mm/s ->
+    // 2.4/4.9/6.8/13.1/26.2 mm/s (its limit 28 mm/s; at 2.5 it made 2.8);
+    // turn 6/12 -> 5.6/11.7 deg/s (its limit 12.5 deg/s).
+    {"spider12", "walk", {5, {{30, 24}, {60, 49}, {80, 68}, {140, 131}, {280, 262}}}, affine(9600), 262, 120},
+    // mammal8 walk over a 30 s window: the gait at 1.5/2.5/4/6/10/20 mm/s ->
+    // 1.5/1.9/3.3/4.8/9.8/16.2 mm/s (4 s spans of the last range 11.6-20.8:
+    // its feet slide by fits), its limit 21.4 mm/s. Turning in place with
+    // its feet drawn in (docs/gaits.md, "Turning on planar legs"): 2/4/7/10/
+    // 14 deg/s -> -0.2/0.8/2.3/2.8/3.4 deg/s; the slowest are lost to the
+    // servos' dead band.
+    {"mammal8", "walk", {7, {{0, 0}, {15, 15}, {25, 19}, {40, 33}, {60, 48}, {100, 98}, {200, 162}}},
+     {5, {{20, -2}, {40, 8}, {70, 23}, {100, 28}, {140, 34}}}, 170, 34},
+    // dog12 crawl over a 30 s window: the gait at 8/12/17/30/70/137 mm/s ->
+    // 2.6/6.5/10.7/27.1/66.1/129.4 mm/s; turn 2.2/3/4.4/8/11/22 ->
+    // 1.1/2.4/3.9/6.6/9.7/20 deg/s (1.5 -> 0.2; its limits 144, 23.5).
+    {"dog12", "crawl", {6, {{80, 26}, {120, 65}, {170, 107}, {300, 271}, {700, 661}, {1370, 1294}}},
+     {6, {{22, 11}, {30, 24}, {44, 39}, {80, 66}, {110, 97}, {220, 200}}}, 1200, 200},
 };
 
-//! The entry of (robot, gait) into *c; false for a pair not listed.
-inline bool speed_correction_entry(const char* robot, const char* gait, SpeedCorrection* c) {
-  for (uint8_t i = 0; i < kSpeedCorrectionCount; ++i) {
-    flash_copy(c, &kSpeedCorrections[i], sizeof *c);
-    if (strcmp(c->robot, robot) == 0 && strcmp(c->gait, gait) == 0) return true;
+//! The index of (robot, gait)'s entry in kSpeedCorrections;
+//! kSpeedCorrectionCount for a pair not listed (slip-free).
+inline uint8_t speed_correction_index(const char* robot, const char* gait) {
+  uint8_t i = 0;
+  for (; i < kSpeedCorrectionCount; ++i) {
+    char r[sizeof kSpeedCorrections[i].robot], g[kGaitNameBytes];
+    flash_copy(r, kSpeedCorrections[i].robot, sizeof r);
+    flash_copy(g, kSpeedCorrections[i].gait, sizeof g);
+    if (strcmp(r, robot) == 0 && strcmp(g, gait) == 0) break;
   }
-  return false;
+  return i;
 }
 
-//! The ratios of (robot, gait) into *linear and *turn [1/10000]; 10000 for a
-//! pair not listed.
-inline void speed_correction_of(const char* robot, const char* gait, uint16_t* linear, uint16_t* turn,
-                                uint16_t* linear_offset) {
-  SpeedCorrection c;
-  const bool listed = speed_correction_entry(robot, gait, &c);
-  *linear = listed ? c.linear_per10k : 10000;
-  *turn = listed ? c.turn_per10k : 10000;
-  *linear_offset = listed ? c.linear_offset : 0;
+//! The curve of entry `index` in flash (linear or turn); nullptr for
+//! kSpeedCorrectionCount: slip-free.
+inline const SpeedCurve* speed_curve(uint8_t index, bool turn) {
+  if (index >= kSpeedCorrectionCount) return nullptr;
+  return turn ? &kSpeedCorrections[index].turn : &kSpeedCorrections[index].linear;
 }
 
 //! The RC pad's 100 % for `robot` walking `gait` into *linear [0.1 mm/s]
 //! and *turn [0.1 deg/s]: the gait's top speeds where listed, else left as
 //! given (the pad's defaults, control/robot_mode.h's RcLimits).
 inline void pad_top_of(const char* robot, const char* gait, int32_t* linear, int32_t* turn) {
-  SpeedCorrection c;
-  if (!speed_correction_entry(robot, gait, &c)) return;
-  if (c.top_linear != 0) *linear = c.top_linear;
-  if (c.top_turn != 0) *turn = c.top_turn;
+  const uint8_t i = speed_correction_index(robot, gait);
+  if (i == kSpeedCorrectionCount) return;
+  const uint16_t top_linear = flash_u16(&kSpeedCorrections[i].top_linear, 0);
+  const uint16_t top_turn = flash_u16(&kSpeedCorrections[i].top_turn, 0);
+  if (top_linear != 0) *linear = top_linear;
+  if (top_turn != 0) *turn = top_turn;
 }
 
-//! A commanded body speed -> the gait's own speed that makes it:
-//! (v + offset) / ratio away from zero, rounded to the nearest [0.1 mm/s]
-//! (or [0.1 deg/s]); 0 stays 0.
-inline int32_t speed_corrected(int32_t v, uint16_t per10k, uint16_t offset = 0) {
-  if (v == 0) return 0;
-  const int64_t n = (int64_t(v) + (v < 0 ? -int64_t(offset) : int64_t(offset))) * 10000;
-  if (per10k == 0) return int32_t(n / 10000);
-  return int32_t((n + (n < 0 ? -int64_t(per10k / 2) : int64_t(per10k / 2))) / per10k);
+namespace detail {
+
+//! The segment of a curve in flash that holds x, read as points a and b:
+//! the one ending at or past x on the body axis (by_body) or the gait axis,
+//! else the last.
+inline void speed_segment(const SpeedCurve* curve, int32_t x, bool by_body, SpeedPoint* a, SpeedPoint* b) {
+  const uint8_t n = flash_u8(&curve->count);
+  uint8_t i = 1;
+  for (; i + 1 < n; ++i) {
+    flash_copy(b, &curve->at[i], sizeof *b);
+    if (x <= (by_body ? int32_t(b->body) : int32_t(b->gait))) break;
+  }
+  flash_copy(a, &curve->at[i - 1], sizeof *a);
+  flash_copy(b, &curve->at[i], sizeof *b);
 }
 
-//! The gait's own speed -> the body speed it makes: ratio x g less the
-//! offset towards zero (0 where the offset is more).
-inline int32_t body_speed_of(int32_t g, uint16_t per10k, uint16_t offset = 0) {
-  const int32_t b = per10k == 0 ? g : int32_t(int64_t(g) * per10k / 10000);
-  if (b > int32_t(offset)) return b - int32_t(offset);
-  if (b < -int32_t(offset)) return b + int32_t(offset);
-  return 0;
+}  // namespace detail
+
+//! A commanded body speed -> the gait's own speed that makes it, on `curve`
+//! (in flash; nullptr: the same speed), the same both ways from zero and
+//! rounded to the nearest [0.1 mm/s] (or [0.1 deg/s]); 0 stays 0.
+inline int32_t speed_corrected(int32_t v, const SpeedCurve* curve) {
+  if (v == 0 || curve == nullptr) return v;
+  const int32_t m = v < 0 ? -v : v;
+  SpeedPoint a, b;
+  detail::speed_segment(curve, m, true, &a, &b);
+  const int64_t den = int32_t(b.body) - a.body;
+  const int64_t n = (int64_t(m) - a.body) * (int32_t(b.gait) - a.gait);
+  const int64_t g = int64_t(a.gait) + (n + (n < 0 ? -den / 2 : den / 2)) / den;
+  return int32_t(v < 0 ? -g : g);
+}
+
+//! The gait's own speed -> the body speed it makes on `curve` (in flash;
+//! nullptr: the same speed), towards zero; 0 where the body does not move.
+inline int32_t body_speed_of(int32_t g, const SpeedCurve* curve) {
+  if (curve == nullptr) return g;
+  const int32_t m = g < 0 ? -g : g;
+  SpeedPoint a, b;
+  detail::speed_segment(curve, m, false, &a, &b);
+  const int64_t body = a.body + (int64_t(m) - a.gait) * (int32_t(b.body) - a.body) / (int32_t(b.gait) - a.gait);
+  if (body <= 0) return 0;
+  return int32_t(g < 0 ? -body : body);
 }
 
 }  // namespace strider
