@@ -47,6 +47,7 @@ def pad_data(build, reuse):
                              "commanded": m["commanded_vx"] if button == "F" else m["commanded_wz"],
                              "achieved": speed if button == "F" else yaw_rate,
                              "drift_pct": 100 * abs(lateral) / dist if button == "F" and dist > 1 else None,
+                             "heading_deg": yaw_rate * WINDOW_S[slider] if button == "F" else None,
                              "gait": m.get("gait_walked", "")})
     RESULTS.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps(out, indent=1))
@@ -60,8 +61,9 @@ def pad_table(data):
             err = 100 * (r["achieved"] / r["commanded"] - 1)
             unit = UNIT[r["button"][-1]]
             drift = "-" if r["drift_pct"] is None else f"{r['drift_pct']:.1f} %"
+            heading = "-" if r.get("heading_deg") is None else f"{r['heading_deg']:+.0f} deg"
             rows.append([model, r["gait"] or "-", f"`{r['button']}`", f"{r['commanded']:g} {unit}",
-                         f"{r['achieved']:.1f} {unit}", f"{err:+.1f} %", drift])
+                         f"{r['achieved']:.1f} {unit}", f"{err:+.1f} %", drift, heading])
             worst[model] = max(worst.get(model, 0.0), abs(err))
             if abs(err) > BAR_PCT:
                 misses.append(f"{model} `{r['button']}` {err:+.0f} %")
@@ -76,9 +78,10 @@ def pad_table(data):
           "(tools/sim/measure_speed.py; metrics.json's best 2 s window flatters gaits that rock the body and is not "
           "used). Gait: the one `status` reports while the button is held (sprawl8's pad changes gait by speed, "
           "lib/strider/gait/gait_choice.h). The command reaches the gait through the per-(model, gait) speed "
-          "correction of lib/strider/gait/speed_correction.h. Drift: the displacement across the heading over the "
-          "same window.\n\n")
-    md += table(["model", "gait", "button", "commanded", "achieved", "error", "drift"], rows)
+          "correction of lib/strider/gait/speed_correction.h. Drift: the displacement across the heading at the "
+          "window's start, over the displacement; heading: how far the body turned over the window walking straight "
+          "(the pad has no heading hold without a compass, so a veer of a few degrees shows as drift over 30 s).\n\n")
+    md += table(["model", "gait", "button", "commanded", "achieved", "error", "drift", "heading"], rows)
     md += (f"\nOutside the {BAR_PCT:g} % bar: " + ("; ".join(misses) if misses else "none") + ".\n")
     summary = [("000", "phone pad, sprawl8 `qF` / `qG`", "155 mm/s / 360 deg in 6 s",
                 "; ".join(f"{r['achieved']:.1f} {UNIT[r['button'][-1]]}" for r in data.get("sprawl8", [])

@@ -68,20 +68,28 @@ constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGM
     {"hexapod18", "tripod", affine(9270, 33), affine(9450), 0, 360},
     // spider12 walk over a 30 s window: the gait at 3/6/8/14/28 mm/s ->
     // 2.4/4.9/6.8/13.1/26.2 mm/s (its limit 28 mm/s; at 2.5 it made 2.8);
-    // turn 6/12 -> 5.6/11.7 deg/s (its limit 12.5 deg/s).
-    {"spider12", "walk", {5, {{30, 24}, {60, 49}, {80, 68}, {140, 131}, {280, 262}}}, affine(9600), 262, 120},
-    // mammal8 walk over a 30 s window: the gait at 1.5/2.5/4/6/10/20 mm/s ->
-    // 1.5/1.9/3.3/4.8/9.8/16.2 mm/s (4 s spans of the last range 11.6-20.8:
-    // its feet slide by fits), its limit 21.4 mm/s. Turning in place with
-    // its feet drawn in (docs/gaits.md, "Turning on planar legs"): 2/4/7/10/
-    // 14 deg/s -> -0.2/0.8/2.3/2.8/3.4 deg/s; the slowest are lost to the
-    // servos' dead band.
-    {"mammal8", "walk", {7, {{0, 0}, {15, 15}, {25, 19}, {40, 33}, {60, 48}, {100, 98}, {200, 162}}},
-     {5, {{20, -2}, {40, 8}, {70, 23}, {100, 28}, {140, 34}}}, 170, 34},
-    // dog12 crawl over a 30 s window: the gait at 8/12/17/30/70/137 mm/s ->
-    // 2.6/6.5/10.7/27.1/66.1/129.4 mm/s; turn 2.2/3/4.4/8/11/22 ->
-    // 1.1/2.4/3.9/6.6/9.7/20 deg/s (1.5 -> 0.2; its limits 144, 23.5).
-    {"dog12", "crawl", {6, {{80, 26}, {120, 65}, {170, 107}, {300, 271}, {700, 661}, {1370, 1294}}},
+    // turn 1.2/1.3/2.5/6/12.5 -> 1.25/1.34/2.42/5.69/12.1 deg/s (its limit
+    // 12.5 deg/s).
+    {"spider12", "walk", {5, {{30, 24}, {60, 49}, {80, 68}, {140, 131}, {280, 262}}},
+     {5, {{0, 0}, {13, 13}, {25, 24}, {60, 57}, {125, 121}}}, 262, 120},
+    // mammal8 walk over a 30 s window: the gait at 1.5/1.9/2.5/4/6/10/20 mm/s
+    // -> 1.5/1.7/1.9/3.3/4.8/9.8/16.2 mm/s (4 s spans of the last range
+    // 11.6-20.8: its feet slide by fits), its limit 21.4 mm/s. Turning in
+    // place with its feet drawn in (docs/gaits.md, "Turning on planar
+    // legs"): 2.2/2.3/2.5/2.6/2.7/5.1/7/14 deg/s -> 0/0.5/0.6/0.8/1.1/1.7/
+    // 2.3/3.4 deg/s; it is not monotonic: between 2.7 and 5 it makes 0.8-1.2
+    // deg/s (4 -> 0.78), 5-6 1.6-2.3 (5.2 -> 1.62, 5.5 -> 2.13), and at 2.1
+    // -0.2: the servos' dead band at 50 Hz. Below 1.1 deg/s a step of 0.1
+    // deg/s in the gait's rate moves the body's by up to 0.5 (2.5 -> 0.59,
+    // 2.6 -> 0.78): the pad's 10 and 20 % miss.
+    {"mammal8", "walk", {7, {{0, 0}, {15, 15}, {19, 17}, {40, 33}, {60, 48}, {100, 98}, {200, 162}}},
+     {6, {{22, 0}, {25, 6}, {27, 11}, {51, 17}, {70, 23}, {140, 34}}}, 170, 34},
+    // dog12 crawl over a 30 s window: the gait at 8/17/19.5/19.6/30/70/137
+    // mm/s -> 2.6/10.7/11.0/13.7/27.1/66.1/129.4 mm/s (the body jumps
+    // between 19.5 and 19.6: 11-13.7 mm/s is not made); turn
+    // 2.2/3/4.4/8/11/22 -> 1.1/2.4/3.9/6.6/9.7/20 deg/s (1.5 -> 0.2; its
+    // limits 144, 23.5).
+    {"dog12", "crawl", {7, {{80, 26}, {170, 107}, {195, 110}, {196, 137}, {300, 271}, {700, 661}, {1370, 1294}}},
      {6, {{22, 11}, {30, 24}, {44, 39}, {80, 66}, {110, 97}, {220, 200}}}, 1200, 200},
 };
 
