@@ -447,9 +447,12 @@ TEST(GaitEngineScalars, FloatAndFixedAgree) {
                 kFootMm, joint);
     EXPECT_GE(double(same) / double(a.size()), kContactShare);
     EXPECT_LE(foot, tick_travel + kFootMm);
-    // 0.89: dog12's trot moves a foot 23 mm a tick, so a phase a fraction
-    // of a tick apart puts more of its feet past kFootMm (0.8999 measured).
-    EXPECT_GE(double(close) / double(feet), 0.89);
+    // 0.87: dog12's trot moves a foot 23 mm a tick, so a phase a fraction
+    // of a tick apart puts more of its feet past kFootMm (0.8999 measured);
+    // mammal8's trot and pace turn faster since a planar leg's turn limit
+    // counts only the stride its feet make (velocity_limits.h), their feet
+    // 5.6-5.8 mm a tick (0.881-0.882 measured).
+    EXPECT_GE(double(close) / double(feet), 0.87);
     EXPECT_LE(joint, kJointDeg);
   }
 }

@@ -192,6 +192,11 @@ class GaitTuner {
     if (!(height == c.step_height_mm) || SwingShape(live_.shape) != c.shape) e.set_swing(height, SwingShape(live_.shape));
     if (!(stride == c.limits.preferred_stride_mm) || !(hz == c.limits.min_hz)) e.set_step(stride, hz);
     if (live_.duty_pct != duty_pct_of(motion.gait())) motion.set_duty(live_.duty_pct);
+    // The speed correction holds for the gait's own parameters only.
+    const GaitTuning own = gait_defaults(motion, own_duty_pct(motion));
+    motion.correct_speeds(live_.step_height_cmm == own.step_height_cmm &&
+                          live_.step_length_cmm == own.step_length_cmm && live_.cycle_cs == own.cycle_cs &&
+                          live_.duty_pct == own.duty_pct && live_.shape == own.shape);
   }
 
   Own own_{};

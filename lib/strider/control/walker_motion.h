@@ -61,6 +61,19 @@ class WalkerMotion {
                                  S(speed_corrected(int32_t(v.wz), speed_curve(correction_, true))) * decideg_to_rad);
   }
 
+  //! Whether the gait walks with the parameters its speed correction was
+  //! measured at (its own; gait_tuner.h): a tuned gait or a preset steps
+  //! otherwise and slips otherwise, so it walks uncorrected (slip-free).
+  void correct_speeds(bool as_measured) {
+    const uint8_t before = correction_;
+    as_measured_ = as_measured;
+    correct_for_gait();
+    if (correction_ != before && have_command_) {  // the same body speed, corrected anew
+      have_command_ = false;
+      set_velocity(last_);
+    }
+  }
+
   //! The gait's own speed [0.1 mm/s] -> the body speed it makes on the
   //! ground (speed_correction.h); turn: a turn rate [0.1 deg/s].
   int32_t body_speed(int32_t gait_tenths, bool turn = false) const {
@@ -180,7 +193,8 @@ class WalkerMotion {
 
   //! The speed correction of the model and the gait in force.
   void correct_for_gait() {
-    if (robot_ != nullptr) correction_ = speed_correction_index(robot_, gait().name);
+    correction_ = robot_ != nullptr && as_measured_ ? speed_correction_index(robot_, gait().name)
+                                                    : kSpeedCorrectionCount;
   }
 
   //! After the walker's configuration: no offsets, no command, the standing height.
@@ -226,6 +240,7 @@ class WalkerMotion {
   bool have_command_ = false;
   const char* robot_ = nullptr;     //!< the model's name (configure)
   uint8_t correction_ = kSpeedCorrectionCount;  //!< the gait's entry in speed_correction.h; none: slip-free
+  bool as_measured_ = true;  //!< correct_speeds()
   MotionReach reach_{0, 0, {0, 0, 0}, {0, 0, 0}};
 };
 

@@ -52,7 +52,9 @@ void GaitEngine<S, kLegs, kSearch>::draw_homes_for_turn() {
   const S share = along == S(0) ? S(0) : turn / along;
   const S draw = share * scalar<S>(kPlanarTurnDraw) * (abs(cfg_.home[0].x) + home_draw_mm_);
   const S d = draw - home_draw_mm_;
-  if (d == S(0)) return;
+  // A change under a millimetre is not worth moving the feet's homes (float
+  // and fixed point would move them on different commands); back to none is.
+  if (d == S(0) || (abs(d) < S(1) && !(draw == S(0)))) return;
   for (uint8_t i = 0; i < cfg_.leg_count; ++i) {
     if (cfg_.home[i].x > S(0)) cfg_.home[i].x = cfg_.home[i].x - d;
     if (cfg_.home[i].x < S(0)) cfg_.home[i].x = cfg_.home[i].x + d;
