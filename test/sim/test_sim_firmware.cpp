@@ -61,11 +61,12 @@ Steady steady(const strider_sim::RunResult& r, double t0, double t1) {
 // An RC pad run: the model's firmware, the slider byte at 0.6 s, the button
 // at 4 s (from standing, its default gait), `S` window_s after 7 s; steady
 // from 7 s to the stop.
-Steady pad_run(const std::string& robot, const std::string& elf, char slider, char button, double window_s = 3.0) {
+Steady pad_run(const std::string& robot, const std::string& elf, char slider, char button, double window_s = 3.0,
+               bool imu = false) {
   strider_sim::Scenario sc;
   std::string error;
   const double stop_s = 7.0 + window_s;
-  const std::string text = "robot " + robot + "\nduration " + std::to_string(stop_s + 0.2) +
+  const std::string text = "robot " + robot + "\nduration " + std::to_string(stop_s + 0.2) + (imu ? "\nimu on" : "") +
                            "\nat 0.2 send $deadman off*cb77\\n\nat 0.6 send " + slider + "\nat 4 send " + button +
                            "\nat " + std::to_string(stop_s) + " send S\n";
   EXPECT_TRUE(strider_sim::parse_scenario(text, &sc, &error)) << error;
@@ -84,8 +85,8 @@ Steady pad_run(const std::string& robot, const std::string& elf, char slider, ch
 // The pad's button at the slider's step makes `commanded` ([mm/s] for `F`,
 // [deg/s] for `G`) within the fraction `tolerance`, steadily.
 Steady expect_pad(const std::string& robot, const std::string& elf, char slider, char button, double commanded,
-                  double tolerance = 0.10, double window_s = 3.0) {
-  const Steady s = pad_run(robot, elf, slider, button, window_s);
+                  double tolerance = 0.10, double window_s = 3.0, bool imu = false) {
+  const Steady s = pad_run(robot, elf, slider, button, window_s, imu);
   const double got = button == 'G' ? s.yaw_rate_deg_s : s.speed_mm_s;
   EXPECT_NEAR(got, commanded, tolerance * commanded) << robot << " pad " << slider << button;
   return s;
@@ -224,6 +225,19 @@ TEST(SimFirmware, Sprawl8PadSlowStepsMakeTheirCommandedSpeed) {
   expect_pad("sprawl8", STRIDER_SIM_FIRMWARE_ELF, '1', 'F', 15.5);
   expect_pad("sprawl8", STRIDER_SIM_FIRMWARE_ELF, '1', 'G', 6.0);
   expect_pad("sprawl8", STRIDER_SIM_FIRMWARE_ELF, '2', 'F', 31.0);
+}
+
+// With an MPU-6050 fitted the firmware holds the heading (control/
+// yaw_hold.h): sprawl8's trot at the pad's 100 %, which veers by up to
+// 30 deg either way over 30 s without one (docs/results.md), keeps within
+// a few degrees and under 5 % sideways; mammal8's slow turn, which sticks
+// and slips (without an IMU its pad's 20 % made 0.4-0.7 deg/s from three
+// starts), makes the 20 % (0.7 deg/s) within 15 %.
+TEST(SimFirmware, WithAnImuThePadHoldsItsHeading) {
+  const Steady s8 = expect_pad("sprawl8", STRIDER_SIM_FIRMWARE_ELF, 'q', 'F', 155.0, 0.10, 30.0, true);
+  EXPECT_LT(std::fabs(s8.yaw_rate_deg_s * 30.0), 10.0);
+  EXPECT_LT(std::fabs(s8.lateral_mm), 0.05 * s8.distance_mm);
+  expect_pad("mammal8", STRIDER_SIM_MAMMAL8_ELF, '2', 'G', 0.7, 0.15, 30.0, true);
 }
 
 // hexapod18's tripod (its default and fastest gait) on the pad at 10 %

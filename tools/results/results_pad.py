@@ -31,13 +31,21 @@ WINDOW_S = {"1": 30.0, "2": 30.0, "5": 30.0, "q": 30.0}
 START_OFFSETS_S = (0.0, 0.37, 0.74)
 
 
-def pad_row(sim, elf, model, slider, button):
+# With an MPU-6050 fitted (the firmware's heading hold, control/yaw_hold.h):
+# the rows the hold is for, a veer walking straight and a slow turn that
+# sticks, and every model's 100 % forward.
+IMU_ROWS = [("sprawl8", "5", "F"), ("sprawl8", "q", "F"), ("sprawl8", "q", "G"), ("hexapod18", "q", "F"),
+            ("spider12", "q", "F"), ("mammal8", "1", "G"), ("mammal8", "2", "G"), ("mammal8", "5", "G"),
+            ("mammal8", "q", "G"), ("mammal8", "q", "F"), ("dog12", "q", "F")]
+
+
+def pad_row(sim, elf, model, slider, button, imu=False):
     """One button at one slider step: the median of START_OFFSETS_S's runs, with
     every run's achieved speed under 'runs'."""
     runs = []
     with ThreadPoolExecutor(2) as pool:
         results = pool.map(lambda shift: measure_speed.run(str(sim), str(elf), model, "", button, slider,
-                                                           window_s=WINDOW_S[slider], shift_s=shift),
+                                                           window_s=WINDOW_S[slider], shift_s=shift, imu=imu),
                            START_OFFSETS_S)
         for m, (speed, yaw_rate, lateral, dist) in results:
             # The command as the firmware took it (status vx=, wz=): the pad's
@@ -72,6 +80,8 @@ def pad_data(build, reuse):
         for slider in SLIDERS:
             for button in ("F", "G"):
                 rows.append(pad_row(sim, elf, model, slider, button))
+    out["imu"] = [dict(pad_row(sim, build / "src" / f"strider_firmware_{model}.elf", model, slider, button, imu=True),
+                       model=model) for model, slider, button in IMU_ROWS]
     RESULTS.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps(out, indent=1))
     return out
@@ -82,16 +92,27 @@ def spread(runs):
     return " / ".join(f"{v:.1f}" for v in runs) if runs else "-"
 
 
+def pad_cells(model, r):
+    """One table row's cells and its error [%]."""
+    err = 100 * (r["achieved"] / r["commanded"] - 1)
+    unit = UNIT[r["button"][-1]]
+    drift = "-" if r["drift_pct"] is None else f"{r['drift_pct']:.1f} %"
+    heading = "-" if r.get("heading_deg") is None else f"{r['heading_deg']:+.0f} deg"
+    return [model, r["gait"] or "-", f"`{r['button']}`", f"{r['commanded']:g} {unit}",
+            f"{r['achieved']:.1f} {unit}", spread(r.get("runs")), f"{err:+.1f} %", drift, heading], err
+
+
+COLUMNS = ["model", "gait", "button", "commanded", "achieved", "3 starts", "error", "drift", "heading"]
+
+
 def pad_table(data):
     rows, misses, worst = [], [], {}
     for model, runs in data.items():
+        if model == "imu":
+            continue
         for r in runs:
-            err = 100 * (r["achieved"] / r["commanded"] - 1)
-            unit = UNIT[r["button"][-1]]
-            drift = "-" if r["drift_pct"] is None else f"{r['drift_pct']:.1f} %"
-            heading = "-" if r.get("heading_deg") is None else f"{r['heading_deg']:+.0f} deg"
-            rows.append([model, r["gait"] or "-", f"`{r['button']}`", f"{r['commanded']:g} {unit}",
-                         f"{r['achieved']:.1f} {unit}", spread(r.get("runs")), f"{err:+.1f} %", drift, heading])
+            cells, err = pad_cells(model, r)
+            rows.append(cells)
             worst[model] = max(worst.get(model, 0.0), abs(err))
             if abs(err) > BAR_PCT:
                 misses.append(f"{model} `{r['button']}` {err:+.0f} %")
@@ -109,12 +130,31 @@ def pad_table(data):
           "lib/strider/gait/gait_choice.h). The command reaches the gait through the per-(model, gait) speed "
           "correction of lib/strider/gait/speed_correction.h. Drift: the displacement across the heading at the "
           "window's start, over the displacement; heading: how far the body turned over the window walking straight "
-          "(the pad has no heading hold without a compass, so a veer of a few degrees shows as drift over 30 s).\n\n")
-    md += table(["model", "gait", "button", "commanded", "achieved", "3 starts", "error", "drift", "heading"], rows)
+          "(without an IMU the pad has no heading hold, so a veer of a few degrees shows as drift over 30 s; with one, the second table).\n\n")
+    md += table(COLUMNS, rows)
     md += (f"\nOutside the {BAR_PCT:g} % bar: " + ("; ".join(misses) if misses else "none") + ".\n")
+    if data.get("imu"):
+        imu_rows, imu_misses = [], []
+        for r in data["imu"]:
+            cells, err = pad_cells(r["model"], r)
+            imu_rows.append(cells)
+            if abs(err) > BAR_PCT:
+                imu_misses.append(f"{r['model']} `{r['button']}` {err:+.0f} %")
+        md += ("\nThe same with an MPU-6050 fitted (the scenario's `imu on`: the simulator's part, offsets drawn "
+               "within the data sheet's tolerances), whose gyro the firmware's heading hold closes the loop on "
+               "(lib/strider/control/yaw_hold.h, docs/imu.md \"Heading hold\"): walking straight it holds the "
+               "heading the body had a gait cycle after the button, turning it makes the commanded turn on "
+               "average.\n\n")
+        md += table(COLUMNS, imu_rows)
+        md += (f"\nOutside the {BAR_PCT:g} % bar with the IMU: " + ("; ".join(imu_misses) if imu_misses else "none")
+               + ".\n")
     summary = [("000", "phone pad, sprawl8 `qF` / `qG`", "155 mm/s / 360 deg in 6 s",
                 "; ".join(f"{r['achieved']:.1f} {UNIT[r['button'][-1]]}" for r in data.get("sprawl8", [])
                           if r["button"] in ("qF", "qG")) or "not measured"),
                ("-", "phone pad, worst error per model", f"within {BAR_PCT:g} %",
                 ", ".join(f"{k} {v:.0f} %" for k, v in worst.items()))]
+    s8 = [r for r in data.get("imu", []) if r["model"] == "sprawl8" and r["button"] == "qF"]
+    if s8:
+        summary.append(("000", "phone pad, sprawl8 `qF` with the IMU: drift, heading over 30 s", "drift < 5 %",
+                        f"{s8[0]['drift_pct']:.1f} %, {s8[0]['heading_deg']:+.0f} deg"))
     return md, summary

@@ -52,17 +52,18 @@ def steady(trace_path, t0=STEADY_S, t1=STOP_S):
     return dist / dt, yaw / dt, lateral, dist
 
 
-def run(sim, elf, robot, gait, command, slider="", window_s=STOP_S - STEADY_S, shift_s=0.0):
+def run(sim, elf, robot, gait, command, slider="", window_s=STOP_S - STEADY_S, shift_s=0.0, imu=False):
     """One run: the command held from COMMAND_S + shift_s; the steady window
     is window_s long from STEADY_S + shift_s (slow speeds take a longer one:
-    the body's sway within a step is then a smaller part of the displacement)."""
+    the body's sway within a step is then a smaller part of the displacement).
+    imu: an MPU-6050 fitted (the firmware's heading hold, docs/imu.md)."""
     command_s = COMMAND_S + shift_s
     steady_s = STEADY_S + shift_s
     stop_s = steady_s + window_s
     with tempfile.TemporaryDirectory() as d:
         sc = os.path.join(d, "run.scenario")
         with open(sc, "w") as f:
-            f.write(f"robot {robot}\nduration {stop_s + 1:g}\n"
+            f.write(f"robot {robot}\nduration {stop_s + 1:g}\n{'imu on' + chr(10) if imu else ''}"
                     "at 0.2 send $deadman off*cb77\\n\n")
             if gait:
                 f.write(f"at 0.4 send gait {gait}\\n\n")

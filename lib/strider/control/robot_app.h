@@ -101,6 +101,7 @@ class RobotApp {
   }
   const AttitudeFilter<S>& attitude() const { return sensing_.attitude(); }
   const LevelBody<S>& level() const { return sensing_.level(); }
+  const YawHold<S>& yaw_hold() const { return sensing_.yaw_hold(); }
 
   //! One byte from link `port` (0 or 1) at now_us; a reply goes back to that port.
   template <typename Link>

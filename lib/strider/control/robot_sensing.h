@@ -17,6 +17,7 @@
 #include "robot_mode.h"
 #include "settings.h"
 #include "walker_motion.h"
+#include "yaw_hold.h"
 
 namespace strider {
 
@@ -93,6 +94,7 @@ class RobotSensing {
   BatteryMonitor battery;
   const AttitudeFilter<S>& attitude() const { return attitude_; }
   const LevelBody<S>& level() const { return level_; }
+  const YawHold<S>& yaw_hold() const { return yaw_; }
 
  private:
   //! One raw sample into `cal level`; leaving the stand or a failed read ends
@@ -123,10 +125,27 @@ class RobotSensing {
     s.accel_m_s2.x -= S(int(settings.accel_x_mg)) * kMs2PerMg;
     s.accel_m_s2.y -= S(int(settings.accel_y_mg)) * kMs2PerMg;
     attitude_.update(s, scalar<S>(double(kTickPeriodUs) * 1e-6));
+    hold_yaw(s.gyro_rad_s, motion, servos_on);
     if (!attitude_.has_attitude()) return false;
     level_body(motion, servos_on);
     return fall_.update(attitude_.tilt_rad());
   }
+  //! The heading hold (yaw_hold.h): held upright on the feet with a
+  //! command (also stopping or standing: a trim against a slow turn may
+  //! bring the gait's to zero), the offset learnt standing still with none.
+  void hold_yaw(const Vec3<S>& gyro_rad_s, WalkerMotion<S, P>& motion, bool servos_on) {
+    const Twist& c = motion.command();
+    const bool none = c.vx == 0 && c.vy == 0 && c.wz == 0;
+    const GaitState st = motion.walker().engine().state();
+    const bool on_feet = st == GaitState::kWalking || st == GaitState::kStopping || st == GaitState::kStanding;
+    const bool upright = servos_on && !fall_.fallen();
+    const S gyro_y = gyro_rad_s.y - attitude_.gyro_bias_rad_s().y;
+    if (yaw_.step(gyro_y, gyro_rad_s.z, attitude_.roll_rad(), attitude_.pitch_rad(), c.wz, upright && !none && on_feet,
+                  upright && none && st == GaitState::kStanding, motion.walker().engine().step_hz(),
+                  scalar<S>(double(kTickPeriodUs) * 1e-6)))
+      motion.set_yaw_trim(yaw_.trim_tenths());
+  }
+
   //! Learning ends at the first stand; the level acts standing or walking.
   void level_body(WalkerMotion<S, P>& motion, bool servos_on) {
     const GaitState st = motion.walker().engine().state();
@@ -145,6 +164,7 @@ class RobotSensing {
   FallDetector<S> fall_;
   LevelBody<S> level_;
   LevelCalibration<S> level_cal_;
+  YawHold<S> yaw_;
   bool imu_probed_ = false;
   bool imu_present_ = false;
 };

@@ -52,14 +52,37 @@ class WalkerMotion {
     if (have_command_ && v.vx == last_.vx && v.vy == last_.vy && v.wz == last_.wz) return;
     have_command_ = true;
     last_ = v;
+    yaw_trim_ = 0;  // the heading hold starts over with each command (yaw_hold.h)
+    walk_command();
+  }
+
+  //! The command in force (protocol units; zero before the first).
+  const Twist& command() const { return last_; }
+
+  //! A turn [0.1 deg/s] walked on top of the command (the IMU's heading
+  //! hold, yaw_hold.h); command() and status keep the command's own.
+  void set_yaw_trim(int16_t wz_tenths) {
+    if (wz_tenths == yaw_trim_) return;
+    yaw_trim_ = wz_tenths;
+    if (have_command_) walk_command();
+  }
+  int16_t yaw_trim() const { return yaw_trim_; }
+
+ private:
+  //! The command in force and the trim -> the engine's command.
+  STRIDER_NOINLINE void walk_command() {
+    const Twist& v = last_;
     constexpr S tenth = scalar<S>(0.1);
     constexpr S decideg_to_rad = scalar<S>(kDegToRad / 10.0);
     // The gait's own speed that makes the commanded body speed (speed_correction.h).
     const SpeedCurve* linear = speed_curve(correction_, false);
     walker_.engine().set_command(S(speed_corrected(int32_t(v.vx), linear)) * tenth,
                                  S(speed_corrected(int32_t(v.vy), linear)) * tenth,
-                                 S(speed_corrected(int32_t(v.wz), speed_curve(correction_, true))) * decideg_to_rad);
+                                 S(speed_corrected(int32_t(v.wz) + yaw_trim_, speed_curve(correction_, true))) *
+                                     decideg_to_rad);
   }
+
+ public:
 
   //! Whether the gait walks with the parameters its speed correction was
   //! measured at (its own; gait_tuner.h): a tuned gait or a preset steps
@@ -186,6 +209,7 @@ class WalkerMotion {
 
   void restart(bool sitting) {
     have_command_ = false;
+    yaw_trim_ = 0;
     const GaitTable gait = walker_.engine().gait();  // a copy: restart() overwrites the engine's
     walker_.restart(gait, walker_.engine().config(), sitting);
     walker_.engine().set_body_offsets(offsets_);
@@ -203,6 +227,7 @@ class WalkerMotion {
     correct_for_gait();
     offsets_ = BodyOffsets<S>::zero();
     have_command_ = false;
+    yaw_trim_ = 0;
     stand_height_mm_ = -walker_.engine().config().home[0].z;
   }
 
@@ -238,6 +263,7 @@ class WalkerMotion {
   S stand_height_mm_ = S(0);
   Twist last_{0, 0, 0};
   bool have_command_ = false;
+  int16_t yaw_trim_ = 0;  //!< set_yaw_trim()
   const char* robot_ = nullptr;     //!< the model's name (configure)
   uint8_t correction_ = kSpeedCorrectionCount;  //!< the gait's entry in speed_correction.h; none: slip-free
   bool as_measured_ = true;  //!< correct_speeds()
