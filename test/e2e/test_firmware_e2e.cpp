@@ -1103,6 +1103,10 @@ INSTANTIATE_TEST_SUITE_P(Models, FirmwareImu, ::testing::Values("sprawl8", "hexa
 // it, status says imu=level, and a tilt the pose cannot take away (vbench's
 // part reads a fixed 12 deg roll whatever the legs do) drives the pose to
 // what the legs reach, walking and standing, within the stack's 1 KB.
+// Walking, the part reads a turn of 3 deg/s that no trim takes away: the
+// heading hold (control/yaw_hold.h) trims the gait's turn every 0.2 s up to
+// its limit, each trim planning the gait again, in the same ticks as the
+// level's reach checks: the longest tick stays within 10 ms.
 class FirmwareLevel : public ::testing::TestWithParam<std::string> {};
 TEST_P(FirmwareLevel, LevelOnNeedsThePartAndStaysWithinTheStack) {
   {
@@ -1124,14 +1128,21 @@ TEST_P(FirmwareLevel, LevelOnNeedsThePartAndStaysWithinTheStack) {
   EXPECT_EQ(r.command("level on"), "ok level on") << r.transcript();
   r.run_for(3000000);
   EXPECT_EQ(r.status()["imu"], "level") << r.transcript();
+  ASSERT_EQ(r.command("$deadman off*cb77").rfind("ok deadman off", 0), 0u);  // walking 6 s on one command
   EXPECT_EQ(r.command("walk 40").rfind("ok", 0), 0u) << r.transcript();
-  r.run_for(3000000);
+  r.mega().set_imu_gyro_rad_s(0.0, 0.0, 3.0 * M_PI / 180.0);
+  r.run_for(6000000);
+  const std::string walking = r.command("status");
+  EXPECT_NE(walking.find(" wz=0.0 "), std::string::npos) << walking;       // the command's
+  EXPECT_NE(walking.find(" walk_wz=-"), std::string::npos) << walking;     // trimmed against the turn
   EXPECT_EQ(r.command("stop"), "ok stop");
+  r.mega().set_imu_gyro_rad_s(0.0, 0.0, 0.0);
   EXPECT_EQ(r.command("level off"), "ok level off");
   r.run_for(2000000);
   auto st = r.status();
   EXPECT_EQ(st["imu"], "ok") << r.transcript();
   EXPECT_EQ(st["overruns"], "0");
+  EXPECT_LE(std::stol(st["tick_max_us"]), 10000) << "level and heading hold in the same ticks";
   EXPECT_EQ(r.mega().unexpected_resets(), 0);
   EXPECT_LE(r.mega().stack_peak_bytes(), 1024u) << "with the level's reach checks";
   std::printf("%s with level on: stack peak %u bytes, tick_max_us %s\n", GetParam().c_str(),
