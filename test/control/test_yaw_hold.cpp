@@ -99,8 +99,9 @@ TYPED_TEST(YawHoldTest, WalkingStraightHoldsTheHeadingAgainstAVeer) {
   EXPECT_LT(worst / kDeg, 2.5);
   EXPECT_NEAR(p.trim, 10, 1);
   for (int k = 0; k < 1500; ++k) p.tick(0, true, false);
-  // 30 s more: on the heading it had when the hold began, a second in.
-  EXPECT_NEAR(p.heading_rad / kDeg, -1.0, 0.3);
+  // 30 s more: within a degree of the heading it had when the hold began,
+  // a second in (the trim moves in 0.5 deg/s steps).
+  EXPECT_NEAR(p.heading_rad / kDeg, -1.0, 1.0);
 }
 
 // A slow turn the body does not follow (it sticks under 1 deg/s): the trim

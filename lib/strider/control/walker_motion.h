@@ -59,8 +59,11 @@ class WalkerMotion {
   //! The command in force (protocol units; zero before the first).
   const Twist& command() const { return last_; }
 
-  //! A turn [0.1 deg/s] walked on top of the command (the IMU's heading
-  //! hold, yaw_hold.h); command() and status keep the command's own.
+  //! A turn [0.1 deg/s] the gait walks on top of the command's, after its
+  //! speed correction (the IMU's heading hold, yaw_hold.h: its loop closes
+  //! on the body, and a curve measured turning in place would make a
+  //! straight walk's small trims large); command() and status keep the
+  //! command's own.
   void set_yaw_trim(int16_t wz_tenths) {
     if (wz_tenths == yaw_trim_) return;
     yaw_trim_ = wz_tenths;
@@ -78,8 +81,8 @@ class WalkerMotion {
     const SpeedCurve* linear = speed_curve(correction_, false);
     walker_.engine().set_command(S(speed_corrected(int32_t(v.vx), linear)) * tenth,
                                  S(speed_corrected(int32_t(v.vy), linear)) * tenth,
-                                 S(speed_corrected(int32_t(v.wz) + yaw_trim_, speed_curve(correction_, true))) *
-                                     decideg_to_rad);
+                                 S(speed_corrected(int32_t(v.wz), speed_curve(correction_, true))) * decideg_to_rad,
+                                 scalar<S>(100.0), S(int32_t(yaw_trim_)) * decideg_to_rad);
   }
 
  public:

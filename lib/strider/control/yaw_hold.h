@@ -25,6 +25,7 @@ constexpr double kYawHoldMaxErrorDeg = 30.0;    //!< the heading error held at m
 constexpr uint8_t kYawHoldEveryTicks = 10;      //!< ticks between trims (0.2 s: a new trim plans the gait again)
 constexpr uint8_t kYawHoldSettleTicks = 50;     //!< after a new command, the speed ramp's second (at least) goes unheld
 constexpr double kYawHoldMaxTrimDegS = 10.0;    //!< the trim's limit either way [deg/s]
+constexpr int16_t kYawHoldTrimStepTenths = 5;   //!< the least change of trim applied [0.1 deg/s]
 constexpr uint8_t kYawOffsetReadings = 50;      //!< still readings that give the offset (1 s at 50 Hz)
 constexpr double kYawOffsetSpreadRadS = 0.035;  //!< their spread, max - min (2 deg/s: servos holding)
 
@@ -77,7 +78,8 @@ class YawHold {
     constexpr S kMaxDegS = scalar<S>(kYawHoldMaxTrimDegS);
     const S trim_deg_s = clamp((kp * error_rad_ + from_integral) * kDegPerRad, -kMaxDegS, kMaxDegS);
     const int16_t trim = int16_t(to_tenths(trim_deg_s));
-    if (trim == trim_) return false;
+    // Changes of less than a step are left: each plans the gait again.
+    if (trim - trim_ < kYawHoldTrimStepTenths && trim_ - trim < kYawHoldTrimStepTenths) return false;
     trim_ = trim;
     return true;
   }

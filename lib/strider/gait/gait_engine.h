@@ -35,13 +35,16 @@ class GaitEngine {
     configure(cfg_, gait, sitting);
   }
   //! Velocity (vx, vy [mm/s], wz [rad/s], body frame) at speed_pct [0, 100]
-  //! percent, clamped to the robot's limits (limited()).
-  void set_command(S vx, S vy, S wz, S speed_pct = scalar<S>(100.0)) {
+  //! percent, clamped to the robot's limits (limited()); steer_wz [rad/s]
+  //! turns on top of wz as a correction of the heading (a heading hold's),
+  //! for which planar legs do not draw their feet in (draw_homes_for_turn()).
+  void set_command(S vx, S vy, S wz, S speed_pct = scalar<S>(100.0), S steer_wz = S(0)) {
     constexpr S hundred = scalar<S>(100.0);
     const S k = clamp(speed_pct, S(0), hundred) / hundred;
     ramp_.cmd_vx = vx * k;
     ramp_.cmd_vy = vy * k;
-    ramp_.cmd_wz = wz * k;
+    ramp_.cmd_wz = (wz + steer_wz) * k;
+    steer_wz_ = steer_wz * k;
     if (cfg_.shift_x_only) draw_homes_for_turn();
     replan();
   }
@@ -210,6 +213,7 @@ class GaitEngine {
   ShiftWindow<S, kLegs> window_;
   BodyPosture<S> posture_;
   S home_draw_mm_;  // planar legs turning: how far the homes are drawn in along x [mm]
+  S steer_wz_ = S(0);  // the part of ramp_.cmd_wz that steers (set_command()) [rad/s]
 };
 
 }  // namespace strider

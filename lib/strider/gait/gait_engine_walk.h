@@ -12,7 +12,7 @@ void GaitEngine<S, kLegs, kSearch>::configure(const GaitConfig<S, kLegs, kSearch
   if (&config != &cfg_) {
     cfg_ = config;
   } else if (home_draw_mm_ != S(0)) {  // a restart: from the standing homes
-    ramp_.cmd_vx = ramp_.cmd_vy = ramp_.cmd_wz = S(0);
+    ramp_.cmd_vx = ramp_.cmd_vy = ramp_.cmd_wz = steer_wz_ = S(0);
     draw_homes_for_turn();
   }
   home_draw_mm_ = S(0);
@@ -47,7 +47,7 @@ constexpr double kPlanarTurnDraw = 0.3;
 template <typename S, uint8_t kLegs, bool kSearch>
 void GaitEngine<S, kLegs, kSearch>::draw_homes_for_turn() {
   // The turn's part of the feet's stride speed against the forward part.
-  const S turn = abs(ramp_.cmd_wz) * abs(cfg_.home[0].y);
+  const S turn = abs(ramp_.cmd_wz - steer_wz_) * abs(cfg_.home[0].y);
   const S along = abs(ramp_.cmd_vx) + turn;
   const S share = along == S(0) ? S(0) : turn / along;
   const S draw = share * scalar<S>(kPlanarTurnDraw) * (abs(cfg_.home[0].x) + home_draw_mm_);
