@@ -230,15 +230,13 @@ TEST(SimFirmware, Sprawl8PadSlowStepsMakeTheirCommandedSpeed) {
 // With an MPU-6050 fitted the firmware holds the heading walking straight
 // (control/yaw_hold.h): sprawl8's trot at the pad's 100 %, which veers by
 // up to 30 deg either way over 30 s without one (docs/results.md), keeps
-// within a few degrees and under 5 % sideways; mammal8's walk, whose
-// steering the hold's trims cost a few % of its top speed (the plan's
-// limits), still makes its 17 mm/s within 10 %.
+// within a few degrees and under 5 % sideways, at its commanded speed
+// within 10 % (the other models' rows with the part are in results.md's
+// second pad table: a 30 s run of mammal8 costs ctest 17 s more).
 TEST(SimFirmware, WithAnImuThePadHoldsItsHeading) {
   const Steady s8 = expect_pad("sprawl8", STRIDER_SIM_FIRMWARE_ELF, 'q', 'F', 155.0, 0.10, 30.0, true);
   EXPECT_LT(std::fabs(s8.yaw_rate_deg_s * 30.0), 10.0);
   EXPECT_LT(std::fabs(s8.lateral_mm), 0.05 * s8.distance_mm);
-  const Steady m8 = expect_pad("mammal8", STRIDER_SIM_MAMMAL8_ELF, 'q', 'F', 17.0, 0.10, 30.0, true);
-  EXPECT_LT(std::fabs(m8.yaw_rate_deg_s * 30.0), 10.0);
 }
 
 // hexapod18's tripod (its default and fastest gait) on the pad at 10 %

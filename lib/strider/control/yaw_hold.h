@@ -1,15 +1,13 @@
-//! YawHold: with an IMU fitted, the body turns at the rate commanded, and
-//! not at all walking straight. Feet slide: a sprawling trot veers by a
-//! degree a second either way, and a planar leg's slow turn sticks and slips
-//! (docs/imu.md, "Heading hold"). An integral controller on the heading
-//! error (the command's turn integrated, less the gyro's) trims the turn the
-//! gait walks; the speed correction (speed_correction.h) stays the feed
-//! forward. Proportional and integral on the heading: a steady veer leaves
-//! no heading behind. A changed stride turns the body over the next steps,
-//! so the gains go with the step rate (a 2 s cycle: 0.25/s; critically
-//! damped, kp^2 = 4 ki). The
-//! gyro's zero-rate offset about up is learnt standing still
-//! (the attitude filter cannot see it: no compass).
+//! YawHold: with an IMU fitted, the body turns at the rate commanded (the
+//! firmware: none, walking straight; robot_sensing.h). Feet slide: a
+//! sprawling trot veers by a degree a second either way (docs/imu.md,
+//! "Heading hold"). Proportional and integral terms on the heading error
+//! (the command's turn integrated, less the measured one) give a trim to
+//! the turn the gait walks; a steady veer leaves no heading behind. A
+//! changed stride turns the body over the next steps, so the gains go with
+//! the step rate (kp = kYawHoldKpPerHz x Hz, critically damped: ki = kp^2
+//! / 4). The gyro's zero-rate offset about up is learnt standing still (the
+//! attitude filter cannot see it: no compass).
 #ifndef STRIDER_CONTROL_YAW_HOLD_H
 #define STRIDER_CONTROL_YAW_HOLD_H
 
@@ -56,9 +54,9 @@ class YawHold {
     // The heading's rate (the Z-Y-X Euler yaw's), not the body z axis's: a
     // body rocking in roll and pitch at the step rate turns its z axis about
     // up by a few tenths of a degree a second (coning). Small angles:
-    // (gy sin r + gz cos r) / cos p to within r^4/24 and 5 p^4/24 (on
-    // the AVR a sine and a cosine a tick would cost more than the tick's
-    // rest of the hold).
+    // (gy sin r + gz cos r) / cos p by their series, to within r^5/120,
+    // r^4/24 and 5 p^4/24 (on the AVR a sine and two cosines a tick would
+    // cost more than the rest of the hold).
     const S r2 = roll_rad * roll_rad, half = scalar<S>(0.5);
     const S sin_r = roll_rad * (S(1) - r2 * scalar<S>(1.0 / 6.0)), cos_r = S(1) - half * r2;
     const S heading_rate = (gyro_y_rad_s * sin_r + (gyro_z_rad_s - offset_) * cos_r) * (S(1) + half * pitch_rad * pitch_rad);
