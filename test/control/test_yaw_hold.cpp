@@ -14,16 +14,13 @@
 #include "fakes/recording_servo.h"
 #include "math/fixed.h"
 #include "robots/all_robots.h"
+#include "scalar_conv.h"
 
 namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-template <typename S>
-double d(S v) {
-  return double(v);
-}
-double d(strider::Fixed v) { return v.to_double(); }
+using strider_test::dbl;
 
 template <typename S>
 class YawHoldTest : public ::testing::Test {};
@@ -67,7 +64,7 @@ TYPED_TEST(YawHoldTest, LearnsTheOffsetStandingStillAndHoldsNothingBefore) {
   EXPECT_FALSE(p.hold.learnt());
   p.stand(1);
   ASSERT_TRUE(p.hold.learnt());
-  EXPECT_NEAR(d(p.hold.offset_rad_s()) / kDeg, 18.0, 0.01);
+  EXPECT_NEAR(dbl(p.hold.offset_rad_s()) / kDeg, 18.0, 0.01);
 }
 
 TYPED_TEST(YawHoldTest, AMovingReadingStartsTheOffsetOver) {
@@ -80,7 +77,7 @@ TYPED_TEST(YawHoldTest, AMovingReadingStartsTheOffsetOver) {
   EXPECT_FALSE(p.hold.learnt());  // 30, the bump, 49: none 50 still in a row
   p.stand(1);
   ASSERT_TRUE(p.hold.learnt());
-  EXPECT_NEAR(d(p.hold.offset_rad_s()) / kDeg, -5.0, 0.01);
+  EXPECT_NEAR(dbl(p.hold.offset_rad_s()) / kDeg, -5.0, 0.01);
 }
 
 // A veer of 1 deg/s walking straight (sprawl8's trot at 155 mm/s): held, the
@@ -124,7 +121,7 @@ TYPED_TEST(YawHoldTest, ANewCommandOrAStopStartsOverWithoutTrim) {
   ASSERT_LT(p.trim, 0);
   p.tick(100, true, false);  // turn 10 deg/s
   EXPECT_EQ(p.trim, 0);
-  EXPECT_EQ(d(p.hold.error_rad()), 0.0);
+  EXPECT_EQ(dbl(p.hold.error_rad()), 0.0);
   // The ramp's second is not held.
   for (int k = 0; k < strider::kYawHoldSettleTicks; ++k) p.tick(100, true, false);
   EXPECT_EQ(p.trim, 0);
@@ -177,7 +174,7 @@ TYPED_TEST(YawHoldTest, HoldsTheHeadingNotTheBodyZAxis) {
     rolled.step(S(float(gy)), S(float(gz)), S(float(r)), S(float(p)), 0, true, false, S(2), S(0.02f));
     level.step(S(0), S(float(gz)), S(0), S(0), 0, true, false, S(2), S(0.02f));
   }
-  EXPECT_NEAR(d(rolled.error_rad()), 0.0, 2e-4);
+  EXPECT_NEAR(dbl(rolled.error_rad()), 0.0, 2e-4);
   EXPECT_EQ(rolled.trim_tenths(), 0);
   EXPECT_GT(level.trim_tenths(), 5);  // gz = -0.03 rad/s: turning right, trimmed left
 }
@@ -210,7 +207,7 @@ struct RigOf {
       now_us += strider::kTickPeriodUs;
       const auto& e = app.motion().walker().engine();
       const bool walking = e.state() == strider::GaitState::kWalking;
-      const double rate = d(e.wz()) + (walking ? veer_rad_s : 0);
+      const double rate = dbl(e.wz()) + (walking ? veer_rad_s : 0);
       heading_rad += rate * 0.02;
       strider::ImuSample<S> s;
       s.accel_m_s2 = strider::Vec3<S>(S(0), S(0), S(9.80665f));
@@ -242,7 +239,7 @@ TYPED_TEST(YawHoldAppTest, WalksStraightAgainstAVeerAndStatusKeepsTheCommand) {
   Rig<TypeParam> rig(true);
   rig.run_ms(5000);  // soft start, stand up, a second still
   ASSERT_TRUE(rig.app.yaw_hold().learnt());
-  EXPECT_NEAR(d(rig.app.yaw_hold().offset_rad_s()) / kDeg, 15.0, 0.05);
+  EXPECT_NEAR(dbl(rig.app.yaw_hold().offset_rad_s()) / kDeg, 15.0, 0.05);
   rig.veer_rad_s = 1.5 * kDeg;
   EXPECT_EQ(rig.send("walk 60\n").rfind("ok move", 0), 0u);
   rig.run_ms(20000);
