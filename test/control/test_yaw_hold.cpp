@@ -10,6 +10,7 @@
 
 #include "control/robot_app.h"
 #include "control/yaw_hold.h"
+#include "fakes/app_rig.h"
 #include "fakes/fake_store.h"
 #include "fakes/recording_servo.h"
 #include "math/fixed.h"
@@ -179,11 +180,6 @@ TYPED_TEST(YawHoldTest, HoldsTheHeadingNotTheBodyZAxis) {
   EXPECT_GT(level.trim_tenths(), 5);  // gz = -0.03 rad/s: turning right, trimmed left
 }
 
-struct Lines {
-  std::vector<std::string> sent;
-  void send_line(uint8_t, const char* line) { sent.emplace_back(line); }
-};
-
 // RobotApp on sprawl8: the fake gyro reads the turn the gait walks (its
 // engine's rate), a veer, and an offset; nothing else moves.
 template <typename S, const char* robot_name>
@@ -191,7 +187,7 @@ struct RigOf {
   using App = strider::RobotApp<S, strider_test::RecordingServo, strider_test::FakeStore>;
   strider_test::RecordingServo out;
   strider_test::FakeStore store;
-  Lines lines;
+  strider_test::SentLines lines;
   App app{*strider::find_robot(robot_name), out, store};
   uint32_t now_us = 1000;
   double offset_rad_s = 15.0 * kDeg, veer_rad_s = 0;
