@@ -393,19 +393,34 @@ TEST(SimTargets, Mammal8SeedWalkReachesCommandedDistanceWithin5Percent) {
   }
 }
 
-// The trot and pace at the seed's point, the same target. Measured: trot
-// 66.6 / 65.7 / 64.9 %, pace 51.5 / 49.5 / 53.3 % short of 100 / 200 /
-// 1000 mm, no fall (tilt below 2 deg): the trot balances on its stance
-// diagonal and the pace beside its stance side (docs/simulator.md, "mammal8's
-// trot and pace"); slow steps do not change that.
-TEST(SimTargets, DISABLED_Mammal8SeedTrotAndPaceReachCommandedDistanceWithin5Percent) {
-  for (const char* gait : {"trot", "pace"})
-    for (const char* mm : {"100", "200", "1000"}) {
-      const std::string s = std::string("mammal8_seed_") + gait + "_" + mm + "mm";
-      const Metrics m = run_file(s).metrics;
-      EXPECT_FALSE(m.fell) << s;
-      EXPECT_LT(std::fabs(m.odometry_error_pct), 5.0) << s;
-    }
+// The trot at the seed's point, the same target: trot10 moves the stance
+// feet in 1.3 mm steps, all at once, and only while all four feet are down
+// (gait/stance_ratchet.h), at duty 0.85 with 10 mm swings. Measured 3.6 /
+// 1.9 / 1.2 % short of 100 / 200 / 1000 mm, tilt at most 1.1 deg (before:
+// 66.6 / 65.7 / 64.9 %, the stance joints jumping through the servos' dead
+// band each at its own moment and the feet fighting).
+TEST(SimTargets, Mammal8SeedTrotReachesCommandedDistanceWithin5Percent) {
+  for (const char* mm : {"100", "200", "1000"}) {
+    const std::string s = std::string("mammal8_seed_trot_") + mm + "mm";
+    const Metrics m = run_file(s).metrics;
+    EXPECT_FALSE(m.fell) << s;
+    EXPECT_LT(std::fabs(m.odometry_error_pct), 5.0) << s;
+    EXPECT_LT(m.max_tilt_deg, 3.0) << s;
+  }
+}
+
+// The pace at the seed's point, the same target. Measured with pace10's
+// stance on all feet: 17.5-21.5 % short (51.5 / 49.5 / 53.3 % before), no
+// fall: while one side swings the CoM is 40 mm beside the feet kept down,
+// the body tips onto the swinging feet and they drag (docs/simulator.md,
+// "mammal8's trot and pace").
+TEST(SimTargets, DISABLED_Mammal8SeedPaceReachesCommandedDistanceWithin5Percent) {
+  for (const char* mm : {"100", "200", "1000"}) {
+    const std::string s = std::string("mammal8_seed_pace_") + mm + "mm";
+    const Metrics m = run_file(s).metrics;
+    EXPECT_FALSE(m.fell) << s;
+    EXPECT_LT(std::fabs(m.odometry_error_pct), 5.0) << s;
+  }
 }
 
 }  // namespace

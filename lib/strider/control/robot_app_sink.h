@@ -58,6 +58,7 @@ class RobotAppSink {
     const bool is_preset = find_gait_preset(app_.name_, name, &preset);
     if (!app_.motion_.set_gait(is_preset ? preset.gait : name)) return false;
     app_.tuner_.use_gait(app_.motion_, app_.store_);
+    app_.motion_.set_stance_motion(is_preset ? preset.stance_step_dmm : 0, is_preset && preset.on_all_feet);
     return !is_preset || apply_gait_preset(preset, [this](TuneParam p, int32_t v) { return tune(p, v); });
   }
   RcLimits pad_limits() const { return app_.motion_.pad_limits(); }

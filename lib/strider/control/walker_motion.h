@@ -150,6 +150,12 @@ class WalkerMotion {
     set_gait_table(g);
   }
 
+  //! Stance feet moved in steps of `step_dmm` [0.1 mm], all at once (0:
+  //! every tick), on all feet or not (gait/stance_ratchet.h).
+  void set_stance_motion(int32_t step_dmm, bool on_all_feet) {
+    walker_.engine().set_stance_motion(S(step_dmm) * scalar<S>(0.1), on_all_feet);
+  }
+
   //! Body rotation [0.1 deg]; refused when a standing foot would be out of reach.
   bool set_body_pose(int32_t roll, int32_t pitch, int32_t yaw) {
     constexpr S decideg_to_rad = scalar<S>(kDegToRad / 10.0);

@@ -10,6 +10,7 @@
 #include "odometry.h"
 #include "reach_edge.h"
 #include "speed_ramp.h"
+#include "stance_ratchet.h"
 #include "swing_feet.h"
 #include "table_phases.h"
 #include "touchdown.h"
@@ -59,6 +60,11 @@ class GaitEngine {
     cfg_.limits.min_hz = min_hz;
     replan();
   }
+  //! Stance feet moved in steps of at least `step_mm` [mm], all at once
+  //! (0: every tick), and on all feet: only while every foot is down, in a
+  //! gait whose duty leaves four-foot windows (stance_ratchet.h).
+  void set_stance_motion(S step_mm, bool on_all_feet) { ratchet_.set(step_mm, on_all_feet); }
+  const StanceRatchet<S>& stance_motion() const { return ratchet_; }
   //! Keep stepping in place when the command is zero (default: stop).
   void set_step_in_place(bool on) { step_in_place_ = on; }
   //! Changes the gait, also while walking.
@@ -178,6 +184,7 @@ class GaitEngine {
   STRIDER_NOINLINE void draw_homes_for_turn();
   void start_walking();
   void step_walk(S dt);
+  bool stance_moves_now() const;
   STRIDER_NOINLINE bool step_ground(const BodyStep<S>& step, S dt);
   STRIDER_NOINLINE bool step_lift(const bool* edge);
   STRIDER_NOINLINE void lift_foot(uint8_t i, bool crossed);
@@ -214,6 +221,7 @@ class GaitEngine {
   BodyPosture<S> posture_;
   S home_draw_mm_;  // planar legs turning: how far the homes are drawn in along x [mm]
   S steer_wz_ = S(0);  // the part of ramp_.cmd_wz that steers (set_command()) [rad/s]
+  StanceRatchet<S> ratchet_;
 };
 
 }  // namespace strider

@@ -127,6 +127,7 @@ void GaitEngine<S, kLegs, kSearch>::step_walk(S dt) {
   odo_.add(step);
 
   const uint8_t n = cfg_.leg_count;
+  ratchet_.take(step, !held_, stance_moves_now());  // what of it the stance feet take now
   bool changed = step_ground(step, dt);
   if (step_lift(edge)) changed = true;
   step_swing(dt);
@@ -148,6 +149,17 @@ void GaitEngine<S, kLegs, kSearch>::step_walk(S dt) {
     for (uint8_t i = 0; i < n && still; ++i) still = contact_[i] && near_home(i);
     if (still) state_ = GaitState::kStanding;
   }
+}
+
+template <typename S, uint8_t kLegs, bool kSearch>
+bool GaitEngine<S, kLegs, kSearch>::stance_moves_now() const {
+  // Duty d leaves two four-foot windows of d - 1/2 each, in which the feet
+  // catch up with a cycle's walk; under a duty of 0.65 they are short.
+  constexpr S kMinDuty = scalar<S>(0.65);
+  if (!ratchet_.on_all_feet() || phases_.duty < kMinDuty) return true;
+  for (uint8_t i = 0; i < cfg_.leg_count; ++i)
+    if (!contact_[i]) return false;
+  return true;
 }
 
 template <typename S, uint8_t kLegs, bool kSearch>

@@ -21,14 +21,18 @@ struct GaitPreset {
   uint8_t duty_pct;
   uint16_t step_length_cmm;
   uint16_t step_height_cmm;
+  //! Stance feet moved in steps of this length [0.1 mm], 0: every tick;
+  //! and only while all feet are down (stance_ratchet.h).
+  uint8_t stance_step_dmm;
+  bool on_all_feet;
 };
 
 //! mammal8 at seed 003's own operating point (table 5): docs/gaits.md,
 //! "Presets"; why these values: docs/simulator.md, "mammal8 at seed 003's point".
 constexpr GaitPreset kGaitPresets[] STRIDER_PROGMEM = {
-    {"mammal8", "walk10", "walk", 0, 0, 1000, 300},
-    {"mammal8", "trot10", "trot", 238, 60, 1000, 1000},
-    {"mammal8", "pace10", "pace", 323, 70, 1000, 300},
+    {"mammal8", "walk10", "walk", 0, 0, 1000, 300, 0, false},
+    {"mammal8", "trot10", "trot", 238, 85, 1000, 1000, 13, true},
+    {"mammal8", "pace10", "pace", 323, 70, 1000, 300, 13, true},
 };
 constexpr uint8_t kGaitPresetCount = sizeof kGaitPresets / sizeof kGaitPresets[0];
 
