@@ -188,8 +188,8 @@ TEST(SimFirmware, Mammal8SeedWalkReachesItsDistanceWithin5Percent) {
 }
 
 // The same for the trot: `gait trot10` at 4.2 mm/s, its stance in 1.3 mm
-// steps on all four feet (gait/stance_ratchet.h): measured 97.2 mm of 100
-// (8 s of CPU), 193.8 of 200 and 976.5 of 1000 (with STRIDER_SIM_SEED_1000MM=1;
+// steps on all four feet (gait/stance_ratchet.h): measured 97.5 mm of 100
+// (8 s of CPU), 194.8 of 200 and 978.4 of 1000 (with STRIDER_SIM_SEED_1000MM=1;
 // 14 s and a minute of CPU).
 TEST(SimFirmware, Mammal8SeedTrotReachesItsDistanceWithin5Percent) {
   const char* long_run = std::getenv("STRIDER_SIM_SEED_1000MM");

@@ -410,10 +410,10 @@ TEST(SimTargets, Mammal8SeedTrotReachesCommandedDistanceWithin5Percent) {
 }
 
 // The pace at the seed's point, the same target. Measured with pace10's
-// stance on all feet: 17.5-21.5 % short (51.5 / 49.5 / 53.3 % before), no
-// fall: while one side swings the CoM is 40 mm beside the feet kept down,
-// the body tips onto the swinging feet and they drag (docs/simulator.md,
-// "mammal8's trot and pace").
+// stance on all feet: 18.8 / 18.7 / 27.2 % short (51.5 / 49.5 / 53.3 %
+// before), no fall: while one side swings the CoM is 40 mm beside the feet
+// kept down, the body tips onto the swinging feet and they drag
+// (docs/simulator.md, "mammal8's trot and pace").
 TEST(SimTargets, DISABLED_Mammal8SeedPaceReachesCommandedDistanceWithin5Percent) {
   for (const char* mm : {"100", "200", "1000"}) {
     const std::string s = std::string("mammal8_seed_pace_") + mm + "mm";
