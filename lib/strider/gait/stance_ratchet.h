@@ -47,6 +47,8 @@ class StanceRatchet {
   //! on what is held, in place: on the AVR each Fixed value copied or
   //! computed costs flash (~620 bytes in all).
   STRIDER_NOINLINE void take(BodyStep<S>& step, bool flush, bool now) {
+    // Off and nothing held (every gait but a preset's): the step as walked.
+    if (step_mm_ == S(0) && held_x_ == S(0) && held_y_ == S(0)) return;
     const bool walked = step.dx_mm != S(0) || step.dy_mm != S(0);
     held_x_ = held_x_ + step.dx_mm;
     held_y_ = held_y_ + step.dy_mm;
