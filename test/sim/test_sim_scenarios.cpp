@@ -334,17 +334,27 @@ TEST(SimTargets, Sprawl8Turns360InSixSeconds) {
   EXPECT_LE(run_file("sprawl8_turn").metrics.turn_360_s, 6.0);
 }
 
+// Seed 003 table 5's distances, the scenarios `<prefix>_{100,200,1000}mm`:
+// no fall, the body within `pct` % of the gait's odometry (the commanded 10,
+// 20 and 100 cm), and with max_tilt_deg > 0 tilted less than that.
+void expect_table5_distances(const std::string& prefix, double pct, double max_tilt_deg = 0.0) {
+  for (const char* mm : {"100", "200", "1000"}) {
+    const std::string s = prefix + "_" + mm + "mm";
+    const Metrics m = run_file(s).metrics;
+    EXPECT_FALSE(m.fell) << s;
+    EXPECT_LT(std::fabs(m.odometry_error_pct), pct) << s;
+    if (max_tilt_deg > 0.0) {
+      EXPECT_LT(m.max_tilt_deg, max_tilt_deg) << s;
+    }
+  }
+}
+
 // Seed 003 table 5: distance reached within 2 % of the gait's own distance
 // (the commanded 10, 20 and 100 cm). The walk meets it: 0.0 / 0.5 / 1.5 %
 // short at the 4 ms step (-0.5 to 3.9 % at 1-3 ms steps, foot friction
 // 0.7-0.9 or CFM 1e-5: a few slips decide the last per cent).
 TEST(SimTargets, Mammal8WalkReachesCommandedDistanceWithin2Percent) {
-  for (const char* mm : {"100", "200", "1000"}) {
-    const std::string s = std::string("mammal8_walk_") + mm + "mm";
-    const Metrics m = run_file(s).metrics;
-    EXPECT_FALSE(m.fell) << s;
-    EXPECT_LT(std::fabs(m.odometry_error_pct), 2.0) << s;
-  }
+  expect_table5_distances("mammal8_walk", 2.0);
 }
 
 // Share of the trace rows from t0 to t1 [s] with at least `feet` feet on the
@@ -385,12 +395,7 @@ TEST(SimScenarios, Mammal8PaceSwingsItsFeetOnTheGround) {
 // dead band, so each slow joint moves in 0.9 deg jumps and the other feet
 // slide; docs/simulator.md).
 TEST(SimTargets, Mammal8SeedWalkReachesCommandedDistanceWithin5Percent) {
-  for (const char* mm : {"100", "200", "1000"}) {
-    const std::string s = std::string("mammal8_seed_walk_") + mm + "mm";
-    const Metrics m = run_file(s).metrics;
-    EXPECT_FALSE(m.fell) << s;
-    EXPECT_LT(std::fabs(m.odometry_error_pct), 5.0) << s;
-  }
+  expect_table5_distances("mammal8_seed_walk", 5.0);
 }
 
 // The trot at the seed's point, the same target: trot10 moves the stance
@@ -400,13 +405,7 @@ TEST(SimTargets, Mammal8SeedWalkReachesCommandedDistanceWithin5Percent) {
 // 66.6 / 65.7 / 64.9 %, the stance joints jumping through the servos' dead
 // band each at its own moment and the feet fighting).
 TEST(SimTargets, Mammal8SeedTrotReachesCommandedDistanceWithin5Percent) {
-  for (const char* mm : {"100", "200", "1000"}) {
-    const std::string s = std::string("mammal8_seed_trot_") + mm + "mm";
-    const Metrics m = run_file(s).metrics;
-    EXPECT_FALSE(m.fell) << s;
-    EXPECT_LT(std::fabs(m.odometry_error_pct), 5.0) << s;
-    EXPECT_LT(m.max_tilt_deg, 3.0) << s;
-  }
+  expect_table5_distances("mammal8_seed_trot", 5.0, 3.0);
 }
 
 // The pace at the seed's point, the same target. Measured with pace10's
@@ -415,12 +414,7 @@ TEST(SimTargets, Mammal8SeedTrotReachesCommandedDistanceWithin5Percent) {
 // kept down, the body tips onto the swinging feet and they drag
 // (docs/simulator.md, "mammal8's trot and pace").
 TEST(SimTargets, DISABLED_Mammal8SeedPaceReachesCommandedDistanceWithin5Percent) {
-  for (const char* mm : {"100", "200", "1000"}) {
-    const std::string s = std::string("mammal8_seed_pace_") + mm + "mm";
-    const Metrics m = run_file(s).metrics;
-    EXPECT_FALSE(m.fell) << s;
-    EXPECT_LT(std::fabs(m.odometry_error_pct), 5.0) << s;
-  }
+  expect_table5_distances("mammal8_seed_pace", 5.0);
 }
 
 }  // namespace
