@@ -64,7 +64,6 @@ class GaitEngine {
   //! (0: every tick), and on all feet: only while every foot is down, in a
   //! gait whose duty leaves four-foot windows (stance_ratchet.h).
   void set_stance_motion(S step_mm, bool on_all_feet) { ratchet_.set(step_mm, on_all_feet); }
-  const StanceRatchet<S>& stance_motion() const { return ratchet_; }
   //! Keep stepping in place when the command is zero (default: stop).
   void set_step_in_place(bool on) { step_in_place_ = on; }
   //! Changes the gait, also while walking.

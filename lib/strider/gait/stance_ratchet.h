@@ -36,7 +36,6 @@ class StanceRatchet {
     step_mm_ = step_mm > S(0) ? step_mm : S(0);
     on_all_feet_ = on_all_feet && step_mm_ > S(0);
   }
-  S step_mm() const { return step_mm_; }
   bool on_all_feet() const { return on_all_feet_; }
 
   //! What of this tick's body step the stance feet take, in place: `step`
