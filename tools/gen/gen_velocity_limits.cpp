@@ -50,23 +50,32 @@ int main() {
   // Static members of a class template: one copy however many translation
   // units include the header.
   std::printf("template <typename Dummy = void>\nstruct VelocityLimitTables {\n");
-  std::printf("  //! Longest stride of leg i along direction k of robot r (kAllRobots order;\n");
-  std::printf("  //! legs past the model's count zero).\n");
-  std::printf("  static constexpr uint16_t kStride[%d][%d][%d] STRIDER_PROGMEM = {\n", int(kRobotCount), int(kMaxLegs),
-              kDirections);
+  // One row per leg of each robot in turn (a quadruped keeps no rows of
+  // zeros for legs it does not have).
+  int rows = 0;
+  for (uint8_t r = 0; r < kRobotCount; ++r) rows += strider::kAllRobots[r]->leg_count;
+  std::printf("  //! Longest stride of leg i along direction k of robot r: row kStrideRow[r] + i\n");
+  std::printf("  //! (kAllRobots order).\n");
+  std::printf("  static constexpr uint16_t kStride[%d][%d] STRIDER_PROGMEM = {\n", rows, kDirections);
   VelocityLimits<float> all[kRobotCount];
   for (uint8_t r = 0; r < kRobotCount; ++r) {
     const strider::RobotModel& m = *strider::kAllRobots[r];
     all[r] = limits_of(m, strider::kGaitParams[r]);
-    std::printf("      {  // %s\n", m.name);
+    std::printf("      // %s\n", m.name);
     for (uint8_t i = 0; i < m.leg_count; ++i) {
-      std::printf("          {");
+      std::printf("      {");
       for (int k = 0; k < kDirections; ++k) std::printf("%s%u", k ? ", " : "", unsigned(all[r].stride_code[i][k]));
       std::printf("},\n");
     }
-    std::printf("      },\n");
   }
   std::printf("  };\n");
+  std::printf("  //! Robot r's first row in kStride; r = %d: the end.\n", int(kRobotCount));
+  std::printf("  static constexpr uint8_t kStrideRow[%d] STRIDER_PROGMEM = {", int(kRobotCount) + 1);
+  for (int r = 0, row = 0; r <= kRobotCount; ++r) {
+    std::printf("%s%d", r ? ", " : "", row);
+    if (r < kRobotCount) row += strider::kAllRobots[r]->leg_count;
+  }
+  std::printf("};\n");
   std::printf("  //! lift_ms, swing_ms_per_mm, stance_ms_per_mm of robot r.\n");
   std::printf("  static constexpr uint16_t kServo[%d][6] STRIDER_PROGMEM = {\n", int(kRobotCount));
   for (uint8_t r = 0; r < kRobotCount; ++r) {
@@ -90,8 +99,10 @@ int main() {
     std::printf("},  // %s\n", strider::kAllRobots[r]->name);
   }
   std::printf("  };\n};\n\n");
-  std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kStride[%d][%d][%d];\n",
-              int(kRobotCount), int(kMaxLegs), kDirections);
+  std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kStride[%d][%d];\n", rows,
+              kDirections);
+  std::printf("template <typename Dummy>\nconstexpr uint8_t VelocityLimitTables<Dummy>::kStrideRow[%d];\n",
+              int(kRobotCount) + 1);
   std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kServo[%d][6];\n", int(kRobotCount));
   std::printf("template <typename Dummy>\nconstexpr uint16_t VelocityLimitTables<Dummy>::kGeometry[%d][%d];\n",
               int(kRobotCount), int(enc::kFingerprintWords));

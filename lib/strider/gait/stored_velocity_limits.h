@@ -37,13 +37,16 @@ inline uint8_t stored_limits_index(const RobotModel& model, const GaitParams& pa
 namespace stored_limits_detail {
 //! Robot r's strides: copied into RAM, or pointed at in flash.
 inline void set_strides(StrideTable<true>& t, uint8_t r) {
+  using T = detail::VelocityLimitTables<>;
+  const uint8_t first = flash_u8(&T::kStrideRow[r]), legs = uint8_t(flash_u8(&T::kStrideRow[r + 1]) - first);
   for (uint8_t i = 0; i < kMaxLegs; ++i)
     for (uint8_t k = 0; k < kStrideDirections; ++k)
-      t.stride_code[i][k] = flash_u16(&detail::VelocityLimitTables<>::kStride[r][i][0], k);
+      t.stride_code[i][k] = i < legs ? flash_u16(&T::kStride[first + i][0], k) : uint16_t(0);
 }
 inline void set_strides(StrideTable<false>& t, uint8_t r) {
-  static_assert(kMaxLegs == 6, "the stored table has six legs per robot");
-  t.flash_codes = &detail::VelocityLimitTables<>::kStride[r][0][0];
+  // The model's legs only: a walker asks for no leg past its count.
+  using T = detail::VelocityLimitTables<>;
+  t.flash_codes = &T::kStride[flash_u8(&T::kStrideRow[r])][0];
 }
 }  // namespace stored_limits_detail
 
