@@ -128,12 +128,14 @@ class MotionModes {
     w.format(FlashText{text::kOkMoveFmt}, t.vx, t.vy, t.wz);
   }
 
-  //! An RC button: its direction at the `speed` percentage.
+  //! An RC button: its direction at the `speed` percentage, turning no
+  //! slower than the gait's slowest honest turn (RcLimits::min_turn).
   void drive(const Command& c, ReplyWriter& w) {
     const RcLimits lim = sink_.pad_limits();
     const int32_t s = speed_pct_;
-    move(Twist{c.arg[0] * lim.linear * s / 100, c.arg[1] * lim.linear * s / 100, c.arg[2] * lim.turn * s / 100}, w,
-         true);
+    int32_t wz = c.arg[2] * lim.turn * s / 100;
+    if (wz != 0 && (wz < 0 ? -wz : wz) < lim.min_turn) wz = wz < 0 ? -lim.min_turn : lim.min_turn;
+    move(Twist{c.arg[0] * lim.linear * s / 100, c.arg[1] * lim.linear * s / 100, wz}, w, true);
   }
 
   void relax(ReplyWriter& w) {

@@ -44,6 +44,7 @@ inline void write_error(ReplyWriter& w, ControlError e, FlashText reason) { writ
 struct RcLimits {
   int32_t linear = 1550;  //!< [0.1 mm/s]
   int32_t turn = 600;     //!< [0.1 deg/s]
+  int32_t min_turn = 0;   //!< the slowest turn the pad asks [0.1 deg/s] (0: none)
 };
 
 }  // namespace strider

@@ -119,7 +119,7 @@ class WalkerMotion {
     if (robot_ == nullptr) return lim;
     char fast[kGaitNameBytes];
     const bool other = gait_choice_for(robot_, gait().name, lim.linear, 0, lim.turn, fast);
-    pad_top_of(robot_, other ? fast : gait().name, &lim.linear, &lim.turn);
+    pad_top_of(robot_, other ? fast : gait().name, &lim.linear, &lim.turn, &lim.min_turn);
     return lim;
   }
   //! Stop stepping; the feet finish their swing and the robot stands.

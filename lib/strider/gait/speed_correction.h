@@ -51,6 +51,10 @@ struct SpeedCorrection {
   //! the pad's default (155 mm/s, 60 deg/s), which the gait makes.
   uint16_t top_linear;
   uint16_t top_turn;
+  //! The pad's slowest turn in this gait [0.1 deg/s] (0: none): its lower
+  //! slider steps turn this fast, the slowest the gait turns within 10 %
+  //! (slower, its feet stick and slip).
+  uint16_t min_turn;
 };
 
 constexpr uint8_t kSpeedCorrectionCount = 6;
@@ -58,21 +62,21 @@ constexpr uint8_t kSpeedCorrectionCount = 6;
 constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGMEM = {
     // sprawl8 trot: walk 155 -> 76.6 mm/s uncorrected (0.494); 0.4697 keeps
     // the pad's 155 mm/s a few % over (the gait at 330 mm/s). turn 60 -> 52.7 deg/s.
-    {"sprawl8", "trot", affine(4697), affine(8780), 0, 0},
+    {"sprawl8", "trot", affine(4697), affine(8780), 0, 0, 0},
     // sprawl8 crawl: walk 15.5/31/38/66/82 -> 6.7/14.0/18.7/26.6/33.1 mm/s
     // (0.43-0.49, 0.40 above ~25 mm/s, where the pad trots: gait_choice.h);
     // 0.47 holds to ~25 mm/s within 10 %. turn 6/12/24 -> 5.8/11.8/23.7 deg/s.
-    {"sprawl8", "crawl", affine(4700), affine(9830), 0, 0},
+    {"sprawl8", "crawl", affine(4700), affine(9830), 0, 0, 0},
     // hexapod18 tripod: the gait at 17.2/34.4/86.1/172 mm/s -> 12.6/28.3/
     // 76.5/161.3 mm/s (0.927 less 3.3 mm/s); turn 6/12/30 -> 5.3/11.4/28.1
     // deg/s, its limit 37.4 deg/s (the pad's 100 % turns at 36).
-    {"hexapod18", "tripod", affine(9270, 33), affine(9450), 0, 360},
+    {"hexapod18", "tripod", affine(9270, 33), affine(9450), 0, 360, 0},
     // spider12 walk over a 30 s window: the gait at 3/6/8/14/28 mm/s ->
     // 2.4/4.9/6.8/13.1/26.2 mm/s (its limit 28 mm/s; at 2.5 it made 2.8);
     // turn 1.2/1.3/2.5/6/12.5 -> 1.25/1.34/2.42/5.69/12.1 deg/s (its limit
     // 12.5 deg/s).
     {"spider12", "walk", {5, {{30, 24}, {60, 49}, {80, 68}, {140, 131}, {280, 262}}},
-     {5, {{0, 0}, {13, 13}, {25, 24}, {60, 57}, {125, 121}}}, 262, 120},
+     {5, {{0, 0}, {13, 13}, {25, 24}, {60, 57}, {125, 121}}}, 262, 120, 0},
     // mammal8 walk over a 30 s window: the gait at 1.5/1.9/2.5/4/6/10/15/
     // 17.5/20 mm/s -> 1.5/1.7/1.9/3.3/4.8/9.8/15.5/16.3/16.2 mm/s (4 s spans
     // of the last range 11.6-20.8: its feet slide by fits), its limit 21.4
@@ -87,16 +91,23 @@ constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGM
     // deg/s (4 -> 0.78), 5-6 1.6-2.3 (5.2 -> 1.62, 5.5 -> 2.13), and at 2.1
     // -0.2: the servos' dead band at 50 Hz. Below 1.1 deg/s a step of 0.1
     // deg/s in the gait's rate moves the body's by up to 0.5 (2.5 -> 0.59,
-    // 2.6 -> 0.78): the pad's 10 and 20 % miss.
+    // 2.6 -> 0.78), and three starts 0.37 s apart scatter: `turn 0.35` made
+    // 0.19-0.62, 0.7 0.40-0.69, 1.0 0.76-1.11, 1.5 1.29-1.48, but 1.7
+    // 1.59-1.62, 2 2.01-2.12, 2.5 2.38-2.57. So the pad turns no slower than
+    // 1.7 deg/s (its 10 and 20 % would be 0.35 and 0.7). A turn in steps
+    // (tried: stance_ratchet.h holding the yaw too, released in 1.3-8 mm at
+    // the feet) made the body's turn repeatable at each rate but not
+    // monotonic (the gait at 2.5 -> 0.94, at 3 -> 0.51 deg/s) and below
+    // 2 deg/s a quarter of the gait's or less: not kept.
     {"mammal8", "walk", {8, {{0, 0}, {15, 15}, {19, 17}, {40, 33}, {60, 48}, {100, 98}, {150, 150}, {200, 163}}},
-     {6, {{22, 0}, {25, 6}, {27, 11}, {51, 17}, {70, 23}, {140, 35}}}, 170, 35},
+     {6, {{22, 0}, {25, 6}, {27, 11}, {51, 17}, {70, 23}, {140, 35}}}, 170, 35, 17},
     // dog12 crawl over a 30 s window: the gait at 8/17/19.5/19.6/30/70/137
     // mm/s -> 2.6/10.7/11.0/13.7/27.1/66.1/129.4 mm/s (the body jumps
     // between 19.5 and 19.6: 11-13.7 mm/s is not made); turn
     // 2.2/3/4.4/8/11/22 -> 1.1/2.4/3.9/6.6/9.7/20 deg/s (1.5 -> 0.2; its
     // limits 144, 23.5).
     {"dog12", "crawl", {7, {{80, 26}, {170, 107}, {195, 110}, {196, 137}, {300, 271}, {700, 661}, {1370, 1294}}},
-     {6, {{22, 11}, {30, 24}, {44, 39}, {80, 66}, {110, 97}, {220, 200}}}, 1200, 200},
+     {6, {{22, 11}, {30, 24}, {44, 39}, {80, 66}, {110, 97}, {220, 200}}}, 1200, 200, 0},
 };
 
 //! The index of (robot, gait)'s entry in kSpeedCorrections;
@@ -121,14 +132,17 @@ inline const SpeedCurve* speed_curve(uint8_t index, bool turn) {
 
 //! The RC pad's 100 % for `robot` walking `gait` into *linear [0.1 mm/s]
 //! and *turn [0.1 deg/s]: the gait's top speeds where listed, else left as
-//! given (the pad's defaults, control/robot_mode.h's RcLimits).
-inline void pad_top_of(const char* robot, const char* gait, int32_t* linear, int32_t* turn) {
+//! given (the pad's defaults, control/robot_mode.h's RcLimits); its
+//! slowest turn into *min_turn [0.1 deg/s] (0: none).
+inline void pad_top_of(const char* robot, const char* gait, int32_t* linear, int32_t* turn, int32_t* min_turn) {
   const uint8_t i = speed_correction_index(robot, gait);
+  *min_turn = 0;
   if (i == kSpeedCorrectionCount) return;
   const uint16_t top_linear = flash_u16(&kSpeedCorrections[i].top_linear, 0);
   const uint16_t top_turn = flash_u16(&kSpeedCorrections[i].top_turn, 0);
   if (top_linear != 0) *linear = top_linear;
   if (top_turn != 0) *turn = top_turn;
+  *min_turn = flash_u16(&kSpeedCorrections[i].min_turn, 0);
 }
 
 namespace detail {
