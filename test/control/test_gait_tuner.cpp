@@ -344,6 +344,35 @@ TYPED_TEST(GaitTunerTest, PresetsWalkTheirGaitWithTheirParameters) {
   EXPECT_EQ(other.say("gait trot10"), "err 23 unknown gait: walk trot pace crawl");
 }
 
+// A preset listed in speed_correction.h by its name (mammal8's pace10) walks
+// with that correction: `walk 3.1` keeps vx=3.1 (and walk_vx=3.1, the body
+// speed the gait makes) and walks the gait at 3.1 / 0.866 = 3.6; the same walk in
+// trot10 (not listed) walks the gait as commanded; a `set` afterwards leaves
+// the preset's parameters and its correction with them.
+TYPED_TEST(GaitTunerTest, APresetWalksWithItsOwnSpeedCorrection) {
+  using S = TypeParam;
+  strider_test::FakeStore store;
+  Robot<S> r(strider::kMammal8, store);
+  r.run_ms(3000);
+  EXPECT_EQ(r.say("$deadman off*cb77").rfind("ok", 0), 0u);  // no keep-alives here
+  const auto walked = [&r](const char* gait, const char* set) {
+    EXPECT_EQ(r.say(std::string("gait ") + gait), std::string("ok gait ") + gait);
+    if (set != nullptr) EXPECT_EQ(r.say(set).rfind("ok set", 0), 0u);
+    EXPECT_EQ(r.say("walk 3.1").rfind("ok", 0), 0u);
+    r.run_ms(6000);  // the ramp
+    const std::string st = r.say("status");
+    EXPECT_EQ(r.field(st, "vx"), "3.1") << st;
+    EXPECT_EQ(r.field(st, "walk_vx"), "3.1") << st;
+    const double gait_mm_s = strider::to_double(r.engine().vx());
+    EXPECT_EQ(r.say("stop").rfind("ok", 0), 0u);
+    r.run_ms(6000);
+    return gait_mm_s;
+  };
+  EXPECT_NEAR(walked("pace10", nullptr), 3.6, 0.01);  // 3.58 to the correction's 0.1 mm/s
+  EXPECT_NEAR(walked("pace10", "set step_height 4.00"), 3.1, 0.01);
+  EXPECT_NEAR(walked("trot10", nullptr), 3.1, 0.01);
+}
+
 // A save's bytes: the tuning record after the settings (the settings load as
 // before: its layout version and place are unchanged). An image of older
 // firmware has those bytes erased: the model's own values, eeprom=ok.

@@ -52,14 +52,17 @@ class RobotAppSink {
     app_.motion_.sit_now();
   }
   //! A library gait, or one of the model's presets (gait_presets.h): its
-  //! gait, then its parameters.
+  //! gait, then its parameters, then its own speed correction if listed.
   bool set_gait(const char* name) {
     GaitPreset preset;
     const bool is_preset = find_gait_preset(app_.name_, name, &preset);
     if (!app_.motion_.set_gait(is_preset ? preset.gait : name)) return false;
     app_.tuner_.use_gait(app_.motion_, app_.store_);
     app_.motion_.set_stance_motion(is_preset ? preset.stance_step_dmm : 0, is_preset && preset.on_all_feet);
-    return !is_preset || apply_gait_preset(preset, [this](TuneParam p, int32_t v) { return tune(p, v); });
+    if (!is_preset) return true;
+    if (!apply_gait_preset(preset, [this](TuneParam p, int32_t v) { return tune(p, v); })) return false;
+    app_.motion_.correct_as_preset(preset.name);
+    return true;
   }
   RcLimits pad_limits() const { return app_.motion_.pad_limits(); }
   void choose_pad_gait(const Twist& v) {

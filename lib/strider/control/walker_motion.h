@@ -100,6 +100,18 @@ class WalkerMotion {
     }
   }
 
+  //! A preset's own speed correction, once its parameters are in:
+  //! speed_correction.h lists it by the preset's name (none: as before).
+  void correct_as_preset(const char* preset) {
+    const uint8_t i = robot_ != nullptr ? speed_correction_index(robot_, preset) : kSpeedCorrectionCount;
+    if (i == kSpeedCorrectionCount) return;
+    correction_ = i;
+    if (have_command_) {  // the same body speed, corrected anew
+      have_command_ = false;
+      set_velocity(last_);
+    }
+  }
+
   //! The gait's own speed [0.1 mm/s] -> the body speed it makes on the
   //! ground (speed_correction.h); turn: a turn rate [0.1 deg/s].
   int32_t body_speed(int32_t gait_tenths, bool turn = false) const {
