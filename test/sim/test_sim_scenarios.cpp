@@ -412,11 +412,12 @@ TEST(SimTargets, Mammal8SeedTrotReachesCommandedDistanceWithin5Percent) {
 // with pace10's stance on all feet and its speed correction (measured in
 // firmware mode, where it makes 100 / 200 / 1000 mm within 2.3 %:
 // SimFirmware.Mammal8SeedPaceReachesItsDistanceWithin5Percent): 6.0 / 6.8 /
-// 18.4 % short (18.8 / 18.7 / 27.2 % uncorrected, 51.5 / 49.5 / 53.3 % before
-// the stance on all feet), no fall: while one side swings the CoM is 40 mm
-// beside the feet kept down, the body tips onto the swinging feet and they
-// drag, by more on the float build's ticks than on the firmware's
-// (docs/simulator.md, "mammal8's trot and pace").
+// 18.4 % short of the commanded distance (the odometry this test compares
+// with runs 1 / 0.866 past it; uncorrected 18.8 / 18.7 / 27.2 % short, 51.5 /
+// 49.5 / 53.3 % before the stance on all feet), no fall: while one side
+// swings the CoM is 40 mm beside the feet kept down, the body tips onto the
+// swinging feet and they drag, by more on the float build's ticks than on
+// the firmware's (docs/simulator.md, "mammal8's trot and pace").
 TEST(SimTargets, DISABLED_Mammal8SeedPaceReachesCommandedDistanceWithin5Percent) {
   expect_table5_distances("mammal8_seed_pace", 5.0);
 }

@@ -124,7 +124,10 @@ def seed003_distance(metrics):
           "the servos at 200 Hz; docs/gaits.md). 'commanded' is the distance the gait engine's own odometry "
           "covered, 'reached' the body's displacement in the simulated world along that way (negative: it went "
           "backward), error = (commanded - reached) / commanded as strider-sim's metrics.json reports it "
-          "(library mode; firmware mode in docs/simulator.md):\n\n")
+          "(library mode; firmware mode in docs/simulator.md). pace10 walks with a speed correction of its own "
+          "(lib/strider/gait/speed_correction.h: the gait 1 / 0.866 faster than commanded, for the slip of its "
+          "dragging feet), so its odometry runs past the target: compare its displacement with the target "
+          "(the firmware's are within 2.3 %, docs/simulator.md):\n\n")
     md += table(["gait", "commands", "target [cm]", "commanded [mm]", "reached along it [mm]", "displacement [mm]",
                  "error [%]", "paper's error [%]", "fell"], rows)
     back = sum(1 for r in rows if r[4].startswith("-") and r[4] != "-")
