@@ -94,10 +94,7 @@ class WalkerMotion {
     const uint8_t before = correction_;
     as_measured_ = as_measured;
     correct_for_gait();
-    if (correction_ != before && have_command_) {  // the same body speed, corrected anew
-      have_command_ = false;
-      set_velocity(last_);
-    }
+    if (correction_ != before) recommand();
   }
 
   //! A preset's own speed correction, once its parameters are in:
@@ -106,10 +103,7 @@ class WalkerMotion {
     const uint8_t i = robot_ != nullptr ? speed_correction_index(robot_, preset) : kSpeedCorrectionCount;
     if (i == kSpeedCorrectionCount) return;
     correction_ = i;
-    if (have_command_) {  // the same body speed, corrected anew
-      have_command_ = false;
-      set_velocity(last_);
-    }
+    recommand();
   }
 
   //! The gait's own speed [0.1 mm/s] -> the body speed it makes on the
@@ -222,10 +216,14 @@ class WalkerMotion {
   void set_gait_table(const GaitTable& g) {
     walker_.engine().set_gait(g);
     correct_for_gait();
-    if (have_command_) {  // the same body speed in the new gait
-      have_command_ = false;
-      set_velocity(last_);
-    }
+    recommand();
+  }
+
+  //! The body speed commanded last, again, through the gait and correction now in force.
+  void recommand() {
+    if (!have_command_) return;
+    have_command_ = false;
+    set_velocity(last_);
   }
 
   void restart(bool sitting) {
