@@ -3,7 +3,8 @@
 //! measured points: WalkerMotion maps a command (`walk V`, `turn W`, the RC
 //! pad) through it to the gait speed that makes the speed commanded; a pair
 //! not listed, and a gait walked with other parameters (a preset, `set`:
-//! WalkerMotion::correct_speeds), is slip-free. Measured in the simulator, firmware mode, on a
+//! WalkerMotion::correct_speeds), is slip-free, but a preset listed by its
+//! own name (WalkerMotion::correct_as_preset). Measured in the simulator, firmware mode, on a
 //! firmware whose entry is affine(10000) (the gait's speed as commanded):
 //! the steady speed over a 30 s window, 3 s after the command
 //! (tools/sim/measure_speed.py --window 30; docs/results.md).
