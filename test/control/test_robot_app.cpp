@@ -536,7 +536,7 @@ TYPED_TEST(RobotAppTest, HelpAndRefusalsNameWhatTheModelReaches) {
     };
     // mammal8's presets (gait_presets.h) follow its gaits.
     const std::string gaits = m->leg_count == 6                      ? "tripod ripple wave"
-                              : std::strcmp(m->name, "mammal8") == 0 ? "walk trot pace crawl walk10 trot10 pace10"
+                              : std::strcmp(m->name, "mammal8") == 0 ? "walk trot pace crawl walk10 trot10 pace10 trot50"
                                                                      : "walk trot pace crawl";
     const std::string heights = std::to_string(reach.height_min_mm) + ".." + std::to_string(reach.height_max_mm);
     const std::string help = reply("help");

@@ -192,6 +192,31 @@ TYPED_TEST(GaitEngineTest, StartsAndStopsStandingOnAllFeet) {
   }
 }
 
+// A cycle set while standing (`set cycle`, a preset) is the rate the next
+// walk starts from. A gait change while standing slows the rate by the
+// duties' ratio, meant for a walking robot whose stances keep their travel:
+// mammal8's walk (duty 0.85) -> trot (0.5) leaves 0.29 Hz of its 0.5, and a
+// trot then set to a 0.9 s cycle started there and ramped for two seconds,
+// 37 mm short of a 100 mm walk's odometry (4 mm now). A plain gait change
+// keeps its gentler start (sprawl8's trot veers 7 deg without it).
+TYPED_TEST(GaitEngineTest, ACycleSetWhileStandingIsTheRateTheWalkStartsFrom) {
+  using S = TypeParam;
+  Rig<S> rig(strider::kMammal8, *strider::find_gait(strider::kMammal8, "walk"));
+  rig.engine().set_gait(*strider::find_gait(strider::kMammal8, "trot"));
+  EXPECT_NEAR(dbl(rig.engine().step_hz()), 0.5 * 0.5 / 0.85, 0.01);
+  const S hz = S(1) / sc<S>(0.9);
+  rig.engine().set_step(rig.engine().config().limits.preferred_stride_mm, hz);
+  EXPECT_NEAR(dbl(rig.engine().step_hz()), 1.0 / 0.9, 1e-3);
+  command(rig, Command{50, 0, 0});
+  std::vector<Tick> run;
+  rig.run(0.5, run);
+  for (const Tick& t : run) EXPECT_GE(t.hz, 1.0 / 0.9 - 1e-3);  // ramps up from there, not from 0.29
+  // Walking, a new cycle waits for the ramp: the rate is not reset.
+  const double walking_hz = run.back().hz;
+  rig.engine().set_step(rig.engine().config().limits.preferred_stride_mm, S(1) / sc<S>(2.0));
+  EXPECT_NEAR(dbl(rig.engine().step_hz()), walking_hz, 1e-6);
+}
+
 // ---- transitions --------------------------------------------------------------------------
 
 //! A scenario of changes while walking: velocity steps, gait changes, body

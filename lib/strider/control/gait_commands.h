@@ -14,14 +14,13 @@
 
 namespace strider {
 
-//! The gait presets of the model called `robot` (gait_presets.h), each
-//! after a space.
-inline void write_gait_presets(ReplyWriter& w, const char* robot) {
+//! The gait presets of the model called `robot` (gait_presets.h; those the
+//! build of model index kModel keeps), each after a space.
+template <uint8_t kModel = kEveryModel>
+void write_gait_presets(ReplyWriter& w, const char* robot) {
   GaitPreset p;
-  for (uint8_t i = 0; robot != nullptr && i < kGaitPresetCount; ++i) {
-    flash_copy(&p, &kGaitPresets[i], sizeof p);
+  for (uint8_t i = 0; robot != nullptr && gait_preset_at<kModel>(i, &p); ++i)
     if (strcmp(p.robot, robot) == 0) w.ch(' ').text(p.name);
-  }
 }
 
 template <typename Sink>

@@ -34,7 +34,7 @@ class GaitTuner {
   //! Takes the model's defaults from a walker just configured at them.
   void configure(WalkerMotion<S, P>& motion) {
     const auto& c = motion.walker().engine().config();
-    own_ = Own{c.step_height_mm, c.limits.preferred_stride_mm, c.limits.min_hz, c.shape};
+    own_ = Own{c.step_height_mm, c.limits.preferred_stride_mm, c.limits.min_hz, c.limits.lift_ms, c.shape};
     live_ = gait_defaults(motion, duty_pct_of(motion.gait()));
     origin_ = TuneOrigin::kDefault;
   }
@@ -150,7 +150,7 @@ class GaitTuner {
  private:
   //! The model's own values, bit for bit, for a parameter set back to them.
   struct Own {
-    S step_height_mm, stride_mm, min_hz;
+    S step_height_mm, stride_mm, min_hz, lift_ms;
     SwingShape shape;
   };
   static constexpr char kHeightName[] STRIDER_PROGMEM = "height";
@@ -189,7 +189,11 @@ class GaitTuner {
     const bool own_cycle = live_.cycle_cs == mine.cycle_cs ||
                            (live_.cycle_cs > mine.cycle_cs && live_.cycle_cs == shortest_cycle_cs(c.limits, live_.duty_pct));
     const S hz = own_cycle ? own_.min_hz : S(100) / S(int32_t(live_.cycle_cs));
-    if (!(height == c.step_height_mm) || SwingShape(live_.shape) != c.shape) e.set_swing(height, SwingShape(live_.shape));
+    // A lower apex lifts in less servo time: the joints' travel of a lift in
+    // place grows with its height (velocity_search.h's lift_ms), so the
+    // step rate the servos allow rises with a lower step.
+    if (!(height == c.step_height_mm) || SwingShape(live_.shape) != c.shape)
+      e.set_swing(height, SwingShape(live_.shape), height == own_.step_height_mm ? own_.lift_ms : own_.lift_ms * height / own_.step_height_mm);
     if (!(stride == c.limits.preferred_stride_mm) || !(hz == c.limits.min_hz)) e.set_step(stride, hz);
     if (live_.duty_pct != duty_pct_of(motion.gait())) motion.set_duty(live_.duty_pct);
     // The speed correction holds for the gait's own parameters only.

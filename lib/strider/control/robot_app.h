@@ -32,6 +32,7 @@ class RobotApp {
   class Sink;
 
  public:
+  using Profile = P;
   //! Reads the settings from store but touches no other hardware. Out of
   //! line: the settings' copy is off the stack before begin() runs.
   STRIDER_NOINLINE RobotApp(const RobotModel& model, Output& out, Store& store, ModelMemory where = ModelMemory::kRam)

@@ -8,6 +8,7 @@
 
 #include "../gait/gait_presets.h"
 #include "../gait/gait_tuning.h"
+#include "gait_commands.h"
 #include "gait_tuner.h"
 #include "motion_reach.h"
 #include "reply_texts.h"
@@ -55,7 +56,7 @@ class RobotAppSink {
   //! gait, then its parameters, then its own speed correction if listed.
   bool set_gait(const char* name) {
     GaitPreset preset;
-    const bool is_preset = find_gait_preset(app_.name_, name, &preset);
+    const bool is_preset = find_gait_preset<App::Profile::kModelIndex>(app_.name_, name, &preset);
     if (!app_.motion_.set_gait(is_preset ? preset.gait : name)) return false;
     app_.tuner_.use_gait(app_.motion_, app_.store_);
     app_.motion_.set_stance_motion(is_preset ? preset.stance_step_dmm : 0, is_preset && preset.on_all_feet);
@@ -80,7 +81,7 @@ class RobotAppSink {
   LevelCalStart start_level_cal() { return app_.sensing_.start_level_cal(app_.motion_, app_.stage_.all_on()); }
   void write_gait_names(ReplyWriter& w) const {
     w.text(FlashText{strider::gait_names(app_.motion_.walker().leg_count())});
-    write_gait_presets(w, app_.motion_.robot());
+    write_gait_presets<App::Profile::kModelIndex>(w, app_.motion_.robot());
   }
   const MotionReach& reach() const { return app_.motion_.reach(); }
   void apply_settings(const Settings& s) { app_.stage_.set_settings(s); }

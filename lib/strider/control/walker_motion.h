@@ -78,10 +78,10 @@ class WalkerMotion {
     constexpr S tenth = scalar<S>(0.1);
     constexpr S decideg_to_rad = scalar<S>(kDegToRad / 10.0);
     // The gait's own speed that makes the commanded body speed (speed_correction.h).
-    const SpeedCurve* linear = speed_curve(correction_, false);
+    const SpeedCurve* linear = speed_curve<P::kModelIndex>(correction_, false);
     walker_.engine().set_command(S(speed_corrected(int32_t(v.vx), linear)) * tenth,
                                  S(speed_corrected(int32_t(v.vy), linear)) * tenth,
-                                 S(speed_corrected(int32_t(v.wz), speed_curve(correction_, true))) * decideg_to_rad,
+                                 S(speed_corrected(int32_t(v.wz), speed_curve<P::kModelIndex>(correction_, true))) * decideg_to_rad,
                                  scalar<S>(100.0), S(int32_t(yaw_trim_)) * decideg_to_rad);
   }
 
@@ -100,8 +100,8 @@ class WalkerMotion {
   //! A preset's own speed correction, once its parameters are in:
   //! speed_correction.h lists it by the preset's name (none: as before).
   void correct_as_preset(const char* preset) {
-    const uint8_t i = robot_ != nullptr ? speed_correction_index(robot_, preset) : kSpeedCorrectionCount;
-    if (i == kSpeedCorrectionCount) return;
+    const uint8_t i = robot_ != nullptr ? speed_correction_index<P::kModelIndex>(robot_, preset) : kNoSpeedCorrection;
+    if (i == kNoSpeedCorrection) return;
     correction_ = i;
     recommand();
   }
@@ -109,7 +109,7 @@ class WalkerMotion {
   //! The gait's own speed [0.1 mm/s] -> the body speed it makes on the
   //! ground (speed_correction.h); turn: a turn rate [0.1 deg/s].
   int32_t body_speed(int32_t gait_tenths, bool turn = false) const {
-    return body_speed_of(gait_tenths, speed_curve(correction_, turn));
+    return body_speed_of(gait_tenths, speed_curve<P::kModelIndex>(correction_, turn));
   }
 
   //! The gait the RC pad walks body speed v in (gait_choice.h): true and
@@ -125,7 +125,7 @@ class WalkerMotion {
     if (robot_ == nullptr) return lim;
     char fast[kGaitNameBytes];
     const bool other = gait_choice_for(robot_, gait().name, lim.linear, 0, lim.turn, fast);
-    pad_top_of(robot_, other ? fast : gait().name, &lim.linear, &lim.turn, &lim.min_turn);
+    pad_top_of<P::kModelIndex>(robot_, other ? fast : gait().name, &lim.linear, &lim.turn, &lim.min_turn);
     return lim;
   }
   //! Stop stepping; the feet finish their swing and the robot stands.
@@ -236,8 +236,8 @@ class WalkerMotion {
 
   //! The speed correction of the model and the gait in force.
   void correct_for_gait() {
-    correction_ = robot_ != nullptr && as_measured_ ? speed_correction_index(robot_, gait().name)
-                                                    : kSpeedCorrectionCount;
+    correction_ = robot_ != nullptr && as_measured_ ? speed_correction_index<P::kModelIndex>(robot_, gait().name)
+                                                    : kNoSpeedCorrection;
   }
 
   //! After the walker's configuration: no offsets, no command, the standing height.
@@ -284,7 +284,7 @@ class WalkerMotion {
   bool have_command_ = false;
   int16_t yaw_trim_ = 0;  //!< set_yaw_trim()
   const char* robot_ = nullptr;     //!< the model's name (configure)
-  uint8_t correction_ = kSpeedCorrectionCount;  //!< the gait's entry in speed_correction.h; none: slip-free
+  uint8_t correction_ = kNoSpeedCorrection;  //!< the gait's entry in speed_correction.h; none: slip-free
   bool as_measured_ = true;  //!< correct_speeds()
   MotionReach reach_{0, 0, {0, 0, 0}, {0, 0, 0}};
 };

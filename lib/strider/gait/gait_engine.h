@@ -49,15 +49,22 @@ class GaitEngine {
     if (cfg_.shift_x_only) draw_homes_for_turn();
     replan();
   }
-  //! The swing of the feet that lift from now on: apex [mm] and shape.
-  void set_swing(S step_height_mm, SwingShape shape) {
+  //! The swing of the feet that lift from now on: apex [mm], shape and the
+  //! servo time of its lift alone [ms] (VelocityLimits::lift_ms).
+  void set_swing(S step_height_mm, SwingShape shape, S lift_ms) {
     cfg_.step_height_mm = step_height_mm;
     cfg_.shape = shape;
+    cfg_.limits.lift_ms = lift_ms;
+    replan();
   }
   //! The preferred stride [mm] and the step rate at low speed [Hz].
   void set_step(S stride_mm, S min_hz) {
     cfg_.limits.preferred_stride_mm = stride_mm;
     cfg_.limits.min_hz = min_hz;
+    // A cycle set while standing is the one the next walk starts at: the
+    // rate there was the cycle's before (and a gait change's, which slows
+    // it by the duties' ratio: mammal8's walk -> trot left 0.29 Hz).
+    ramp_.rest_at(min_of(min_hz, cfg_.limits.servo_hz(S(0), phases_.duty)));
     replan();
   }
   //! Stance feet moved in steps of at least `step_mm` [mm], all at once

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "../math/flash_table.h"
+#include "../robots/model_entries.h"
 #include "gait_params.h"
 #include "gait_tuning.h"
 
@@ -16,7 +17,9 @@ struct GaitPreset {
   char robot[kRobotNameBytes];  //!< the model it is for
   char name[kGaitNameBytes];    //!< what `gait NAME` takes
   char gait[kGaitNameBytes];    //!< the library gait it walks
-  // Applied in this order (the cycle before the share down); 0: the gait's own.
+  // Applied step height first (a lower lift lets the servos step faster:
+  // the cycle and duty are checked against it), then the cycle, the share
+  // down and the stride; 0: the gait's own.
   uint16_t cycle_cs;
   uint8_t duty_pct;
   uint16_t step_length_cmm;
@@ -28,21 +31,46 @@ struct GaitPreset {
 };
 
 //! mammal8 at seed 003's own operating point (table 5): docs/gaits.md,
-//! "Presets"; why these values: docs/simulator.md, "mammal8 at seed 003's point".
+//! "Presets"; why these values: docs/simulator.md, "mammal8 at seed 003's
+//! point". trot50: mammal8's fast trot, a trot with four-foot windows and
+//! low steps that stays level at 50 mm/s (docs/simulator.md, "mammal8's
+//! fast trot").
 constexpr GaitPreset kGaitPresets[] STRIDER_PROGMEM = {
     {"mammal8", "walk10", "walk", 0, 0, 1000, 300, 0, false},
     {"mammal8", "trot10", "trot", 238, 85, 1000, 1000, 13, true},
     {"mammal8", "pace10", "pace", 323, 70, 1000, 300, 13, true},
+    {"mammal8", "trot50", "trot", 90, 80, 0, 500, 0, false},
 };
 constexpr uint8_t kGaitPresetCount = sizeof kGaitPresets / sizeof kGaitPresets[0];
 
+//! The presets a build keeps (robots/model_entries.h): a firmware's own
+//! model's only, in flash.
+template <uint8_t kModel>
+struct GaitPresetsOf {
+  static constexpr uint8_t kCount = model_entry_count(kGaitPresets, kModel);
+  static constexpr ModelEntries<GaitPreset, kCount> kTable STRIDER_PROGMEM =
+      model_entries<GaitPreset, kCount>(kGaitPresets, kModel);
+};
+template <uint8_t kModel>
+constexpr uint8_t GaitPresetsOf<kModel>::kCount;
+template <uint8_t kModel>
+constexpr ModelEntries<GaitPreset, GaitPresetsOf<kModel>::kCount> GaitPresetsOf<kModel>::kTable;
+
+//! The i-th preset the build keeps into *out (copied out of flash on the
+//! AVR); false past the last.
+template <uint8_t kModel = kEveryModel>
+bool gait_preset_at(uint8_t i, GaitPreset* out) {
+  if (i >= GaitPresetsOf<kModel>::kCount) return false;
+  flash_copy(out, &GaitPresetsOf<kModel>::kTable.at[i], sizeof *out);
+  return true;
+}
+
 //! The preset `name` of the model called `robot` into *out (copied out of
 //! flash on the AVR); false when it has none of that name.
-inline bool find_gait_preset(const char* robot, const char* name, GaitPreset* out) {
-  for (uint8_t i = 0; i < kGaitPresetCount; ++i) {
-    flash_copy(out, &kGaitPresets[i], sizeof *out);
+template <uint8_t kModel = kEveryModel>
+bool find_gait_preset(const char* robot, const char* name, GaitPreset* out) {
+  for (uint8_t i = 0; gait_preset_at<kModel>(i, out); ++i)
     if (strcmp(out->name, name) == 0 && strcmp(out->robot, robot) == 0) return true;
-  }
   return false;
 }
 
@@ -50,10 +78,10 @@ inline bool find_gait_preset(const char* robot, const char* name, GaitPreset* ou
 //! tuner's); false when one is refused (the rest are not tried).
 template <typename Tune>
 bool apply_gait_preset(const GaitPreset& p, Tune tune) {
-  return (p.cycle_cs == 0 || tune(TuneParam::kCycle, p.cycle_cs)) &&
+  return (p.step_height_cmm == 0 || tune(TuneParam::kStepHeight, p.step_height_cmm)) &&
+         (p.cycle_cs == 0 || tune(TuneParam::kCycle, p.cycle_cs)) &&
          (p.duty_pct == 0 || tune(TuneParam::kDuty, p.duty_pct)) &&
-         (p.step_length_cmm == 0 || tune(TuneParam::kStepLength, p.step_length_cmm)) &&
-         (p.step_height_cmm == 0 || tune(TuneParam::kStepHeight, p.step_height_cmm));
+         (p.step_length_cmm == 0 || tune(TuneParam::kStepLength, p.step_length_cmm));
 }
 
 }  // namespace strider

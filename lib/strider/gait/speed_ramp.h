@@ -70,6 +70,13 @@ struct SpeedRamp {
     return max_of(time * max_of(rest_hz, hz), S(1));
   }
 
+  //! Standing (no stride): the next walk starts from step rate `rate_hz`.
+  void rest_at(S rate_hz) {
+    if (now.x != S(0) || now.y != S(0) || now.yaw != S(0)) return;
+    now.hz = rate_hz;
+    hz = rate_hz;
+  }
+
   //! A gait change from duty `was` to `duty`: each stance keeps its travel.
   void keep_travel(S was, S duty) {
     const S r = was / duty;

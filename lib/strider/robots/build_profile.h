@@ -10,6 +10,9 @@
 
 namespace strider {
 
+//! A build for every model (the host's), where a firmware names its own.
+constexpr uint8_t kEveryModel = 0xff;
+
 //! The host's profile, for any model.
 template <typename S>
 struct HostProfile {
@@ -24,6 +27,9 @@ struct HostProfile {
   static constexpr uint8_t kJoints = kMaxLegs * kMaxLegDof;  //!< most servos driven
   //! Velocity limits by the IK search, strides in RAM (else stored, in flash).
   static constexpr bool kSearch = true;
+  //! The model the build is for: per-model tables keep its entries only
+  //! (robots/model_entries.h); kEveryModel keeps them all.
+  static constexpr uint8_t kModelIndex = kEveryModel;
 };
 
 }  // namespace strider
