@@ -127,7 +127,7 @@ constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGM
     // 50, 0.82 at 61, 0.85 at 70; at 62 the body made 5 % more than at 61
     // over 100-1000 mm): the points are where it was measured.
     {"mammal8", "trot50", {6, {{200, 130}, {350, 281}, {500, 444}, {610, 500}, {700, 593}, {800, 701}}},
-     affine(10000), 700, 0, 0},
+     affine(10000), 0, 0, 0},
 };
 
 //! The entries of kSpeedCorrections a build keeps (robots/model_entries.h):
