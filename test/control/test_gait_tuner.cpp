@@ -363,10 +363,18 @@ TYPED_TEST(GaitTunerTest, PresetsWalkTheirGaitWithTheirParameters) {
     EXPECT_EQ(r.say(std::string("gait ") + p.name), std::string("ok gait ") + p.name);
     const std::string get = r.say("get");
     EXPECT_EQ(r.field(get, "gait"), p.gait);
-    if (p.step_length_cmm != 0) EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "step_length"))), p.step_length_cmm);
-    if (p.step_height_cmm != 0) EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "step_height"))), p.step_height_cmm);
-    if (p.cycle_cs != 0) EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "cycle"))), p.cycle_cs);
-    if (p.duty_pct != 0) EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "duty"))), p.duty_pct);
+    if (p.step_length_cmm != 0) {
+      EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "step_length"))), p.step_length_cmm);
+    }
+    if (p.step_height_cmm != 0) {
+      EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "step_height"))), p.step_height_cmm);
+    }
+    if (p.cycle_cs != 0) {
+      EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "cycle"))), p.cycle_cs);
+    }
+    if (p.duty_pct != 0) {
+      EXPECT_EQ(std::lround(100 * std::stod(r.field(get, "duty"))), p.duty_pct);
+    }
     EXPECT_NE(r.say("status").find(" tune=changed"), std::string::npos);
   }
   strider_test::FakeStore store;

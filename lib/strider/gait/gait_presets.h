@@ -43,18 +43,15 @@ constexpr GaitPreset kGaitPresets[] STRIDER_PROGMEM = {
 };
 constexpr uint8_t kGaitPresetCount = sizeof kGaitPresets / sizeof kGaitPresets[0];
 
+//! kGaitPresets as a table of robots/model_entries.h.
+struct GaitPresetTable {
+  using Entry = GaitPreset;
+  static constexpr const GaitPreset (&all())[kGaitPresetCount] { return kGaitPresets; }
+};
 //! The presets a build keeps (robots/model_entries.h): a firmware's own
 //! model's only, in flash.
 template <uint8_t kModel>
-struct GaitPresetsOf {
-  static constexpr uint8_t kCount = model_entry_count(kGaitPresets, kModel);
-  static constexpr ModelEntries<GaitPreset, kCount> kTable STRIDER_PROGMEM =
-      model_entries<GaitPreset, kCount>(kGaitPresets, kModel);
-};
-template <uint8_t kModel>
-constexpr uint8_t GaitPresetsOf<kModel>::kCount;
-template <uint8_t kModel>
-constexpr ModelEntries<GaitPreset, GaitPresetsOf<kModel>::kCount> GaitPresetsOf<kModel>::kTable;
+using GaitPresetsOf = ModelTable<GaitPresetTable, kModel>;
 
 //! The i-th preset the build keeps into *out (copied out of flash on the
 //! AVR); false past the last.

@@ -130,18 +130,15 @@ constexpr SpeedCorrection kSpeedCorrections[kSpeedCorrectionCount] STRIDER_PROGM
      affine(10000), 0, 0, 0},
 };
 
+//! kSpeedCorrections as a table of robots/model_entries.h.
+struct SpeedCorrectionTable {
+  using Entry = SpeedCorrection;
+  static constexpr const SpeedCorrection (&all())[kSpeedCorrectionCount] { return kSpeedCorrections; }
+};
 //! The entries of kSpeedCorrections a build keeps (robots/model_entries.h):
 //! a firmware's own model's only, in flash.
 template <uint8_t kModel>
-struct SpeedCorrectionsOf {
-  static constexpr uint8_t kCount = model_entry_count(kSpeedCorrections, kModel);
-  static constexpr ModelEntries<SpeedCorrection, kCount> kTable STRIDER_PROGMEM =
-      model_entries<SpeedCorrection, kCount>(kSpeedCorrections, kModel);
-};
-template <uint8_t kModel>
-constexpr uint8_t SpeedCorrectionsOf<kModel>::kCount;
-template <uint8_t kModel>
-constexpr ModelEntries<SpeedCorrection, SpeedCorrectionsOf<kModel>::kCount> SpeedCorrectionsOf<kModel>::kTable;
+using SpeedCorrectionsOf = ModelTable<SpeedCorrectionTable, kModel>;
 
 //! What speed_correction_index() gives for a pair not listed (slip-free).
 constexpr uint8_t kNoSpeedCorrection = 0xff;

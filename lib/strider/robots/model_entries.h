@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "../math/flash_table.h"
 #include "all_robots.h"
 #include "build_profile.h"
 #include "model_checks.h"
@@ -45,6 +46,23 @@ constexpr ModelEntries<T, kCount> model_entries(const T (&all)[N], uint8_t model
     if (entry_for_model(all[i].robot, model)) e.at[n++] = all[i];
   return e;
 }
+
+//! The entries of a per-model table that the build of model index kModel
+//! keeps, in flash: kCount of them, in kTable.at. Table names the whole
+//! table: `using Entry = T;` and `static constexpr const T (&all())[N]`
+//! (a function: avr-gcc 5 takes no internal-linkage array as a template
+//! argument).
+template <typename Table, uint8_t kModel>
+struct ModelTable {
+  using Entry = typename Table::Entry;
+  static constexpr uint8_t kCount = model_entry_count(Table::all(), kModel);
+  static constexpr ModelEntries<Entry, kCount> kTable STRIDER_PROGMEM =
+      model_entries<Entry, kCount>(Table::all(), kModel);
+};
+template <typename Table, uint8_t kModel>
+constexpr uint8_t ModelTable<Table, kModel>::kCount;
+template <typename Table, uint8_t kModel>
+constexpr ModelEntries<typename Table::Entry, ModelTable<Table, kModel>::kCount> ModelTable<Table, kModel>::kTable;
 
 }  // namespace strider
 
